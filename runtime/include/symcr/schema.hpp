@@ -1,0 +1,186 @@
+// The schema model: how a program describes its checkpointed state to the runtime.
+//
+// symcr-gen emits one `symcr::Schema` per program as constant tables (types, fields,
+// enumerators, roots). The runtime walks live memory with it when saving, serialises it into
+// checkpoints (docs/format.md), and resolves a checkpoint's (writer) schema against the running
+// build's (reader) schema when restoring. Nothing here allocates or needs exceptions/RTTI.
+//
+// Everything in this header is part of the generator/runtime contract: change it only together
+// with the generator and docs/format.md.
+#ifndef SYMCR_SCHEMA_HPP
+#define SYMCR_SCHEMA_HPP
+
+#include <cstddef>
+#include <cstdint>
+
+namespace symcr {
+
+// The kind of a type. The numeric values are part of the checkpoint format.
+enum class Kind : std::uint8_t {
+  Bool = 1,      // bool; 1 byte on the wire (0 or 1)
+  Int = 2,       // signed integer of `size` bytes (char, short, int, long, long long, wchar_t...)
+  UInt = 3,      // unsigned integer of `size` bytes (incl. char8/16/32_t, unsigned char)
+  Float = 4,     // IEEE binary32 (size 4), binary64 (8), x87 extended long double (16)
+  Enum = 5,      // scoped or not; `element` is the underlying Int/UInt type; has enumerators
+  Struct = 6,    // class/struct/pair/tuple; `fields` (bases first, flagged kFieldBase)
+  Union = 7,     // raw bytes of `size` (the largest member), as in the paper
+  Array = 8,     // fixed array or std::array: `count` elements of `element`
+  String = 9,    // std::basic_string; `element` is the character type; ops: StringOps
+  Container = 10,  // vector/deque/list/set/map/...: elements of `element`; ops: ContainerOps
+  Optional = 11,   // std::optional<element>; ops: OptionalOps
+  Variant = 12,    // std::variant<alternatives...>; ops: VariantOps
+  Pointer = 13,    // raw T*; `element` is T; target restored symbolically (PRODUCT.md §7)
+  UniquePtr = 14,  // std::unique_ptr<element>; owns its pointee; ops: UniquePtrOps
+  SharedPtr = 15,  // std::shared_ptr<element>; sharing kept; ops: SharedPtrOps
+};
+
+// Which standard container a Kind::Container type is. Informational (names, CLI); restore
+// treats any container as "its contents" (PRODUCT.md §6).
+enum class ContainerKind : std::uint8_t {
+  Vector = 1, Deque, List, ForwardList, Set, MultiSet, UnorderedSet, UnorderedMultiSet,
+  Map, MultiMap, UnorderedMap, UnorderedMultiMap,
+};
+
+inline constexpr std::uint32_t kNoType = 0xFFFFFFFFu;
+
+// TypeInfo::flags
+enum : std::uint32_t {
+  kTypeScopedEnum = 1u << 0,  // enum class
+  kTypeShallow = 1u << 1,     // a shallow root's restricted view of its class (§3)
+};
+
+// FieldInfo::flags
+enum : std::uint32_t {
+  kFieldBase = 1u << 0,       // a base-class subobject; `name` is the base's type name
+  kFieldHasRange = 1u << 1,   // range_min/range_max validate restored values (issue 7)
+};
+
+// RootInfo::flags
+enum : std::uint32_t {
+  kRootShallow = 1u << 0,
+};
+
+struct EnumeratorInfo {
+  const char* name;     // unqualified enumerator name, e.g. "AUTO"
+  std::int64_t value;   // its value (unsigned 64-bit enumerators are stored bit-cast)
+};
+
+struct FieldInfo {
+  const char* name;                  // source name of the member (or base type name)
+  std::uint32_t type;                // index into Schema::types
+  std::uint32_t offset;              // byte offset in the enclosing object; for a bit-field,
+                                     // the offset of the storage unit it lives in
+  std::uint16_t bit_offset;          // bit-field: first bit within the unit (LSB = 0)
+  std::uint16_t bit_width;           // bit-field width in bits; 0 = not a bit-field
+  std::uint32_t flags;               // kField*
+  const char* const* renamed_from;   // nullptr-terminated list of old names, or nullptr
+  double range_min;                  // with kFieldHasRange: inclusive bounds on the value
+  double range_max;
+};
+
+// Per-kind operations: the only code the runtime cannot derive from offsets. Implemented as
+// templates in <symcr/ops.hpp>; the generator instantiates them per type.
+struct Lifecycle {                    // for types that are heap-allocated or staged
+  void* (*create)();                  // new T() (value-initialised)
+  void (*destroy)(void* object);      // delete static_cast<T*>(object)
+};
+
+struct StringOps {
+  std::size_t (*size)(const void* s);                    // in characters
+  const void* (*data)(const void* s);
+  void (*assign)(void* s, const void* chars, std::size_t n);
+};
+
+struct ContainerOps {
+  std::size_t (*size)(const void* c);
+  // Save: calls visit(context, element) for each element in iteration order.
+  void (*for_each)(const void* c, void (*visit)(void* context, const void* element),
+                   void* context);
+  // Element i in iteration order (O(i) for node containers); nullptr if out of range.
+  void* (*element_at)(void* c, std::size_t i);
+  void (*clear)(void* c);
+  void (*reserve)(void* c, std::size_t n);               // no-op where meaningless
+  // Sequences: append a value-initialised element and return it (stable until the next
+  // append only for vectors, which is why restore reserves first). nullptr for associative.
+  void* (*append)(void* c);
+  // Associative containers: insert a staged element (created and destroyed with the element
+  // type's Lifecycle); moves from it; returns the inserted element, or nullptr if the key was
+  // already present (a duplicate: the checkpoint is inconsistent). nullptr for sequences.
+  void* (*insert)(void* c, void* staged_element);
+};
+
+struct OptionalOps {
+  const void* (*get)(const void* o);    // nullptr when empty
+  void* (*emplace)(void* o);            // engage with a value-initialised value; returns it
+  void (*reset)(void* o);
+};
+
+struct VariantOps {
+  std::uint32_t (*index)(const void* v);                 // kNoType when valueless
+  const void* (*get)(const void* v);                     // the active alternative
+  void* (*emplace)(void* v, std::uint32_t index);        // value-initialise alternative
+};
+
+struct UniquePtrOps {
+  const void* (*get)(const void* p);
+  void* (*make)(void* p);               // p.reset(new T()); returns the pointee
+  void (*reset)(void* p);
+};
+
+struct SharedPtrOps {
+  const void* (*get)(const void* p);
+  // A runtime-owned std::shared_ptr<T> holding a new value-initialised T; returns the holder.
+  void* (*make_holder)();
+  void* (*holder_get)(void* holder);                     // the T inside a holder
+  void (*assign_from_holder)(void* p, const void* holder);  // p = *holder
+  void (*destroy_holder)(void* holder);
+  void (*reset)(void* p);
+};
+
+struct TypeInfo {
+  const char* name;                  // canonical name: "Copter", "AP_Int8<int8_t>", "int32",
+                                     // "std::vector<Waypoint>" (see docs/format.md §names)
+  Kind kind;
+  std::uint32_t flags;               // kType*
+  std::uint32_t size;                // sizeof(T) in the running build
+  std::uint32_t align;               // alignof(T)
+  const FieldInfo* fields;           // Struct, Union (Union may list its members; unused)
+  std::uint32_t field_count;
+  const EnumeratorInfo* enumerators; // Enum
+  std::uint32_t enumerator_count;
+  std::uint32_t element;             // Enum: underlying; Array/Container/Optional/pointers:
+                                     // element/pointee; String: character type; else kNoType
+  std::uint64_t count;               // Array length
+  const std::uint32_t* alternatives; // Variant
+  std::uint32_t alternative_count;
+  std::uint8_t container_kind;       // Container: a ContainerKind
+  const void* ops;                   // the kind's *Ops table, or nullptr
+  const Lifecycle* lifecycle;        // for pointee/element types that restore must create
+  bool (*validate)(const void* object);  // user's symcr_validate(const T&), or nullptr
+  const char* const* renamed_from;   // SYMCR_RENAMED_FROM on the type; nullptr-terminated
+};
+
+struct RootInfo {
+  const char* name;                  // qualified source name: "copter", "ns::state",
+                                     // "Class::member", "function::local"
+  std::uint32_t type;
+  void* address;                     // the variable in this process
+  std::uint32_t flags;               // kRoot*
+  const char* const* renamed_from;
+};
+
+struct Schema {
+  const TypeInfo* types;
+  std::uint32_t type_count;
+  const RootInfo* roots;
+  std::uint32_t root_count;
+};
+
+}  // namespace symcr
+
+// The program's schema, defined by the code symcr-gen emits for a target. The runtime's
+// argument-less checkpoint()/restore() use it; it is weak so that a program without
+// generated code links and gets a clear "no schema" error instead.
+extern "C" const symcr::Schema* symcr_program_schema(void) __attribute__((weak));
+
+#endif  // SYMCR_SCHEMA_HPP

@@ -1,0 +1,195 @@
+// symcr: selective, symbolic checkpoint/restore. The whole public C++ API.
+//
+//   SYMCR_CHECKPOINT Copter copter;                     // a root: saved with all it reaches
+//   symcr::checkpoint("copter.ckpt");                   // at a known-good point
+//   symcr::Report r = symcr::restore("copter.ckpt");    // in a patched build, by names
+//   if (!r.ok()) fprintf(stderr, "%s\n", r.to_text().c_str());
+//
+// Builds with -fno-exceptions -fno-rtti. Errors are values (Status, Report), never throws.
+#ifndef SYMCR_SYMCR_HPP
+#define SYMCR_SYMCR_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "symcr/schema.hpp"
+
+// ---------------------------------------------------------------------------------------------
+// Annotations (PRODUCT.md §3). For an ordinary compiler they expand to nothing; symcr-gen
+// defines SYMCR_GENERATOR and reads them as Clang `annotate` attributes. Place them where a
+// GNU attribute goes: `SYMCR_CHECKPOINT Copter copter;`, `int raw SYMCR_SKIP;`,
+// `struct SYMCR_SKIP Buffer {...};`, `float yaw SYMCR_RENAMED_FROM("heading");`.
+#if defined(SYMCR_GENERATOR)
+#define SYMCR_CHECKPOINT __attribute__((annotate("symcr::checkpoint")))
+#define SYMCR_CHECKPOINT_SHALLOW __attribute__((annotate("symcr::checkpoint_shallow")))
+#define SYMCR_INCLUDE __attribute__((annotate("symcr::include")))
+#define SYMCR_SKIP __attribute__((annotate("symcr::skip")))
+#define SYMCR_RENAMED_FROM(old_name) __attribute__((annotate("symcr::renamed_from:" old_name)))
+#define SYMCR_RANGE(lo, hi) __attribute__((annotate("symcr::range:" #lo ":" #hi)))
+#else
+#define SYMCR_CHECKPOINT
+#define SYMCR_CHECKPOINT_SHALLOW
+#define SYMCR_INCLUDE
+#define SYMCR_SKIP
+#define SYMCR_RENAMED_FROM(old_name)
+#define SYMCR_RANGE(lo, hi)
+#endif
+
+namespace symcr {
+
+// ---------------------------------------------------------------------------------------------
+// Errors.
+enum class Error : std::uint8_t {
+  None = 0,
+  NoSchema,          // no generated schema linked into the program
+  Io,                // open/read/write/rename failed (message has errno text)
+  NotACheckpoint,    // bad magic
+  FutureVersion,     // written by a newer format version
+  Truncated,         // shorter than its header says
+  Checksum,          // checksum mismatch
+  Corrupt,           // structurally invalid (bad schema, bad lengths, bad references)
+  SchemaUnknown,     // references a schema by hash that is not available
+  Incompatible,      // a root cannot be restored at all (e.g. struct <-> int)
+  Strict,            // strict mode refused a lossy decision
+  Unsupported,       // a state the runtime cannot save (e.g. overlapping heap objects)
+  NoValidSlot,       // store: no slot holds a valid checkpoint
+  TooLarge,          // checkpoint larger than a store slot or a format limit
+};
+
+const char* error_name(Error error);
+
+// The outcome of an operation that returns no data. Fixed size: no allocation.
+class Status {
+ public:
+  Status() = default;
+  Status(Error error, const char* format, ...) __attribute__((format(printf, 3, 4)));
+  bool ok() const { return error_ == Error::None; }
+  Error error() const { return error_; }
+  const char* message() const { return message_; }
+
+ private:
+  Error error_ = Error::None;
+  char message_[240] = {};
+};
+
+// ---------------------------------------------------------------------------------------------
+// The restore report (PRODUCT.md §5): one entry per root and field (by path), plus value-level
+// rejections with their concrete paths ("mission.items[3].alt").
+enum class Decision : std::uint8_t {
+  Restored,   // plain restore
+  Kept,       // field or root added: kept the new build's initial value
+  Dropped,    // field or root removed: skipped
+  Converted,  // converted between types (detail: "int16 -> int32"); also renames, enum remaps
+  Rejected,   // could not be restored; kept the new build's value (detail: why)
+};
+
+const char* decision_name(Decision decision);
+
+struct ReportEntry {
+  std::string path;     // "copter.mission.items[].lat"; roots are their own names
+  Decision decision;
+  std::string detail;   // for anything but Restored: what and why
+  bool lossy;           // refused in strict mode (data lost or value not restored)
+};
+
+class Report {
+ public:
+  // True when the restore was applied. A report can be ok() and still hold Rejected entries
+  // in default mode; strict mode turns every lossy entry into a failure.
+  bool ok() const { return status_.ok(); }
+  const Status& status() const { return status_; }
+  const std::vector<ReportEntry>& entries() const { return entries_; }
+  std::size_t count(Decision decision) const;
+  std::uint64_t sequence() const { return sequence_; }  // of the checkpoint restored
+
+  std::string to_text() const;  // aligned table, one line per entry, status last
+  std::string to_json() const;  // {"ok":..,"error":..,"sequence":..,"entries":[{...}]}
+
+  // For the runtime and tools that build reports.
+  void set_status(const Status& status) { status_ = status; }
+  void set_sequence(std::uint64_t sequence) { sequence_ = sequence; }
+  void add(std::string path, Decision decision, std::string detail, bool lossy);
+  void clear() { *this = Report(); }
+
+ private:
+  Status status_;
+  std::vector<ReportEntry> entries_;
+  std::uint64_t sequence_ = 0;
+};
+
+struct RestoreOptions {
+  bool strict = false;  // refuse any lossy decision: nothing is written if one exists
+};
+
+enum class Durability : std::uint8_t {
+  PageCache,  // write into the page cache; survives a process crash, not a power cut
+  Fdatasync,  // fdatasync after each checkpoint
+};
+
+struct CheckpointOptions {
+  Durability durability = Durability::PageCache;
+};
+
+// ---------------------------------------------------------------------------------------------
+// Single-file checkpoints: written atomically (exclusive temp file + rename), mode 0600,
+// never following symlinks; the schema is inline, so any later build and the CLI can read it.
+// The argument-less-schema forms use the program's generated schema.
+Status checkpoint(const char* path, const CheckpointOptions& options = {});
+Report restore(const char* path, const RestoreOptions& options = {});
+Status checkpoint(const Schema& schema, const char* path, const CheckpointOptions& options = {});
+Report restore(const Schema& schema, const char* path, const RestoreOptions& options = {});
+
+// In-memory checkpoints (same bytes as a single-file checkpoint), e.g. to send elsewhere.
+// `out` keeps its capacity between calls: no allocation after the first of a steady state.
+Status checkpoint_to_buffer(const Schema& schema, std::vector<std::uint8_t>& out,
+                            std::uint64_t sequence = 0);
+Report restore_from_buffer(const Schema& schema, const std::uint8_t* data, std::size_t size,
+                           const RestoreOptions& options = {});
+
+// ---------------------------------------------------------------------------------------------
+// The checkpoint store (PRODUCT.md §5): one preallocated file with a ring of slots.
+struct StoreOptions {
+  std::uint32_t slots = 4;
+  std::uint32_t slot_size = 64 * 1024;  // bytes per slot, header included
+  Durability durability = Durability::PageCache;
+};
+
+class Store {
+ public:
+  Store() = default;
+  ~Store();
+  Store(const Store&) = delete;
+  Store& operator=(const Store&) = delete;
+  Store(Store&& other) noexcept;
+  Store& operator=(Store&& other) noexcept;
+
+  // Opens `path`, creating and preallocating it if absent. An existing store written by
+  // another build keeps its checkpoints (and their schema) until this build saves.
+  static Status open(const char* path, const Schema& schema, const StoreOptions& options,
+                     Store& out);
+  static Status open(const char* path, const StoreOptions& options, Store& out);  // program's
+
+  // Saves every root into the oldest slot with one positioned write.
+  Status save();
+  // Restores the newest slot that validates, falling back past torn or corrupt ones.
+  Report restore_latest(const RestoreOptions& options = {});
+
+  bool is_open() const { return fd_ >= 0; }
+  std::uint64_t last_sequence() const { return last_sequence_; }
+  const StoreOptions& options() const { return options_; }
+  void close();
+
+ private:
+  struct Impl;
+  int fd_ = -1;
+  const Schema* schema_ = nullptr;
+  StoreOptions options_;
+  std::uint64_t last_sequence_ = 0;
+  Impl* impl_ = nullptr;  // buffers and cached plans, allocated on open
+};
+
+}  // namespace symcr
+
+#endif  // SYMCR_SYMCR_HPP

@@ -1,0 +1,71 @@
+// The seam between the file layer (records, single files, the store, the C API) and the
+// payload engine (schema serialisation, save traversal, resolution, two-pass restore).
+// Internal to the runtime; the CLI and fuzzers may include it too.
+#ifndef SYMCR_SRC_ENGINE_HPP
+#define SYMCR_SRC_ENGINE_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "symcr/schema.hpp"
+#include "symcr/symcr.hpp"
+
+namespace symcr::detail {
+
+// The serialised form (docs/format.md §2) of a running build's schema and its FNV-1a 64 hash.
+// Computed once per Schema object and cached; thread-compatible (compute before sharing).
+struct SchemaBlob {
+  std::vector<std::uint8_t> bytes;
+  std::uint64_t hash = 0;
+};
+const SchemaBlob& schema_blob(const Schema& schema);
+
+std::uint64_t fnv1a64(const std::uint8_t* data, std::size_t size);
+
+// A writer schema parsed from checkpoint bytes: owns its strings and tables and exposes them
+// as a symcr::Schema (roots have null addresses). Validated on parse (docs/format.md §2).
+class ParsedSchema {
+ public:
+  ParsedSchema();
+  ~ParsedSchema();
+  ParsedSchema(ParsedSchema&&) noexcept;
+  ParsedSchema& operator=(ParsedSchema&&) noexcept;
+  const Schema& schema() const;
+  std::uint64_t hash() const;
+
+  struct Storage;
+  std::unique_ptr<Storage> storage;
+};
+Status parse_schema(const std::uint8_t* data, std::size_t size, ParsedSchema& out);
+
+// Saves every root of `schema` as a payload (docs/format.md §3), replacing `out`'s contents.
+// Reuses the capacity of `out` and of internal per-thread scratch: a steady state allocates
+// nothing after the first call.
+Status encode_payload(const Schema& schema, std::vector<std::uint8_t>& out);
+// Same, appending at out.size() (so a caller can reserve room for a header first).
+Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out);
+
+// Restores a payload written with `writer` into the live roots of `reader`: resolves (plans are
+// cached per writer-hash/reader pair), decodes and checks everything, and only then writes.
+// On any failure the report is !ok() and no live object has been modified.
+Report restore_payload(const Schema& writer, std::uint64_t writer_hash,
+                       const std::uint8_t* payload, std::size_t size, const Schema& reader,
+                       const RestoreOptions& options);
+
+// Decodes a payload against its writer schema without any reader, calling the visitor for each
+// scalar leaf with its symbolic path (for the CLI's inspect/diff). Returns the decode status.
+struct ValueVisitor {
+  virtual ~ValueVisitor() = default;
+  // `path` like "copter.mission.items[3].lat"; `type` is the writer type of the leaf; `bytes`
+  // the little-endian wire bytes (String: the characters; Pointer: textual target in `text`).
+  virtual void leaf(const char* path, const TypeInfo& type, const std::uint8_t* bytes,
+                    std::size_t size, const char* text) = 0;
+};
+Status visit_payload(const Schema& writer, const std::uint8_t* payload, std::size_t size,
+                     ValueVisitor& visitor);
+
+}  // namespace symcr::detail
+
+#endif  // SYMCR_SRC_ENGINE_HPP
