@@ -54,6 +54,13 @@ Report restore_payload(const Schema& writer, std::uint64_t writer_hash,
                        const std::uint8_t* payload, std::size_t size, const Schema& reader,
                        const RestoreOptions& options);
 
+// Pass 1 of restore_payload only: the full report (schema-level and value-level decisions)
+// and status of restoring the payload into `reader`, without writing anything. The reader's
+// roots need no addresses (e.g. a schema read from another build, for the CLI's `plan`).
+// With payload == nullptr and size == 0, only the schema-level plan is reported.
+Report plan_payload(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,
+                    std::size_t size, const Schema& reader, const RestoreOptions& options);
+
 // Decodes a payload against its writer schema without any reader, calling the visitor for each
 // scalar leaf with its symbolic path (for the CLI's inspect/diff). Returns the decode status.
 struct ValueVisitor {

@@ -1,0 +1,138 @@
+// Loading checkpoints for the CLI from files and store slots.
+#include "checkpoint_source.hpp"
+
+#include <fcntl.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "file_io.hpp"
+#include "values.hpp"
+
+namespace symcr::cli {
+namespace {
+
+Status with_path(const std::string& path, const Status& status) {
+  if (status.ok() || std::strncmp(status.message(), path.c_str(), path.size()) == 0) {
+    return status;  // already names the file
+  }
+  return Status(status.error(), "%s: %s", path.c_str(), status.message());
+}
+
+}  // namespace
+
+std::string resolve_links(const std::string& path) {
+  char resolved[PATH_MAX];
+  return ::realpath(path.c_str(), resolved) ? std::string(resolved) : path;
+}
+
+Status detect_file_kind(const std::string& path, FileKind& out) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return detail::io_error("cannot open", path.c_str(), errno);
+  std::uint8_t magic[8] = {};
+  std::size_t got = 0;
+  const Status status = detail::pread_full(fd, magic, sizeof magic, 0, got, path.c_str());
+  ::close(fd);
+  if (!status.ok()) return status;
+  if (detail::looks_like_store(magic, got)) {
+    out = FileKind::Store;
+    return Status();
+  }
+  if (got == sizeof magic && std::memcmp(magic, detail::kRecordMagic, sizeof magic) == 0) {
+    out = FileKind::Record;
+    return Status();
+  }
+  if (got < sizeof magic &&
+      std::memcmp(magic, detail::kRecordMagic, got) == 0) {  // a checkpoint cut short
+    out = FileKind::Record;
+    return Status();
+  }
+  return Status(Error::NotACheckpoint, "%s is not a symcr checkpoint or store (bad magic)",
+                path.c_str());
+}
+
+Status load_record_file(const std::string& path, LoadedCheckpoint& out) {
+  out.path = path;
+  out.from_store = false;
+  Status status =
+      detail::read_regular_file(resolve_links(path).c_str(), kMaxRecordFileSize, out.bytes);
+  if (!status.ok()) return status;
+  status = detail::parse_record(out.bytes.data(), out.bytes.size(), out.record);
+  if (!status.ok()) return with_path(path, status);
+  if (out.record.record_size != out.bytes.size()) {
+    return Status(Error::Corrupt, "%s: %zu unexpected bytes after the %zu-byte record",
+                  path.c_str(), out.bytes.size() - out.record.record_size,
+                  out.record.record_size);
+  }
+  if (out.record.schema == nullptr) {
+    return Status(Error::SchemaUnknown,
+                  "%s: the record references schema %016llx by hash (a store slot's record) "
+                  "and carries no schema of its own",
+                  path.c_str(), static_cast<unsigned long long>(out.record.header.schema_hash));
+  }
+  status = detail::parse_schema(out.record.schema, out.record.header.schema_size,
+                                out.inline_schema);
+  if (!status.ok()) return with_path(path, status);
+  out.writer = &out.inline_schema.schema();
+  out.writer_hash = out.record.header.schema_hash;
+  return Status();
+}
+
+Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slot,
+                       LoadedCheckpoint& out) {
+  FileKind kind;
+  Status status = detect_file_kind(path, kind);
+  if (!status.ok()) return status;
+  if (kind == FileKind::Record) {
+    if (slot) {
+      return Status(Error::Io, "%s is a single-file checkpoint, which has no slots",
+                    path.c_str());
+    }
+    status = load_record_file(path, out);
+    if (!status.ok()) return status;
+    if (out.record.payload_size == 0) {
+      return Status(Error::Corrupt, "%s is a schema file, which holds no values",
+                    path.c_str());
+    }
+    return with_path(path, check_payload(*out.writer, out.record.payload,
+                                         out.record.payload_size));
+  }
+
+  out.path = path;
+  out.from_store = true;
+  out.store.reset(new detail::StoreReader());
+  status = out.store->open(resolve_links(path).c_str());
+  if (!status.ok()) return status;
+  std::vector<std::uint32_t> candidates;
+  if (slot) {
+    candidates.push_back(*slot);
+  } else {
+    candidates = out.store->valid_slots_newest_first();
+  }
+  Status last_failure(Error::NoValidSlot, "%s: no slot holds a valid checkpoint", path.c_str());
+  for (const std::uint32_t index : candidates) {
+    int area_index = -1;
+    status = out.store->read_record(index, out.bytes, out.record, area_index);
+    if (status.ok()) {
+      const detail::StoreSchemaArea& area = out.store->area(area_index);
+      out.writer = &area.schema.schema();
+      out.writer_hash = area.hash;
+      out.slot = index;
+      status = check_payload(*out.writer, out.record.payload, out.record.payload_size);
+      if (status.ok()) return Status();
+    }
+    if (slot) {
+      return Status(status.error(), "%s: slot %u: %s", path.c_str(), index, status.message());
+    }
+    last_failure = Status(Error::NoValidSlot,
+                          "%s: no slot holds a restorable checkpoint (last tried slot %u: %s)",
+                          path.c_str(), index, status.message());
+  }
+  out.writer = nullptr;
+  return last_failure;
+}
+
+}  // namespace symcr::cli

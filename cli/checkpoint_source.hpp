@@ -1,0 +1,59 @@
+// Finding the checkpoint a command works on: a single-file checkpoint, or one slot of a store
+// (the one restore_latest() would take, or a chosen one), with its writer schema.
+#ifndef SYMCR_CLI_CHECKPOINT_SOURCE_HPP
+#define SYMCR_CLI_CHECKPOINT_SOURCE_HPP
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine.hpp"
+#include "record.hpp"
+#include "store_reader.hpp"
+#include "symcr/symcr.hpp"
+
+namespace symcr::cli {
+
+enum class FileKind : std::uint8_t {
+  Record,  // "SYMCRCKP": a single-file checkpoint or a schema file
+  Store,   // "SYMCRSTO"
+};
+
+// `path` with symbolic links resolved (or as given if it cannot be). The runtime never follows
+// a link when it reads or writes checkpoints; a read-only tool may, and users expect it to
+// (`latest.ckpt -> ckpt-17`).
+std::string resolve_links(const std::string& path);
+
+// Reads the magic only. Anything else is NotACheckpoint; a missing file is Io.
+Status detect_file_kind(const std::string& path, FileKind& out);
+
+// Largest record file the CLI reads (the format's own limit).
+inline constexpr std::uint64_t kMaxRecordFileSize = 0xFFFFull + 2 * 0xFFFFFFFFull;
+
+struct LoadedCheckpoint {
+  std::string path;
+  bool from_store = false;
+  std::uint32_t slot = 0;                  // from_store: which slot
+  std::vector<std::uint8_t> bytes;         // the record
+  detail::RecordView record;               // views into `bytes`
+  detail::ParsedSchema inline_schema;      // single file: its own schema
+  std::unique_ptr<detail::StoreReader> store;  // from_store: owns the area's schema
+  const Schema* writer = nullptr;
+  std::uint64_t writer_hash = 0;
+};
+
+// A single-file checkpoint, or from a store the chosen slot or else the newest valid slot
+// whose payload decodes (as restore_latest() falls back past corrupt ones). The record, its
+// schema and (for a store slot) its payload are fully checked; a schema file is refused.
+Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slot,
+                       LoadedCheckpoint& out);
+
+// The parts of loading a single-file record, for verify's step-by-step account: parses and
+// validates the record (no trailing bytes, schema inline) and its schema.
+Status load_record_file(const std::string& path, LoadedCheckpoint& out);
+
+}  // namespace symcr::cli
+
+#endif  // SYMCR_CLI_CHECKPOINT_SOURCE_HPP

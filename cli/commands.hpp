@@ -1,0 +1,43 @@
+// The subcommands, each in its own file, called by main.cpp once the command line is parsed.
+// Each returns an exit code (exit_codes.hpp).
+#ifndef SYMCR_CLI_COMMANDS_HPP
+#define SYMCR_CLI_COMMANDS_HPP
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace symcr::cli {
+
+struct InspectArgs {
+  std::string path;                    // a checkpoint, a store or a schema file
+  std::optional<std::uint32_t> slot;   // store: this slot instead of the newest valid one
+  bool json = false;
+};
+int run_inspect(const InspectArgs& args);
+
+struct VerifyArgs {
+  std::string path;
+  bool json = false;
+};
+int run_verify(const VerifyArgs& args);
+
+struct DiffArgs {
+  std::string a, b;
+  std::optional<std::uint32_t> slot_a, slot_b;
+  bool json = false;
+};
+int run_diff(const DiffArgs& args);
+
+struct PlanArgs {
+  std::string checkpoint;
+  std::optional<std::uint32_t> slot;
+  std::string schema;                  // the target build's schema file
+  bool strict = false;
+  bool json = false;
+};
+int run_plan(const PlanArgs& args);
+
+}  // namespace symcr::cli
+
+#endif  // SYMCR_CLI_COMMANDS_HPP

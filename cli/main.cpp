@@ -1,0 +1,106 @@
+// symcr: the command-line tool (PRODUCT.md §9). Parses the command line with LLVM's
+// CommandLine library (one subcommand each, with its own --help) and runs the subcommand.
+// Exit codes: 0 fine, 1 a finding, 2 usage or I/O error (exit_codes.hpp).
+#include <llvm/Support/CommandLine.h>
+#include <llvm/Support/raw_ostream.h>
+
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+
+namespace cl = llvm::cl;
+
+namespace {
+
+cl::OptionCategory symcr_category("symcr options");
+
+cl::SubCommand inspect_command(
+    "inspect", "Show a checkpoint's header and its values by source names. For a store: every "
+               "slot, and the values of the newest valid one (or --slot N).");
+cl::SubCommand verify_command(
+    "verify", "Check a checkpoint or store: checksum, structure, full payload decode; for a "
+              "store, the slot restore_latest() would take. Exit 1 if invalid.");
+cl::SubCommand diff_command(
+    "diff", "List the values that differ between two checkpoints, by path (added and removed "
+            "paths too). Exit 1 if any differ.");
+cl::SubCommand plan_command(
+    "plan", "Show the report restoring a checkpoint into a build would produce, from the "
+            "build's schema file, without running it. Exit 1 if a field would be rejected "
+            "(with --strict: if any decision is lossy).");
+
+cl::opt<std::string> inspect_path(cl::Positional, cl::Required,
+                                  cl::desc("<checkpoint | store | schema file>"),
+                                  cl::sub(inspect_command), cl::cat(symcr_category));
+cl::opt<std::string> verify_path(cl::Positional, cl::Required,
+                                 cl::desc("<checkpoint | store | schema file>"),
+                                 cl::sub(verify_command), cl::cat(symcr_category));
+cl::opt<std::string> diff_a(cl::Positional, cl::Required, cl::desc("<checkpoint a>"),
+                            cl::sub(diff_command), cl::cat(symcr_category));
+cl::opt<std::string> diff_b(cl::Positional, cl::Required, cl::desc("<checkpoint b>"),
+                            cl::sub(diff_command), cl::cat(symcr_category));
+cl::opt<std::string> plan_checkpoint(cl::Positional, cl::Required,
+                                     cl::desc("<checkpoint | store>"), cl::sub(plan_command),
+                                     cl::cat(symcr_category));
+
+cl::opt<bool> json_output("json", cl::desc("Write JSON instead of text"),
+                          cl::sub(inspect_command), cl::sub(verify_command),
+                          cl::sub(diff_command), cl::sub(plan_command), cl::cat(symcr_category));
+cl::opt<unsigned> slot("slot", cl::desc("Use this slot of a store instead of the newest valid one"),
+                       cl::value_desc("N"), cl::sub(inspect_command), cl::sub(plan_command),
+                       cl::cat(symcr_category));
+cl::opt<unsigned> slot_a("slot-a", cl::desc("Slot of store <a> (default: newest valid)"),
+                         cl::value_desc("N"), cl::sub(diff_command), cl::cat(symcr_category));
+cl::opt<unsigned> slot_b("slot-b", cl::desc("Slot of store <b> (default: newest valid)"),
+                         cl::value_desc("N"), cl::sub(diff_command), cl::cat(symcr_category));
+cl::opt<std::string> plan_schema("schema", cl::Required,
+                                 cl::desc("Schema file of the build to restore into"),
+                                 cl::value_desc("file"), cl::sub(plan_command),
+                                 cl::cat(symcr_category));
+cl::opt<bool> plan_strict("strict",
+                          cl::desc("Refuse any lossy decision, as RestoreOptions::strict does "
+                                   "(exit 1)"),
+                          cl::sub(plan_command), cl::cat(symcr_category));
+
+std::optional<std::uint32_t> given(const cl::opt<unsigned>& option) {
+  if (option.getNumOccurrences() == 0) return std::nullopt;
+  return static_cast<std::uint32_t>(option);
+}
+
+void print_version(llvm::raw_ostream& out) { out << "symcr " SYMCR_VERSION "\n"; }
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  // LLVM's own options (from the shared library) are of no use here: show only ours.
+  for (cl::SubCommand* command : {&*cl::TopLevelSubCommand, &inspect_command, &verify_command,
+                                  &diff_command, &plan_command}) {
+    cl::HideUnrelatedOptions(symcr_category, *command);
+  }
+  cl::SetVersionPrinter(print_version);
+  if (!cl::ParseCommandLineOptions(
+          argc, argv,
+          "symcr: inspect, verify, diff and plan symcr checkpoints\n\n"
+          "  Run 'symcr <subcommand> --help' for a subcommand's options.\n"
+          "  Exit codes: 0 fine, 1 a finding (invalid, different, rejected), 2 usage or I/O "
+          "error.\n",
+          &llvm::errs())) {
+    return symcr::cli::kExitError;
+  }
+  if (inspect_command) {
+    return symcr::cli::run_inspect({inspect_path, given(slot), json_output});
+  }
+  if (verify_command) return symcr::cli::run_verify({verify_path, json_output});
+  if (diff_command) {
+    return symcr::cli::run_diff({diff_a, diff_b, given(slot_a), given(slot_b), json_output});
+  }
+  if (plan_command) {
+    return symcr::cli::run_plan(
+        {plan_checkpoint, given(slot), plan_schema, plan_strict, json_output});
+  }
+  llvm::errs() << "symcr: a subcommand is needed: inspect, verify, diff or plan (see "
+                  "'symcr --help')\n";
+  return symcr::cli::kExitError;
+}

@@ -1,0 +1,104 @@
+# symcr_add_checkpointing(<target> [ANNOTATIONS <file>...])
+#
+# Runs symcr-gen over <target>'s C and C++ sources as a build step and links the runtime.
+# Every source is compiled through a generated wrapper that #includes it and appends what
+# needs its declarations (ops tables, root addresses, layout checks), so roots and types with
+# internal linkage work without editing the sources. The wrappers replace the sources in this
+# target only (other targets may still compile the same sources). One generated
+# symcr_schema.cpp holds the program's schema. Call it after all sources have been added.
+#
+# The generator is, in order: the cache variable SYMCR_GEN_EXECUTABLE (a prebuilt symcr-gen,
+# e.g. for sanitizer builds), or the target symcr::gen (built in this project, or imported by
+# find_package(symcr)). It reads the target's flags from compile_commands.json, which this
+# function enables for the target. A depfile lists every header the generator read, so editing
+# an annotated header regenerates.
+#
+# `#pragma symcr` lines are unknown to g++, which warns under -Wall (-Wunknown-pragmas): the
+# function adds -Wno-unknown-pragmas to the annotated target (only there).
+include_guard(GLOBAL)
+
+function(symcr_add_checkpointing target)
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "ANNOTATIONS")
+  if(arg_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "symcr_add_checkpointing: unknown arguments ${arg_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT TARGET ${target})
+    message(FATAL_ERROR "symcr_add_checkpointing: '${target}' is not a target")
+  endif()
+
+  if(SYMCR_GEN_EXECUTABLE)
+    set(generator "${SYMCR_GEN_EXECUTABLE}")
+    set(generator_dependency "${SYMCR_GEN_EXECUTABLE}")
+  elseif(TARGET symcr::gen)
+    set(generator "$<TARGET_FILE:symcr::gen>")
+    set(generator_dependency symcr::gen)
+  else()
+    message(FATAL_ERROR "symcr_add_checkpointing: no symcr-gen. Build it "
+                        "(SYMCR_BUILD_GENERATOR=ON) or set SYMCR_GEN_EXECUTABLE.")
+  endif()
+  if(TARGET symcr::runtime)
+    set(runtime symcr::runtime)
+  else()
+    message(FATAL_ERROR "symcr_add_checkpointing: target symcr::runtime not found")
+  endif()
+
+  get_target_property(source_dir ${target} SOURCE_DIR)
+  get_target_property(binary_dir ${target} BINARY_DIR)
+  get_target_property(sources ${target} SOURCES)
+  set(out_dir "${binary_dir}/symcr/${target}")
+  set(annotations)
+  foreach(file IN LISTS arg_ANNOTATIONS)
+    get_filename_component(file "${file}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+    list(APPEND annotations "${file}")
+  endforeach()
+
+  set(inputs)
+  set(wrappers)
+  set(replaced)
+  set(index 0)
+  foreach(source IN LISTS sources)
+    if(source MATCHES "^\\$<")
+      continue() # generator expressions: not a plain source
+    endif()
+    get_filename_component(extension "${source}" LAST_EXT)
+    if(NOT extension MATCHES "^\\.(c|cc|cpp|cxx|c\\+\\+|C)$")
+      continue()
+    endif()
+    get_filename_component(path "${source}" ABSOLUTE BASE_DIR "${source_dir}")
+    get_filename_component(name "${path}" NAME)
+    set(wrapper "${out_dir}/tu${index}_${name}")
+    math(EXPR index "${index} + 1")
+    list(APPEND inputs "${path}")
+    list(APPEND wrappers "${wrapper}")
+    list(APPEND replaced "${source}")
+  endforeach()
+  if(NOT inputs)
+    message(FATAL_ERROR "symcr_add_checkpointing: '${target}' has no C or C++ sources")
+  endif()
+
+  set(schema "${out_dir}/symcr_schema.cpp")
+  set(annotation_args)
+  foreach(file IN LISTS annotations)
+    list(APPEND annotation_args --annotations "${file}")
+  endforeach()
+  add_custom_command(
+    OUTPUT "${schema}" ${wrappers}
+    COMMAND "${generator}" -p "${CMAKE_BINARY_DIR}" --out-dir "${out_dir}"
+            --depfile "${out_dir}/symcr-gen.d" --depfile-target "${schema}"
+            --report-file "${out_dir}/report.txt" ${annotation_args} ${inputs}
+    DEPENDS ${generator_dependency} ${inputs} ${annotations}
+    DEPFILE "${out_dir}/symcr-gen.d"
+    COMMENT "symcr-gen: generating checkpoint code for ${target}"
+    VERBATIM)
+  # The wrappers replace the sources in this target only (not HEADER_FILE_ONLY, a directory-wide
+  # source property): another target may still compile the same sources plainly.
+  set(kept_sources ${sources})
+  list(REMOVE_ITEM kept_sources ${replaced})
+  set_property(TARGET ${target} PROPERTY SOURCES ${kept_sources})
+  target_sources(${target} PRIVATE "${schema}" ${wrappers})
+  set_target_properties(${target} PROPERTIES EXPORT_COMPILE_COMMANDS ON)
+  target_link_libraries(${target} PRIVATE ${runtime})
+  target_compile_options(${target} PRIVATE
+    $<$<COMPILE_LANG_AND_ID:CXX,GNU,Clang,AppleClang>:-Wno-unknown-pragmas>
+    $<$<COMPILE_LANG_AND_ID:C,GNU,Clang,AppleClang>:-Wno-unknown-pragmas>)
+endfunction()

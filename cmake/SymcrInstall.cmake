@@ -1,0 +1,27 @@
+# Install and export rules: the runtime library and headers, symcr-gen, and the CMake
+# package (symcrConfig.cmake with symcr_add_checkpointing). All in the component "sdk", so
+# `cmake --install <build> --component sdk` installs what a consuming project needs.
+include(GNUInstallDirs)
+include(CMakePackageConfigHelpers)
+
+install(TARGETS symcr_runtime EXPORT symcrTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT sdk
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT sdk)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/include/symcr
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT sdk)
+if(TARGET symcr-gen)
+  set_target_properties(symcr-gen PROPERTIES EXPORT_NAME gen)
+  install(TARGETS symcr-gen EXPORT symcrTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+          COMPONENT sdk)
+endif()
+install(EXPORT symcrTargets NAMESPACE symcr:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/symcr
+        COMPONENT sdk)
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/symcrConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/symcrConfig.cmake
+  INSTALL_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/symcr)
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/symcrConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/symcrConfig.cmake
+              ${PROJECT_BINARY_DIR}/symcrConfigVersion.cmake
+              ${PROJECT_SOURCE_DIR}/cmake/SymcrCheckpointing.cmake
+        DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/symcr COMPONENT sdk)

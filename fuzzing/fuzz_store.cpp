@@ -1,0 +1,156 @@
+// libFuzzer target (c): a checkpoint store file (docs/format.md §4) with several slots, opened
+// and restored with restore_latest() into a test program's state.
+//
+// A store file is mostly zeros (two schema areas of at least 4 KiB, preallocated slots), so the
+// input describes it compactly and the harness writes the file:
+//   control byte: bits 0-3 reader world; bit 4 recompute every CRC/hash after mutation;
+//                 bit 5 strict mode; bit 6 also list the store with the CLI's StoreReader
+//   sections, each u16 length + bytes, in order:
+//     0: the store header (bytes 0..35 of the file, zero-padded to 4096)
+//     1: schema area 0 (at 4096): u64 hash, u32 size, u32 crc32c, schema bytes
+//     2: schema area 1 (at 4096 + schema_area_size)
+//     3...: slot i's bytes (a record), at slots_offset + i * slot_size, cut at slot_size
+// The file gets the size its header implies (sparse), capped at 4 MiB; the store is opened
+// with the geometry its header claims, so the open never reinitialises a file with slots.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "fuzz_worlds.hpp"
+#include "store_reader.hpp"
+
+namespace {
+
+namespace le = symcr::detail::le;
+
+constexpr std::uint64_t kMaxFile = 4u << 20;
+
+const std::string& store_path() {
+  static const std::string path = [] {
+    const char* dir = std::getenv("TMPDIR");
+    std::string base = dir && *dir ? dir : "/tmp";
+    char name[64];
+    std::snprintf(name, sizeof name, "/symcr-fuzz-store-%d", static_cast<int>(getpid()));
+    return base + name;
+  }();
+  return path;
+}
+
+[[noreturn]] void fail(const char* what, unsigned world, const symcr::Report& report) {
+  std::fprintf(stderr, "symcr fuzz: %s (reader %s)\n%s\n", what, fuzz::world_name(world),
+               report.to_text().c_str());
+  std::abort();
+}
+
+void fix_area(std::vector<std::uint8_t>& area) {
+  if (area.size() < 16) return;
+  const std::uint32_t size = le::load32(area.data() + 8);
+  if (size > area.size() - 16) return;
+  le::store64(area.data(), symcr::detail::fnv1a64(area.data() + 16, size));
+  const std::uint32_t crc = symcr::detail::crc32c_extend(symcr::detail::crc32c(area.data(), 12),
+                                                         area.data() + 16, size);
+  le::store32(area.data() + 12, crc);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size < 1) return 0;
+  const std::uint8_t control = data[0];
+  const unsigned world = (control & 0x0f) % fuzz::kWorldCount;
+  const bool fix = (control & 0x10) != 0;
+  std::size_t at = 1;
+  std::vector<std::vector<std::uint8_t>> sections;
+  while (at + 2 <= size && sections.size() < 3 + 64) {
+    const std::size_t length = le::load16(data + at);
+    at += 2;
+    const std::size_t take = length < size - at ? length : size - at;
+    sections.emplace_back(data + at, data + at + take);
+    at += take;
+  }
+  if (sections.empty()) return 0;
+
+  std::vector<std::uint8_t> header(4096, 0);
+  for (std::size_t i = 0; i < sections[0].size() && i < 36; ++i) header[i] = sections[0][i];
+  if (fix) le::store32(header.data() + 32, symcr::detail::crc32c(header.data(), 32));
+  const std::uint32_t slot_count = le::load32(header.data() + 12);
+  const std::uint32_t slot_size = le::load32(header.data() + 16);
+  const std::uint32_t area_size = le::load32(header.data() + 20);
+  const std::uint64_t slots_offset = le::load64(header.data() + 24);
+  const std::uint64_t file_size = slots_offset + std::uint64_t{slot_count} * slot_size;
+  if (slot_count > 1024 || slots_offset > kMaxFile || file_size > kMaxFile || area_size > kMaxFile) {
+    return 0;
+  }
+
+  const std::string& path = store_path();
+  ::unlink(path.c_str());
+  const int fd = ::open(path.c_str(), O_CREAT | O_EXCL | O_WRONLY | O_CLOEXEC, 0600);
+  if (fd < 0) {
+    std::perror("symcr fuzz: cannot create the store file");
+    std::abort();
+  }
+  auto put = [&](std::vector<std::uint8_t>& bytes, std::uint64_t offset, std::uint64_t limit) {
+    const std::size_t n = bytes.size() < limit ? bytes.size() : static_cast<std::size_t>(limit);
+    if (n && offset < kMaxFile) (void)!::pwrite(fd, bytes.data(), n, static_cast<off_t>(offset));
+  };
+  put(header, 0, 4096);
+  for (int a = 0; a < 2; ++a) {
+    if (sections.size() <= static_cast<std::size_t>(1 + a)) break;
+    std::vector<std::uint8_t>& area = sections[1 + a];
+    if (fix) fix_area(area);
+    put(area, 4096 + static_cast<std::uint64_t>(a) * area_size, area_size);
+  }
+  for (std::size_t s = 3; s < sections.size(); ++s) {
+    const std::uint64_t slot = s - 3;
+    if (slot >= slot_count) break;
+    std::vector<std::uint8_t>& record = sections[s];
+    if (fix) fuzz::fix_record_integrity(record.data(), record.size());
+    put(record, slots_offset + slot * slot_size, slot_size);
+  }
+  if (::ftruncate(fd, static_cast<off_t>(file_size < 4096 ? 4096 : file_size)) != 0) {
+    std::perror("symcr fuzz: ftruncate");
+  }
+  ::close(fd);
+
+  fuzz::reset_world(world);
+  const std::vector<std::uint8_t> before = fuzz::world_snapshot(world);
+  {
+    symcr::StoreOptions options;
+    options.slots = slot_count;
+    options.slot_size = slot_size;
+    symcr::Store store;
+    const symcr::Status opened = symcr::Store::open(path.c_str(), fuzz::world_schema(world), options, store);
+    if (opened.ok()) {
+      symcr::RestoreOptions restore_options;
+      restore_options.strict = (control & 0x20) != 0;
+      const symcr::Report report = store.restore_latest(restore_options);
+      (void)report.to_json();
+      if (!report.ok() && fuzz::world_snapshot(world) != before) {
+        fail("a refused restore modified the live state", world, report);
+      }
+      if (!fuzz::world_rules_hold(world)) fail("a restored value breaks the reader's rules", world, report);
+    }
+  }
+  fuzz::reset_world(world);
+
+  if (control & 0x40) {
+    symcr::detail::StoreReader reader;
+    if (reader.open(path.c_str()).ok()) {
+      std::vector<std::uint8_t> bytes;
+      for (std::uint32_t index : reader.valid_slots_newest_first()) {
+        symcr::detail::RecordView view;
+        int area = -1;
+        (void)reader.read_record(index, bytes, view, area);
+      }
+    }
+  }
+  ::unlink(path.c_str());
+  return 0;
+}

@@ -1,0 +1,280 @@
+//===- Annotations.cpp - Pragmas and the sidecar annotation file
+//-----------===//
+
+#include "Annotations.h"
+
+#include "clang/Basic/SourceManager.h"
+#include "clang/Lex/Pragma.h"
+#include "clang/Lex/Preprocessor.h"
+#include "llvm/Support/MemoryBuffer.h"
+#include "llvm/Support/raw_ostream.h"
+
+#include <cctype>
+
+namespace symcr_gen {
+
+void Diagnostics::print(const Location &Loc, const char *Severity,
+                        const std::string &Message) {
+  std::string Line;
+  if (Loc.valid())
+    Line = Loc.File + ":" + std::to_string(Loc.Line) + ":" +
+           std::to_string(Loc.Column) + ": ";
+  else
+    Line = "symcr-gen: ";
+  Line += std::string(Severity) + ": " + Message;
+  if (!Seen.emplace(Line, true).second)
+    return;
+  llvm::errs() << Line << "\n";
+}
+
+void Diagnostics::error(const Location &Loc, const std::string &Message) {
+  std::lock_guard<std::mutex> Guard(Lock);
+  std::string Key = Loc.File + ":" + std::to_string(Loc.Line) + ":" +
+                    std::to_string(Loc.Column) + Message;
+  if (Seen.count("error " + Key))
+    return;
+  Seen.emplace("error " + Key, true);
+  ++Errors;
+  print(Loc, "error", Message);
+}
+
+void Diagnostics::warning(const Location &Loc, const std::string &Message) {
+  std::lock_guard<std::mutex> Guard(Lock);
+  print(Loc, "warning", Message);
+}
+
+void Diagnostics::note(const Location &Loc, const std::string &Message) {
+  std::lock_guard<std::mutex> Guard(Lock);
+  print(Loc, "note", Message);
+}
+
+static bool directiveKindFromName(const std::string &Name,
+                                  DirectiveKind &Kind) {
+  if (Name == "checkpoint")
+    Kind = DirectiveKind::Checkpoint;
+  else if (Name == "skip")
+    Kind = DirectiveKind::Skip;
+  else if (Name == "renamed")
+    Kind = DirectiveKind::Renamed;
+  else if (Name == "include")
+    Kind = DirectiveKind::Include;
+  else
+    return false;
+  return true;
+}
+
+static bool isNameChar(char C) {
+  return std::isalnum(static_cast<unsigned char>(C)) || C == '_' || C == ':' ||
+         C == '<' || C == '>' || C == ',' || C == '*' || C == ' ';
+}
+
+bool parseDirectiveText(const std::string &Text, const Location &Where,
+                        bool FromSidecar, std::vector<Directive> &Out,
+                        Diagnostics &Diags) {
+  auto At = [&](std::size_t Index) {
+    Location L = Where;
+    L.Column += static_cast<unsigned>(Index);
+    return L;
+  };
+  std::size_t I = 0;
+  auto SkipSpace = [&] {
+    while (I < Text.size() && std::isspace(static_cast<unsigned char>(Text[I])))
+      ++I;
+  };
+  SkipSpace();
+  std::size_t NameBegin = I;
+  while (I < Text.size() &&
+         (std::isalnum(static_cast<unsigned char>(Text[I])) || Text[I] == '_'))
+    ++I;
+  std::string Name = Text.substr(NameBegin, I - NameBegin);
+  Directive D;
+  D.FromSidecar = FromSidecar;
+  D.Where = At(NameBegin);
+  if (!directiveKindFromName(Name, D.Kind)) {
+    Diags.error(At(NameBegin),
+                "unknown symcr directive '" + Name +
+                    "' (expected checkpoint, skip, renamed or include)");
+    return false;
+  }
+  SkipSpace();
+  if (I >= Text.size() || Text[I] != '(') {
+    Diags.error(At(I), "expected '(' after '" + Name + "'");
+    return false;
+  }
+  ++I;
+  // Arguments are separated by commas outside template angle brackets.
+  int AngleDepth = 0;
+  std::string Current;
+  std::size_t CurrentBegin = I;
+  bool Closed = false;
+  auto Flush = [&]() {
+    std::string Compact;
+    for (char C : Current)
+      if (!std::isspace(static_cast<unsigned char>(C)))
+        Compact += C;
+    std::size_t Lead = 0;
+    while (CurrentBegin + Lead < Text.size() &&
+           std::isspace(static_cast<unsigned char>(Text[CurrentBegin + Lead])))
+      ++Lead;
+    D.Arguments.push_back({Compact, At(CurrentBegin + Lead)});
+    Current.clear();
+  };
+  for (; I < Text.size(); ++I) {
+    char C = Text[I];
+    if (C == '<')
+      ++AngleDepth;
+    else if (C == '>')
+      --AngleDepth;
+    if (C == ')' && AngleDepth == 0) {
+      Flush();
+      Closed = true;
+      ++I;
+      break;
+    }
+    if (C == ',' && AngleDepth == 0) {
+      Flush();
+      CurrentBegin = I + 1;
+      continue;
+    }
+    if (C != '"' && !isNameChar(C) &&
+        !std::isspace(static_cast<unsigned char>(C)) && C != '.' && C != '-' &&
+        C != '+') {
+      Diags.error(At(I), std::string("unexpected character '") + C +
+                             "' in symcr directive");
+      return false;
+    }
+    Current += C;
+  }
+  if (!Closed) {
+    Diags.error(At(Text.size()), "expected ')' to end the symcr directive");
+    return false;
+  }
+  SkipSpace();
+  if (I < Text.size()) {
+    Diags.error(At(I), "unexpected text after the symcr directive");
+    return false;
+  }
+  for (DirectiveArgument &A : D.Arguments) {
+    if (A.Text.size() >= 2 && A.Text.front() == '"' && A.Text.back() == '"')
+      A.Text = A.Text.substr(1, A.Text.size() - 2);
+    if (A.Text.empty()) {
+      Diags.error(A.Where, "empty argument in symcr directive");
+      return false;
+    }
+  }
+  if (D.Kind == DirectiveKind::Checkpoint && D.Arguments.size() > 1 &&
+      D.Arguments.back().Text == "shallow") {
+    D.Shallow = true;
+    D.Arguments.pop_back();
+  }
+  if (D.Kind == DirectiveKind::Renamed && D.Arguments.size() != 2) {
+    Diags.error(D.Where, "renamed(...) takes two arguments: the new name "
+                         "(Type::field, Type or variable) and the old name");
+    return false;
+  }
+  Out.push_back(std::move(D));
+  return true;
+}
+
+bool parseSidecarFile(const std::string &Path, std::vector<Directive> &Out,
+                      Diagnostics &Diags) {
+  auto Buffer = llvm::MemoryBuffer::getFile(Path);
+  if (!Buffer) {
+    Diags.error(Location(), "cannot read annotation file '" + Path +
+                                "': " + Buffer.getError().message());
+    return false;
+  }
+  llvm::StringRef Content = (*Buffer)->getBuffer();
+  bool Ok = true;
+  unsigned LineNumber = 0;
+  while (!Content.empty()) {
+    auto Split = Content.split('\n');
+    Content = Split.second;
+    ++LineNumber;
+    std::string Line = Split.first.str();
+    if (auto Comment = Line.find("//"); Comment != std::string::npos)
+      Line.resize(Comment);
+    std::size_t Begin = 0;
+    while (Begin < Line.size() &&
+           std::isspace(static_cast<unsigned char>(Line[Begin])))
+      ++Begin;
+    if (Begin == Line.size())
+      continue;
+    llvm::StringRef Rest(Line.data() + Begin, Line.size() - Begin);
+    if (Rest.startswith("#pragma")) {
+      std::size_t Skip = Begin + 7;
+      while (Skip < Line.size() &&
+             std::isspace(static_cast<unsigned char>(Line[Skip])))
+        ++Skip;
+      if (llvm::StringRef(Line).substr(Skip).startswith("symcr")) {
+        Begin = Skip + 5;
+      } else {
+        Diags.error({Path, LineNumber, static_cast<unsigned>(Skip + 1)},
+                    "expected 'symcr' after '#pragma' in an annotation file");
+        Ok = false;
+        continue;
+      }
+    } else if (Rest.startswith("#")) {
+      continue; // a comment line
+    }
+    Location Where{Path, LineNumber, static_cast<unsigned>(Begin + 1)};
+    Ok &= parseDirectiveText(Line.substr(Begin), Where, /*FromSidecar=*/true,
+                             Out, Diags);
+  }
+  return Ok;
+}
+
+namespace {
+
+/// Handles `#pragma symcr <directive>(...)` by re-spelling its tokens and
+/// parsing them like a sidecar line, keeping the pragma's own location.
+class SymcrPragmaHandler : public clang::PragmaHandler {
+public:
+  SymcrPragmaHandler(std::vector<Directive> &Out, Diagnostics &Diags)
+      : clang::PragmaHandler("symcr"), Out(Out), Diags(Diags) {}
+
+  void HandlePragma(clang::Preprocessor &PP, clang::PragmaIntroducer,
+                    clang::Token &FirstToken) override {
+    clang::SourceManager &SM = PP.getSourceManager();
+    clang::Token Tok;
+    PP.Lex(Tok);
+    if (Tok.is(clang::tok::eod))
+      return;
+    clang::PresumedLoc Start = SM.getPresumedLoc(Tok.getLocation());
+    (void)FirstToken;
+    // Rebuild the text with each token at its column so that argument
+    // locations point into the source line.
+    std::string Text;
+    unsigned StartColumn = Start.isValid() ? Start.getColumn() : 1;
+    while (Tok.isNot(clang::tok::eod)) {
+      clang::PresumedLoc P = SM.getPresumedLoc(Tok.getLocation());
+      unsigned Column = P.isValid() && P.getLine() == Start.getLine()
+                            ? P.getColumn()
+                            : StartColumn + static_cast<unsigned>(Text.size());
+      std::size_t Wanted = Column > StartColumn ? Column - StartColumn : 0;
+      if (Text.size() < Wanted)
+        Text.append(Wanted - Text.size(), ' ');
+      else if (Text.size() > Wanted)
+        Text += ' '; // tokens from a macro expansion: keep them apart
+      Text += PP.getSpelling(Tok);
+      PP.Lex(Tok);
+    }
+    Location Where;
+    if (Start.isValid())
+      Where = {Start.getFilename(), Start.getLine(), StartColumn};
+    parseDirectiveText(Text, Where, /*FromSidecar=*/false, Out, Diags);
+  }
+
+private:
+  std::vector<Directive> &Out;
+  Diagnostics &Diags;
+};
+
+} // namespace
+
+std::unique_ptr<clang::PragmaHandler>
+createPragmaHandler(std::vector<Directive> &Out, Diagnostics &Diags) {
+  return std::make_unique<SymcrPragmaHandler>(Out, Diags);
+}
+
+} // namespace symcr_gen

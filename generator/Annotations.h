@@ -1,0 +1,64 @@
+//===- Annotations.h - The three annotation forms
+//--------------------------===//
+//
+// Macros (Clang `annotate` attributes read while walking), `#pragma symcr ...`
+// and the sidecar annotation file both produce Directives with the same meaning
+// (PRODUCT.md §3). Directives name things by source names; SchemaBuilder
+// resolves them against each translation unit and reports names that match
+// nothing.
+//
+//===----------------------------------------------------------------------===//
+#ifndef SYMCR_GENERATOR_ANNOTATIONS_H
+#define SYMCR_GENERATOR_ANNOTATIONS_H
+
+#include "Model.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace clang {
+class PragmaHandler;
+} // namespace clang
+
+namespace symcr_gen {
+
+enum class DirectiveKind {
+  Checkpoint, ///< checkpoint(var, ... [, shallow])
+  Skip,       ///< skip(Type, Type::field, ...)
+  Renamed,    ///< renamed(Type::field | Type | var, old_name)
+  Include,    ///< include(Type::field, ...): selected for a shallow root
+};
+
+struct DirectiveArgument {
+  std::string Text; ///< "Copter::mission", whitespace removed
+  Location Where;
+};
+
+struct Directive {
+  DirectiveKind Kind = DirectiveKind::Checkpoint;
+  std::vector<DirectiveArgument> Arguments; ///< without the trailing `shallow`
+  bool Shallow = false;
+  bool FromSidecar = false;
+  Location Where;
+};
+
+/// Parses a sidecar annotation file: one directive per line, written as in a
+/// pragma with or without the `#pragma symcr` prefix; `//` and `#` comments.
+/// Returns false (after reporting) when the file cannot be read or parsed.
+bool parseSidecarFile(const std::string &Path, std::vector<Directive> &Out,
+                      Diagnostics &Diags);
+
+/// Parses one directive's text ("skip(A::b, C)") starting at \p Where; used by
+/// the sidecar parser and the pragma handler. Columns advance per character.
+bool parseDirectiveText(const std::string &Text, const Location &Where,
+                        bool FromSidecar, std::vector<Directive> &Out,
+                        Diagnostics &Diags);
+
+/// The `#pragma symcr` handler: appends every directive of the TU to \p Out.
+std::unique_ptr<clang::PragmaHandler>
+createPragmaHandler(std::vector<Directive> &Out, Diagnostics &Diags);
+
+} // namespace symcr_gen
+
+#endif // SYMCR_GENERATOR_ANNOTATIONS_H

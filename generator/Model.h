@@ -1,0 +1,142 @@
+//===- Model.h - The program schema as plain data ------------------------===//
+//
+// What symcr-gen learned from the translation units, independent of Clang: the
+// types, roots and per-TU exports the emitter writes out. Built by
+// SchemaBuilder (one pass per TU, merged by canonical type name), consumed by
+// the Emitter.
+//
+//===----------------------------------------------------------------------===//
+#ifndef SYMCR_GENERATOR_MODEL_H
+#define SYMCR_GENERATOR_MODEL_H
+
+#include "symcr/schema.hpp"
+
+#include <cstdint>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace symcr_gen {
+
+/// A source position as printed in diagnostics ("file:line:col").
+struct Location {
+  std::string File;
+  unsigned Line = 0;
+  unsigned Column = 0;
+  bool valid() const { return !File.empty(); }
+};
+
+/// Collects diagnostics from every TU; a diagnostic repeated by several TUs (a
+/// header seen twice) is printed once. Thread-safe: TUs are parsed in parallel.
+class Diagnostics {
+public:
+  void error(const Location &Loc, const std::string &Message);
+  void warning(const Location &Loc, const std::string &Message);
+  void note(const Location &Loc, const std::string &Message);
+  unsigned errorCount() const { return Errors; }
+
+private:
+  void print(const Location &Loc, const char *Severity,
+             const std::string &Message);
+  std::mutex Lock;
+  std::map<std::string, bool> Seen;
+  unsigned Errors = 0;
+};
+
+/// Which symcr::ops template a type's operation table comes from.
+enum class OpsKind {
+  None,
+  String,
+  Container,
+  Optional,
+  Variant,
+  UniquePtr,
+  SharedPtr
+};
+
+struct FieldModel {
+  std::string Name;
+  std::uint32_t Type = symcr::kNoType;
+  std::uint64_t Offset = 0;
+  unsigned BitOffset = 0;
+  unsigned BitWidth = 0;
+  std::uint32_t Flags = 0;
+  std::vector<std::string> RenamedFrom;
+  double RangeMin = 0;
+  double RangeMax = 0;
+  /// Spelling of the member for an offsetof() check, or empty when the member
+  /// is not checkable at compile time (private, bit-field,
+  /// non-standard-layout).
+  std::string OffsetCheckMember;
+};
+
+struct TypeModel {
+  std::string Name; ///< canonical name (docs/format.md §2)
+  symcr::Kind Kind = symcr::Kind::Struct;
+  std::uint32_t Flags = 0;
+  std::uint64_t Size = 0;
+  std::uint64_t Align = 0;
+  std::vector<FieldModel> Fields;
+  std::vector<std::pair<std::string, std::int64_t>> Enumerators;
+  std::uint32_t Element = symcr::kNoType;
+  std::uint64_t Count = 0;
+  std::vector<std::uint32_t> Alternatives;
+  std::uint8_t ContainerKind = 0;
+  OpsKind Ops = OpsKind::None;
+  bool NeedsLifecycle = false;
+  /// A C++ (or C) spelling usable in the home TU, empty if the type cannot be
+  /// named there (unnamed or function-local types).
+  std::string Spelling;
+  std::vector<std::string> RenamedFrom;
+  /// Index of the TU whose wrapper defines this type's ops and layout checks.
+  unsigned HomeTU = 0;
+  /// Describes the layout and selection; two TUs producing the same name with a
+  /// different fingerprint means inconsistent annotations or an ODR problem.
+  std::string Fingerprint;
+  std::string FirstSeenIn;
+  /// Members left out of this type and why ("raw: SYMCR_SKIP"), for --report.
+  std::vector<std::string> Skipped;
+};
+
+struct RootModel {
+  std::string Name;
+  std::uint32_t Type = symcr::kNoType;
+  std::uint32_t Flags = 0;
+  std::vector<std::string> RenamedFrom;
+  unsigned HomeTU = 0;
+  /// Code in the home TU's wrapper that yields the root's address.
+  std::string AddressExpression;
+  /// Declarations the address expression needs (asm-label aliases, access
+  /// helpers), emitted before it in the wrapper.
+  std::string AddressPrelude;
+  Location Where;
+};
+
+struct TranslationUnitModel {
+  std::string Source;  ///< absolute path of the user's source file
+  std::string Wrapper; ///< generated file that includes Source and adds exports
+  bool IsC = false;
+};
+
+/// Per-root summary for --report.
+struct RootReport {
+  std::string Root;
+  std::vector<std::string> Lines; ///< reached types/fields, skips and why
+  std::uint64_t Bytes =
+      0; ///< fixed-size bytes reached (containers: per element)
+};
+
+struct ProgramModel {
+  std::vector<TypeModel> Types;
+  std::map<std::string, std::uint32_t>
+      TypeIndex; ///< by canonical name (+ shallow flag)
+  std::vector<RootModel> Roots;
+  std::vector<TranslationUnitModel> TranslationUnits;
+  std::vector<RootReport> Reports;
+  std::vector<std::string> Dependencies; ///< every file read (for the depfile)
+};
+
+} // namespace symcr_gen
+
+#endif // SYMCR_GENERATOR_MODEL_H

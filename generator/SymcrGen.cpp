@@ -1,0 +1,380 @@
+//===- SymcrGen.cpp - symcr-gen: the checkpoint code generator
+//-------------===//
+//
+// Parses the target's sources with Clang (flags from compile_commands.json or
+// after `--`, like clang-tidy), collects the symcr annotations, and writes the
+// schema source, one wrapper per source, a depfile and an optional report.
+// See generator/README.md for the design.
+//
+//===----------------------------------------------------------------------===//
+
+#include "Annotations.h"
+#include "Emitter.h"
+#include "SchemaBuilder.h"
+
+#include "clang/Driver/Options.h"
+#include "clang/Frontend/CompilerInstance.h"
+#include "clang/Frontend/FrontendActions.h"
+#include "clang/Frontend/Utils.h"
+#include "clang/Lex/Preprocessor.h"
+#include "clang/Sema/SemaConsumer.h"
+#include "clang/Tooling/ArgumentsAdjusters.h"
+#include "clang/Tooling/CommonOptionsParser.h"
+#include "clang/Tooling/Tooling.h"
+#include "llvm/Option/ArgList.h"
+#include "llvm/Option/OptTable.h"
+#include "llvm/Support/CommandLine.h"
+#include "llvm/Support/FileSystem.h"
+#include "llvm/Support/Path.h"
+#include "llvm/Support/raw_ostream.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <set>
+#include <thread>
+
+#ifndef SYMCR_CLANG_RESOURCE_DIR
+#error "SYMCR_CLANG_RESOURCE_DIR must name Clang's resource directory"
+#endif
+
+using namespace clang;
+using namespace clang::tooling;
+using namespace symcr_gen;
+
+static llvm::cl::OptionCategory Category("symcr-gen options");
+static llvm::cl::extrahelp CommonHelp(CommonOptionsParser::HelpMessage);
+static llvm::cl::extrahelp MoreHelp(
+    "\nWrites <out-dir>/symcr_schema.cpp and, per source N, a wrapper\n"
+    "<out-dir>/tu<N>_<file name> that includes the source and adds what needs "
+    "its\n"
+    "declarations. The build compiles the wrappers instead of the sources.\n");
+
+static llvm::cl::opt<std::string>
+    OutDir("out-dir", llvm::cl::desc("Directory for generated sources"),
+           llvm::cl::value_desc("dir"), llvm::cl::cat(Category));
+static llvm::cl::list<std::string>
+    AnnotationFiles("annotations",
+                    llvm::cl::desc("Sidecar annotation file (repeatable)"),
+                    llvm::cl::value_desc("file"), llvm::cl::cat(Category));
+static llvm::cl::opt<std::string>
+    Depfile("depfile", llvm::cl::desc("Write a Makefile-style depfile"),
+            llvm::cl::value_desc("file"), llvm::cl::cat(Category));
+static llvm::cl::opt<std::string> DepfileTarget(
+    "depfile-target",
+    llvm::cl::desc("Output named in the depfile (default: the schema source)"),
+    llvm::cl::cat(Category));
+static llvm::cl::opt<bool>
+    Report("report",
+           llvm::cl::desc("Print, per root, what it reaches and skips"),
+           llvm::cl::cat(Category));
+static llvm::cl::opt<std::string>
+    ReportFile("report-file", llvm::cl::desc("Write the report to this file"),
+               llvm::cl::value_desc("file"), llvm::cl::cat(Category));
+static llvm::cl::opt<bool>
+    Timing("time", llvm::cl::desc("Print the time spent per source"),
+           llvm::cl::cat(Category));
+
+namespace {
+
+std::string wrapperPath(const std::string &Dir, unsigned Index,
+                        const std::string &Source) {
+  llvm::SmallString<256> Path(Dir);
+  llvm::sys::path::append(Path, "tu" + std::to_string(Index) + "_" +
+                                    llvm::sys::path::filename(Source).str());
+  return std::string(Path);
+}
+
+std::string absolute(const std::string &Path) {
+  llvm::SmallString<256> Result(Path);
+  llvm::sys::fs::make_absolute(Result);
+  llvm::sys::path::remove_dots(Result, /*remove_dot_dot=*/true);
+  return std::string(Result);
+}
+
+/// Answers for a source with the compile command of its wrapper when the build
+/// compiles the wrapper instead: the source is then absent from
+/// compile_commands.json, or present with another target's flags.
+class WrapperAwareDatabase : public CompilationDatabase {
+public:
+  WrapperAwareDatabase(const CompilationDatabase &Base,
+                       std::map<std::string, std::string> SourceToWrapper)
+      : Base(Base), SourceToWrapper(std::move(SourceToWrapper)) {
+    for (const std::string &F : Base.getAllFiles())
+      Known.insert(absolute(F));
+  }
+
+  std::vector<CompileCommand>
+  getCompileCommands(llvm::StringRef File) const override {
+    std::string Source = absolute(File.str());
+    auto It = SourceToWrapper.find(Source);
+    // The wrapper's command wins: another target may compile the source itself
+    // with other flags.
+    if (It == SourceToWrapper.end() || !Known.count(It->second))
+      return Base.getCompileCommands(File);
+    std::vector<CompileCommand> Commands = Base.getCompileCommands(It->second);
+    for (CompileCommand &Command : Commands) {
+      for (std::string &Arg : Command.CommandLine)
+        if (Arg == It->second || absolute(Arg) == It->second)
+          Arg = Source;
+      Command.Filename = Source;
+    }
+    return Commands;
+  }
+  std::vector<std::string> getAllFiles() const override {
+    return Base.getAllFiles();
+  }
+
+private:
+  const CompilationDatabase &Base;
+  std::map<std::string, std::string> SourceToWrapper;
+  std::set<std::string> Known;
+};
+
+/// Drops arguments Clang's driver does not know (g++-only flags in a
+/// compile_commands.json written for g++).
+CommandLineArguments dropUnknownArguments(const CommandLineArguments &Args,
+                                          llvm::StringRef) {
+  if (Args.empty())
+    return Args;
+  const llvm::opt::OptTable &Table = driver::getDriverOptTable();
+  std::vector<const char *> Raw;
+  for (std::size_t I = 1; I < Args.size(); ++I)
+    Raw.push_back(Args[I].c_str());
+  unsigned MissingIndex = 0, MissingCount = 0;
+  llvm::opt::InputArgList Parsed = Table.ParseArgs(
+      Raw, MissingIndex, MissingCount, driver::options::CC1Option | 0, 0);
+  std::set<unsigned> Unknown;
+  for (const llvm::opt::Arg *A : Parsed.filtered(driver::options::OPT_UNKNOWN))
+    Unknown.insert(A->getIndex());
+  CommandLineArguments Result{Args[0]};
+  for (std::size_t I = 1; I < Args.size(); ++I)
+    if (!Unknown.count(static_cast<unsigned>(I - 1)))
+      Result.push_back(Args[I]);
+  return Result;
+}
+
+/// TUs are parsed in parallel but handed to the SchemaBuilder one at a time in
+/// command-line order, so type indices, home TUs and diagnostics are the same
+/// as in a sequential run.
+class TurnOrder {
+public:
+  /// Blocks until every TU before \p Index has had its turn; true if this is
+  /// \p Index's turn (false if it was already taken, e.g. a second command).
+  bool await(unsigned Index) {
+    std::unique_lock<std::mutex> Guard(Lock);
+    Changed.wait(Guard, [&] { return Next >= Index; });
+    return Next == Index;
+  }
+  /// Ends \p Index's turn (also when it could not be parsed).
+  void done(unsigned Index) {
+    {
+      std::lock_guard<std::mutex> Guard(Lock);
+      if (Next == Index)
+        Next = Index + 1;
+    }
+    Changed.notify_all();
+  }
+
+private:
+  std::mutex Lock;
+  std::condition_variable Changed;
+  unsigned Next = 0;
+};
+
+class GenerateAction : public ASTFrontendAction {
+public:
+  GenerateAction(SchemaBuilder &Builder, Diagnostics &Diags, TurnOrder &Turns,
+                 unsigned TUIndex, std::set<std::string> &Dependencies)
+      : Builder(Builder), Diags(Diags), Turns(Turns), TUIndex(TUIndex),
+        Dependencies(Dependencies) {}
+
+  bool BeginSourceFileAction(CompilerInstance &CI) override {
+    CI.getPreprocessor().AddPragmaHandler(
+        createPragmaHandler(Pragmas, Diags).release());
+    Collector = std::make_shared<DependencyCollector>();
+    Collector->attachToPreprocessor(CI.getPreprocessor());
+    return true;
+  }
+
+  std::unique_ptr<ASTConsumer> CreateASTConsumer(CompilerInstance &,
+                                                 llvm::StringRef) override {
+    class Consumer : public SemaConsumer {
+    public:
+      explicit Consumer(GenerateAction &Action) : Action(Action) {}
+      void InitializeSema(Sema &S) override { TheSema = &S; }
+      void ForgetSema() override { TheSema = nullptr; }
+      void HandleTranslationUnit(ASTContext &Context) override {
+        if (Context.getDiagnostics().hasErrorOccurred())
+          return; // the front end already failed; no schema from a broken AST
+        if (!Action.Turns.await(Action.TUIndex))
+          return;
+        Action.Builder.addTranslationUnit(Context, TheSema, Action.TUIndex,
+                                          Action.Pragmas);
+        Action.Turns.done(Action.TUIndex);
+      }
+
+    private:
+      GenerateAction &Action;
+      Sema *TheSema = nullptr;
+    };
+    return std::make_unique<Consumer>(*this);
+  }
+
+  void EndSourceFileAction() override {
+    for (const std::string &File : Collector->getDependencies())
+      Dependencies.insert(absolute(File));
+  }
+
+private:
+  SchemaBuilder &Builder;
+  Diagnostics &Diags;
+  TurnOrder &Turns;
+  unsigned TUIndex;
+  std::set<std::string> &Dependencies;
+  std::vector<Directive> Pragmas;
+  std::shared_ptr<DependencyCollector> Collector;
+};
+
+class GenerateActionFactory : public FrontendActionFactory {
+public:
+  GenerateActionFactory(SchemaBuilder &Builder, Diagnostics &Diags,
+                        TurnOrder &Turns, unsigned TUIndex,
+                        std::set<std::string> &Dependencies)
+      : Builder(Builder), Diags(Diags), Turns(Turns), TUIndex(TUIndex),
+        Dependencies(Dependencies) {}
+  std::unique_ptr<FrontendAction> create() override {
+    return std::make_unique<GenerateAction>(Builder, Diags, Turns, TUIndex,
+                                            Dependencies);
+  }
+
+private:
+  SchemaBuilder &Builder;
+  Diagnostics &Diags;
+  TurnOrder &Turns;
+  unsigned TUIndex;
+  std::set<std::string> &Dependencies;
+};
+
+} // namespace
+
+int main(int argc, const char **argv) {
+  auto Parser =
+      CommonOptionsParser::create(argc, argv, Category, llvm::cl::OneOrMore);
+  if (!Parser) {
+    llvm::errs() << "symcr-gen: " << llvm::toString(Parser.takeError()) << "\n";
+    return 2;
+  }
+  Diagnostics Diags;
+  std::vector<Directive> Sidecar;
+  for (const std::string &File : AnnotationFiles)
+    parseSidecarFile(File, Sidecar, Diags);
+  if (Diags.errorCount())
+    return 1;
+
+  ProgramModel Program;
+  std::map<std::string, std::string> SourceToWrapper;
+  std::vector<std::string> Sources;
+  for (const std::string &Path : Parser->getSourcePathList()) {
+    TranslationUnitModel TU;
+    TU.Source = absolute(Path);
+    llvm::StringRef Extension = llvm::sys::path::extension(TU.Source);
+    TU.IsC = Extension == ".c";
+    if (!OutDir.empty()) {
+      TU.Wrapper = absolute(wrapperPath(
+          OutDir, static_cast<unsigned>(Sources.size()), TU.Source));
+      SourceToWrapper[TU.Source] = TU.Wrapper;
+    }
+    Sources.push_back(TU.Source);
+    Program.TranslationUnits.push_back(TU);
+  }
+
+  WrapperAwareDatabase Database(Parser->getCompilations(), SourceToWrapper);
+  SchemaBuilder Builder(Program, Diags, std::move(Sidecar));
+  std::set<std::string> Dependencies(AnnotationFiles.begin(),
+                                     AnnotationFiles.end());
+  // Parse with up to -j threads; each TU's dependencies are kept apart and
+  // merged after the join.
+  std::vector<std::set<std::string>> TUDependencies(Sources.size());
+  std::atomic<unsigned> NextSource{0};
+  std::atomic<bool> FrontEndFailed{false};
+  std::mutex OutputLock;
+  TurnOrder Turns;
+  auto Worker = [&] {
+    for (unsigned I = NextSource++; I < Sources.size(); I = NextSource++) {
+      auto Start = std::chrono::steady_clock::now();
+      ClangTool Tool(Database, {Sources[I]});
+      Tool.clearArgumentsAdjusters();
+      Tool.appendArgumentsAdjuster(getClangStripOutputAdjuster());
+      Tool.appendArgumentsAdjuster(getClangStripDependencyFileAdjuster());
+      Tool.appendArgumentsAdjuster(dropUnknownArguments);
+      Tool.appendArgumentsAdjuster(getClangSyntaxOnlyAdjuster());
+      Tool.appendArgumentsAdjuster(getInsertArgumentAdjuster(
+          {"-DSYMCR_GENERATOR=1", "-resource-dir=" SYMCR_CLANG_RESOURCE_DIR,
+           "-w", "-Wno-unknown-warning-option"},
+          ArgumentInsertPosition::END));
+      GenerateActionFactory Factory(Builder, Diags, Turns, I,
+                                    TUDependencies[I]);
+      bool Failed = Tool.run(&Factory) != 0;
+      // A TU that failed (or had no command) still passes on its turn.
+      Turns.await(I);
+      Turns.done(I);
+      std::lock_guard<std::mutex> Guard(OutputLock);
+      if (Failed) {
+        llvm::errs() << "symcr-gen: error: Clang could not parse '"
+                     << Sources[I] << "'\n";
+        FrontEndFailed = true;
+      }
+      if (Timing)
+        llvm::errs() << "symcr-gen: " << Sources[I] << ": "
+                     << std::chrono::duration<double>(
+                            std::chrono::steady_clock::now() - Start)
+                            .count()
+                     << " s\n";
+    }
+  };
+  unsigned ThreadCount =
+      Jobs ? Jobs.getValue()
+           : std::max(1u, std::thread::hardware_concurrency());
+  ThreadCount = std::min<unsigned>(ThreadCount, Sources.size());
+  std::vector<std::thread> Threads;
+  for (unsigned T = 1; T < ThreadCount; ++T)
+    Threads.emplace_back(Worker);
+  Worker();
+  for (std::thread &T : Threads)
+    T.join();
+  for (const std::set<std::string> &Files : TUDependencies)
+    Dependencies.insert(Files.begin(), Files.end());
+  Builder.finish();
+  if (FrontEndFailed || Diags.errorCount()) {
+    llvm::errs() << "symcr-gen: " << Diags.errorCount()
+                 << " error(s); nothing generated\n";
+    return 1;
+  }
+
+  std::string ReportText = renderReport(Program);
+  if (Report)
+    llvm::outs() << ReportText;
+  if (!ReportFile.empty() && !writeFileIfChanged(ReportFile, ReportText, Diags))
+    return 1;
+  if (!OutDir.empty()) {
+    llvm::sys::fs::create_directories(OutDir);
+    std::string Schema = absolute(OutDir + "/symcr_schema.cpp");
+    if (!writeFileIfChanged(Schema, emitSchemaSource(Program), Diags))
+      return 1;
+    for (unsigned I = 0; I < Program.TranslationUnits.size(); ++I)
+      if (!writeFileIfChanged(Program.TranslationUnits[I].Wrapper,
+                              emitWrapper(Program, I), Diags))
+        return 1;
+    if (!Depfile.empty()) {
+      std::vector<std::string> Deps(Dependencies.begin(), Dependencies.end());
+      std::string Target =
+          DepfileTarget.empty() ? Schema : DepfileTarget.getValue();
+      if (!writeFileIfChanged(Depfile, renderDepfile(Target, Deps), Diags))
+        return 1;
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,109 @@
+/* symcr C API: checkpoints, restores and the checkpoint store from C (C99) or C++.
+ *
+ *   if (symcr_checkpoint("copter.ckpt") != SYMCR_OK) fprintf(stderr, "%s\n", symcr_last_error());
+ *
+ *   symcr_report* report = NULL;
+ *   if (symcr_restore("copter.ckpt", 0, &report) != SYMCR_OK)
+ *     fprintf(stderr, "%s\n", symcr_report_text(report));
+ *   symcr_report_free(report);
+ *
+ * Functions taking a `const symcr_schema*` use the program's generated schema when it is NULL.
+ * Every function returns SYMCR_OK (0) or an error code; the message of the calling thread's
+ * last failure is symcr_last_error(). Nothing here throws or aborts on bad input. */
+#ifndef SYMCR_SYMCR_H
+#define SYMCR_SYMCR_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+namespace symcr {
+struct Schema;
+}
+/* In C++ the schema handle is symcr::Schema itself: no casts between the two APIs. */
+typedef symcr::Schema symcr_schema;
+extern "C" {
+#else
+typedef struct symcr_schema symcr_schema;
+#endif
+
+/* Error codes: the values of symcr::Error. */
+enum {
+  SYMCR_OK = 0,
+  SYMCR_ERROR_NO_SCHEMA = 1,
+  SYMCR_ERROR_IO = 2,
+  SYMCR_ERROR_NOT_A_CHECKPOINT = 3,
+  SYMCR_ERROR_FUTURE_VERSION = 4,
+  SYMCR_ERROR_TRUNCATED = 5,
+  SYMCR_ERROR_CHECKSUM = 6,
+  SYMCR_ERROR_CORRUPT = 7,
+  SYMCR_ERROR_SCHEMA_UNKNOWN = 8,
+  SYMCR_ERROR_INCOMPATIBLE = 9,
+  SYMCR_ERROR_STRICT = 10,
+  SYMCR_ERROR_UNSUPPORTED = 11,
+  SYMCR_ERROR_NO_VALID_SLOT = 12,
+  SYMCR_ERROR_TOO_LARGE = 13
+};
+
+/* Restore decisions: the values of symcr::Decision. */
+enum {
+  SYMCR_RESTORED = 0,
+  SYMCR_KEPT = 1,
+  SYMCR_DROPPED = 2,
+  SYMCR_CONVERTED = 3,
+  SYMCR_REJECTED = 4
+};
+
+/* "Io", "Checksum", ...; "Unknown" for a value that is not an error code. */
+const char* symcr_error_name(int error);
+/* The message of this thread's last failed call ("" if none failed yet). */
+const char* symcr_last_error(void);
+
+/* The program's generated schema (weak: NULL when no generated code is linked in). */
+const symcr_schema* symcr_program_schema(void) __attribute__((weak));
+
+/* Single-file checkpoints (atomic replace, mode 0600, symlinks never followed). */
+int symcr_checkpoint(const char* path);
+int symcr_checkpoint_with(const symcr_schema* schema, const char* path, int fdatasync);
+
+/* The restore report: opaque, owned by the caller, freed with symcr_report_free. */
+typedef struct symcr_report symcr_report;
+
+/* Restores `path`; strict != 0 refuses any lossy decision. When `report` is not NULL it
+ * receives a report (also on failure) to free with symcr_report_free. */
+int symcr_restore(const char* path, int strict, symcr_report** report);
+int symcr_restore_with(const symcr_schema* schema, const char* path, int strict,
+                       symcr_report** report);
+
+int symcr_report_ok(const symcr_report* report);
+int symcr_report_error(const symcr_report* report);
+uint64_t symcr_report_sequence(const symcr_report* report);
+size_t symcr_report_count(const symcr_report* report, int decision);
+/* Text and JSON renderings, owned by the report, valid until symcr_report_free. */
+const char* symcr_report_text(symcr_report* report);
+const char* symcr_report_json(symcr_report* report);
+void symcr_report_free(symcr_report* report);
+
+/* The checkpoint store: a preallocated ring of slots in one file. */
+typedef struct symcr_store symcr_store;
+typedef struct symcr_store_options {
+  uint32_t slots;     /* default 4 */
+  uint32_t slot_size; /* bytes per slot, header included; default 65536 */
+  int fdatasync;      /* non-zero: fdatasync after each save */
+} symcr_store_options;
+
+void symcr_store_options_init(symcr_store_options* options);
+/* `options` NULL means the defaults. On success *store receives a handle for
+ * symcr_store_close. */
+int symcr_store_open(const char* path, const symcr_schema* schema,
+                     const symcr_store_options* options, symcr_store** store);
+int symcr_store_save(symcr_store* store);
+int symcr_store_restore_latest(symcr_store* store, int strict, symcr_report** report);
+uint64_t symcr_store_last_sequence(const symcr_store* store);
+void symcr_store_close(symcr_store* store);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* SYMCR_SYMCR_H */

@@ -1,0 +1,179 @@
+// The C API (<symcr/symcr.h>): thin wrappers over the C++ API that turn statuses into codes
+// and keep the last failure's message per thread.
+#include "symcr/symcr.h"
+
+#include <cstdio>
+#include <new>
+#include <string>
+
+#include "symcr/symcr.hpp"
+
+static_assert(SYMCR_ERROR_TOO_LARGE == static_cast<int>(symcr::Error::TooLarge),
+              "C error codes mirror symcr::Error");
+static_assert(SYMCR_ERROR_NO_VALID_SLOT == static_cast<int>(symcr::Error::NoValidSlot),
+              "C error codes mirror symcr::Error");
+static_assert(SYMCR_ERROR_IO == static_cast<int>(symcr::Error::Io),
+              "C error codes mirror symcr::Error");
+static_assert(SYMCR_REJECTED == static_cast<int>(symcr::Decision::Rejected),
+              "C decisions mirror symcr::Decision");
+
+struct symcr_report {
+  symcr::Report report;
+  std::string text;  // renderings kept alive for the caller
+  std::string json;
+};
+
+struct symcr_store {
+  symcr::Store store;
+};
+
+namespace {
+
+thread_local char last_error[256];  // a Status message (240) always fits
+
+int record(const symcr::Status& status) {
+  if (!status.ok()) std::snprintf(last_error, sizeof last_error, "%s", status.message());
+  return static_cast<int>(status.error());
+}
+
+int hand_over(symcr::Report&& report, symcr_report** out) {
+  const int code = record(report.status());
+  if (out != nullptr) *out = new (std::nothrow) symcr_report{std::move(report), {}, {}};
+  return code;
+}
+
+symcr::RestoreOptions restore_options(int strict) {
+  symcr::RestoreOptions options;
+  options.strict = strict != 0;
+  return options;
+}
+
+}  // namespace
+
+extern "C" {
+
+const char* symcr_error_name(int error) {
+  if (error < 0 || error > static_cast<int>(symcr::Error::TooLarge)) return "Unknown";
+  return symcr::error_name(static_cast<symcr::Error>(error));
+}
+
+const char* symcr_last_error(void) { return last_error; }
+
+int symcr_checkpoint(const char* path) { return symcr_checkpoint_with(nullptr, path, 0); }
+
+int symcr_checkpoint_with(const symcr_schema* schema, const char* path, int fdatasync) {
+  if (path == nullptr) return record(symcr::Status(symcr::Error::Io, "no path given"));
+  symcr::CheckpointOptions options;
+  options.durability =
+      fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
+  return record(schema != nullptr ? symcr::checkpoint(*schema, path, options)
+                                  : symcr::checkpoint(path, options));
+}
+
+int symcr_restore(const char* path, int strict, symcr_report** report) {
+  return symcr_restore_with(nullptr, path, strict, report);
+}
+
+int symcr_restore_with(const symcr_schema* schema, const char* path, int strict,
+                       symcr_report** report) {
+  symcr::Report result;
+  if (path == nullptr) {
+    result.set_status(symcr::Status(symcr::Error::Io, "no path given"));
+  } else {
+    result = schema != nullptr ? symcr::restore(*schema, path, restore_options(strict))
+                               : symcr::restore(path, restore_options(strict));
+  }
+  return hand_over(std::move(result), report);
+}
+
+int symcr_report_ok(const symcr_report* report) {
+  return report != nullptr && report->report.ok();
+}
+
+int symcr_report_error(const symcr_report* report) {
+  return report != nullptr ? static_cast<int>(report->report.status().error())
+                           : SYMCR_ERROR_IO;
+}
+
+uint64_t symcr_report_sequence(const symcr_report* report) {
+  return report != nullptr ? report->report.sequence() : 0;
+}
+
+size_t symcr_report_count(const symcr_report* report, int decision) {
+  if (report == nullptr || decision < 0 ||
+      decision > static_cast<int>(symcr::Decision::Rejected)) {
+    return 0;
+  }
+  return report->report.count(static_cast<symcr::Decision>(decision));
+}
+
+const char* symcr_report_text(symcr_report* report) {
+  if (report == nullptr) return "";
+  report->text = report->report.to_text();
+  return report->text.c_str();
+}
+
+const char* symcr_report_json(symcr_report* report) {
+  if (report == nullptr) return "";
+  report->json = report->report.to_json();
+  return report->json.c_str();
+}
+
+void symcr_report_free(symcr_report* report) { delete report; }
+
+void symcr_store_options_init(symcr_store_options* options) {
+  if (options == nullptr) return;
+  const symcr::StoreOptions defaults;
+  options->slots = defaults.slots;
+  options->slot_size = defaults.slot_size;
+  options->fdatasync = defaults.durability == symcr::Durability::Fdatasync;
+}
+
+int symcr_store_open(const char* path, const symcr_schema* schema,
+                     const symcr_store_options* options, symcr_store** store) {
+  if (store == nullptr || path == nullptr) {
+    return record(symcr::Status(symcr::Error::Io, "symcr_store_open: no path or handle"));
+  }
+  *store = nullptr;
+  symcr::StoreOptions store_options;
+  if (options != nullptr) {
+    store_options.slots = options->slots;
+    store_options.slot_size = options->slot_size;
+    store_options.durability =
+        options->fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
+  }
+  auto* handle = new (std::nothrow) symcr_store;
+  if (handle == nullptr) return record(symcr::Status(symcr::Error::Io, "out of memory"));
+  const symcr::Status status =
+      schema != nullptr ? symcr::Store::open(path, *schema, store_options, handle->store)
+                        : symcr::Store::open(path, store_options, handle->store);
+  if (!status.ok()) {
+    delete handle;
+    return record(status);
+  }
+  *store = handle;
+  return SYMCR_OK;
+}
+
+int symcr_store_save(symcr_store* store) {
+  if (store == nullptr) return record(symcr::Status(symcr::Error::Io, "no store"));
+  return record(store->store.save());
+}
+
+int symcr_store_restore_latest(symcr_store* store, int strict, symcr_report** report) {
+  symcr::Report result;
+  if (store == nullptr) {
+    result.set_status(symcr::Status(symcr::Error::Io, "no store"));
+  } else {
+    result = store->store.restore_latest(restore_options(strict));
+  }
+  return hand_over(std::move(result), report);
+}
+
+uint64_t symcr_store_last_sequence(const symcr_store* store) {
+  return store != nullptr ? store->store.last_sequence() : 0;
+}
+
+void symcr_store_close(symcr_store* store) { delete store; }
+
+}  // extern "C"

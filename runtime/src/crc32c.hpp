@@ -1,0 +1,25 @@
+// CRC-32C (Castagnoli), the checksum of records, store headers and schema areas.
+#ifndef SYMCR_SRC_CRC32C_HPP
+#define SYMCR_SRC_CRC32C_HPP
+
+#include <cstddef>
+#include <cstdint>
+
+namespace symcr::detail {
+
+// Extends `crc` (the CRC of the bytes before; 0 for none) by `size` bytes, so that
+// crc32c(a+b) == crc32c_extend(crc32c(a), b). Uses SSE4.2 when the CPU has it.
+std::uint32_t crc32c_extend(std::uint32_t crc, const void* data, std::size_t size);
+inline std::uint32_t crc32c(const void* data, std::size_t size) {
+  return crc32c_extend(0, data, size);
+}
+
+// The two implementations behind crc32c_extend, exposed so tests can compare them.
+std::uint32_t crc32c_extend_portable(std::uint32_t crc, const void* data, std::size_t size);
+bool crc32c_hardware_available();
+// Only when crc32c_hardware_available().
+std::uint32_t crc32c_extend_hardware(std::uint32_t crc, const void* data, std::size_t size);
+
+}  // namespace symcr::detail
+
+#endif  // SYMCR_SRC_CRC32C_HPP

@@ -1,0 +1,190 @@
+// POSIX file helpers. Every call retries EINTR; every failure reports errno's text.
+#include "file_io.hpp"
+
+#include <fcntl.h>
+#include <limits.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+
+namespace symcr::detail {
+namespace {
+
+// Closes the descriptor on scope exit unless released.
+class FdGuard {
+ public:
+  explicit FdGuard(int fd) : fd_(fd) {}
+  ~FdGuard() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  FdGuard(const FdGuard&) = delete;
+  FdGuard& operator=(const FdGuard&) = delete;
+  int get() const { return fd_; }
+  int release() {
+    const int fd = fd_;
+    fd_ = -1;
+    return fd;
+  }
+
+ private:
+  int fd_;
+};
+
+int open_retrying(const char* path, int flags, mode_t mode = 0) {
+  int fd;
+  do {
+    fd = ::open(path, flags, mode);
+  } while (fd < 0 && errno == EINTR);
+  return fd;
+}
+
+}  // namespace
+
+Status io_error(const char* what, const char* path, int error_number) {
+  char text[96];
+  // GNU strerror_r: returns the message, which may or may not live in `text`.
+  const char* message = strerror_r(error_number, text, sizeof text);
+  return Status(Error::Io, "%s %s: %s", what, path, message);
+}
+
+Status pwrite_all(int fd, const void* data, std::size_t size, off_t offset, const char* path) {
+  const auto* p = static_cast<const std::uint8_t*>(data);
+  while (size > 0) {
+    const ssize_t written = ::pwrite(fd, p, size, offset);
+    if (written < 0) {
+      if (errno == EINTR) continue;
+      return io_error("cannot write", path, errno);
+    }
+    if (written == 0) return io_error("cannot write", path, EIO);
+    p += written;
+    size -= static_cast<std::size_t>(written);
+    offset += written;
+  }
+  return Status();
+}
+
+Status pread_full(int fd, void* data, std::size_t size, off_t offset, std::size_t& got,
+                  const char* path) {
+  auto* p = static_cast<std::uint8_t*>(data);
+  got = 0;
+  while (got < size) {
+    const ssize_t n = ::pread(fd, p + got, size - got, offset + static_cast<off_t>(got));
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return io_error("cannot read", path, errno);
+    }
+    if (n == 0) break;  // end of file
+    got += static_cast<std::size_t>(n);
+  }
+  return Status();
+}
+
+Status read_regular_file(const char* path, std::uint64_t max_size,
+                         std::vector<std::uint8_t>& out) {
+  // O_NONBLOCK: opening a FIFO must not hang; it is refused just below.
+  FdGuard fd(open_retrying(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK));
+  if (fd.get() < 0) {
+    if (errno == ELOOP) {
+      return Status(Error::Io, "cannot open %s: it is a symbolic link, which symcr does not "
+                    "follow", path);
+    }
+    return io_error("cannot open", path, errno);
+  }
+  struct stat info {};
+  if (::fstat(fd.get(), &info) != 0) return io_error("cannot stat", path, errno);
+  if (!S_ISREG(info.st_mode)) return Status(Error::Io, "%s is not a regular file", path);
+  if (static_cast<std::uint64_t>(info.st_size) > max_size) {
+    return Status(Error::TooLarge, "%s has %lld bytes, more than the %llu a checkpoint can have",
+                  path, static_cast<long long>(info.st_size),
+                  static_cast<unsigned long long>(max_size));
+  }
+  // Read to end of file rather than trusting st_size, which can change under us.
+  out.resize(static_cast<std::size_t>(info.st_size) + 1);
+  std::size_t total = 0;
+  for (;;) {
+    if (total == out.size()) {
+      if (total > max_size) break;  // grew past the limit while we read; caught below
+      out.resize(out.size() * 2);
+    }
+    std::size_t got = 0;
+    Status status = pread_full(fd.get(), out.data() + total, out.size() - total,
+                               static_cast<off_t>(total), got, path);
+    if (!status.ok()) return status;
+    total += got;
+    if (total < out.size()) break;  // short read: end of file
+  }
+  if (total > max_size) {
+    return Status(Error::TooLarge, "%s grew past %llu bytes while being read", path,
+                  static_cast<unsigned long long>(max_size));
+  }
+  out.resize(total);
+  return Status();
+}
+
+bool temp_path_for(const char* path, unsigned attempt, char* out, std::size_t out_size) {
+  const int n = std::snprintf(out, out_size, "%s.tmp.%ld.%u", path,
+                              static_cast<long>(::getpid()), attempt);
+  return n > 0 && static_cast<std::size_t>(n) < out_size;
+}
+
+Status write_file_atomically(const char* path, const std::uint8_t* data, std::size_t size,
+                             Durability durability) {
+  struct stat existing {};
+  if (::lstat(path, &existing) == 0 && S_ISLNK(existing.st_mode)) {
+    return Status(Error::Io, "refusing to replace %s: it is a symbolic link", path);
+  }
+
+  char temp[PATH_MAX];
+  constexpr unsigned kAttempts = 100;
+  int fd = -1;
+  for (unsigned attempt = 0; attempt < kAttempts && fd < 0; ++attempt) {
+    if (!temp_path_for(path, attempt, temp, sizeof temp)) {
+      return io_error("cannot create a temp file for", path, ENAMETOOLONG);
+    }
+    fd = open_retrying(temp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    if (fd < 0 && errno != EEXIST) return io_error("cannot create", temp, errno);
+  }
+  if (fd < 0) return io_error("cannot create a temp file for", path, EEXIST);
+
+  FdGuard guard(fd);
+  Status status = pwrite_all(fd, data, size, 0, temp);
+  if (status.ok() && durability == Durability::Fdatasync && ::fdatasync(fd) != 0) {
+    status = io_error("cannot fdatasync", temp, errno);
+  }
+  // close() reports delayed write errors on some file systems (NFS): check it.
+  if (::close(guard.release()) != 0 && status.ok()) status = io_error("cannot close", temp, errno);
+  if (status.ok() && ::rename(temp, path) != 0) {
+    status = io_error("cannot rename the temp file onto", path, errno);
+  }
+  if (!status.ok()) {
+    ::unlink(temp);
+    return status;
+  }
+  if (durability == Durability::Fdatasync) return sync_parent_directory(path);
+  return Status();
+}
+
+Status sync_parent_directory(const char* path) {
+  char directory[PATH_MAX];
+  const char* slash = std::strrchr(path, '/');
+  if (slash == nullptr) {
+    std::strcpy(directory, ".");
+  } else if (slash == path) {
+    std::strcpy(directory, "/");
+  } else {
+    const auto length = static_cast<std::size_t>(slash - path);
+    if (length >= sizeof directory) return io_error("cannot sync the directory of", path,
+                                                    ENAMETOOLONG);
+    std::memcpy(directory, path, length);
+    directory[length] = '\0';
+  }
+  FdGuard fd(open_retrying(directory, O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+  if (fd.get() < 0) return io_error("cannot open directory", directory, errno);
+  if (::fsync(fd.get()) != 0) return io_error("cannot fsync directory", directory, errno);
+  return Status();
+}
+
+}  // namespace symcr::detail

@@ -1,0 +1,48 @@
+// POSIX file helpers for checkpoints and the store: errno-carrying statuses, complete reads and
+// writes, and atomic replacement of a file that never follows a symlink.
+#ifndef SYMCR_SRC_FILE_IO_HPP
+#define SYMCR_SRC_FILE_IO_HPP
+
+#include <sys/types.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "symcr/symcr.hpp"
+
+namespace symcr::detail {
+
+// Error::Io "<what> <path>: <strerror(error_number)>".
+Status io_error(const char* what, const char* path, int error_number);
+
+// Writes all `size` bytes at `offset` (retrying short writes and EINTR).
+Status pwrite_all(int fd, const void* data, std::size_t size, off_t offset, const char* path);
+// Reads up to `size` bytes at `offset`; `got` < size only at end of file.
+Status pread_full(int fd, void* data, std::size_t size, off_t offset, std::size_t& got,
+                  const char* path);
+
+// Reads a whole regular file into `out` (capacity reused). Refuses a symlink as the final
+// path component (O_NOFOLLOW) and anything but a regular file (FIFOs, devices), and a file
+// larger than `max_size` (Error::TooLarge) before allocating for it.
+Status read_regular_file(const char* path, std::uint64_t max_size,
+                         std::vector<std::uint8_t>& out);
+
+// Temp file name for attempt `attempt` at replacing `path`: "<path>.tmp.<pid>.<attempt>".
+// Returns false if it does not fit in `out`.
+bool temp_path_for(const char* path, unsigned attempt, char* out, std::size_t out_size);
+
+// Replaces `path` with `data` atomically: writes a new temp file in the same directory,
+// created exclusively (O_CREAT|O_EXCL|O_NOFOLLOW, mode 0600; an existing temp name is never
+// reused or followed), optionally fdatasyncs it, renames it over `path`, and with Fdatasync
+// also syncs the directory. Refuses if `path` is a symlink, so the link and what it points to
+// both stay as they were. On failure `path` is unchanged and the temp file removed.
+Status write_file_atomically(const char* path, const std::uint8_t* data, std::size_t size,
+                             Durability durability);
+
+// fsync of the directory holding `path`, making a rename or creation in it durable.
+Status sync_parent_directory(const char* path);
+
+}  // namespace symcr::detail
+
+#endif  // SYMCR_SRC_FILE_IO_HPP

@@ -1,0 +1,620 @@
+// Resolution of a writer schema against the reader schema (PRODUCT.md §6), and the cache of
+// plans. Struct-to-struct matching is decided by the holder (root or field name): a type
+// renamed without annotation still matches through the field that holds it. Type names are
+// compared only where no holder exists: bases, variant alternatives and pointees.
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <mutex>
+#include <utility>
+
+#include "plan.hpp"
+#include "schema_facts.hpp"
+
+namespace symcr::detail {
+namespace {
+
+bool same_name(const char* a, const char* b) { return std::strcmp(a ? a : "", b ? b : "") == 0; }
+
+bool in_aliases(const char* name, const char* const* aliases) {
+  for (std::size_t i = 0; aliases && aliases[i]; ++i) {
+    if (same_name(name, aliases[i])) return true;
+  }
+  return false;
+}
+
+constexpr int kMaxPlanDepth = 512;
+
+bool is_associative(const TypeInfo& container) {
+  const auto* ops = static_cast<const ContainerOps*>(container.ops);
+  return ops && !ops->append;
+}
+
+class Planner {
+ public:
+  Planner(Plan& plan) : plan_(plan), w_(*plan.writer), r_(*plan.reader) {}
+
+  void run() {
+    compute_min_wire();
+    plan_.shared_types.assign(r_.type_count, kNoType);
+    for (std::uint32_t t = 0; t < r_.type_count; ++t) {
+      const TypeInfo& type = r_.types[t];
+      if (type.kind == Kind::SharedPtr && type.element < r_.type_count &&
+          plan_.shared_types[type.element] == kNoType) {
+        plan_.shared_types[type.element] = t;
+      }
+    }
+    plan_roots();
+    plan_.heap_nodes.assign(w_.type_count, nullptr);
+    for (std::uint32_t t = 0; t < w_.type_count; ++t) {
+      const TypeInfo& type = w_.types[t];
+      if ((type.kind == Kind::Pointer || type.kind == Kind::SharedPtr) &&
+          !plan_.heap_nodes[type.element]) {
+        plan_.heap_nodes[type.element] = node(type.element, find_reader_type(w_.types[type.element]));
+      }
+    }
+    build_report();
+    if (too_deep_) {
+      plan_.status = Status(Error::Corrupt, "invalid schema: types nest deeper than %d levels",
+                            kMaxPlanDepth);
+    }
+  }
+
+ private:
+  // ---- matching ------------------------------------------------------------------------
+  std::uint32_t find_reader_type(const TypeInfo& writer) const {
+    for (std::uint32_t t = 0; t < r_.type_count; ++t) {
+      if (same_name(r_.types[t].name, writer.name) && r_.types[t].kind == writer.kind) return t;
+    }
+    for (std::uint32_t t = 0; t < r_.type_count; ++t) {
+      if (names_match(writer, r_.types[t])) return t;
+    }
+    return kNoType;
+  }
+
+  void plan_roots() {
+    plan_.roots.resize(w_.root_count);
+    bool any_restorable = false;
+    // Each reader root takes at most one writer root: exact names first, then old names.
+    std::vector<std::uint32_t> matches(w_.root_count, kNoType);
+    std::vector<bool> taken(r_.root_count, false);
+    for (int pass = 0; pass < 2; ++pass) {
+      for (std::uint32_t wr = 0; wr < w_.root_count; ++wr) {
+        for (std::uint32_t rr = 0; rr < r_.root_count && matches[wr] == kNoType; ++rr) {
+          const bool named = pass == 0 ? same_name(r_.roots[rr].name, w_.roots[wr].name)
+                                       : in_aliases(w_.roots[wr].name, r_.roots[rr].renamed_from);
+          if (named && !taken[rr]) {
+            matches[wr] = rr;
+            taken[rr] = true;
+          }
+        }
+      }
+    }
+    for (std::uint32_t wr = 0; wr < w_.root_count; ++wr) {
+      const RootInfo& writer = w_.roots[wr];
+      const std::uint32_t match = matches[wr];
+      RootPlan& root = plan_.roots[wr];
+      root.reader_root = match;
+      root.node = node(writer.type, match == kNoType ? kNoType : r_.roots[match].type);
+      root.counter = new_counter(writer.name);
+      if (match != kNoType && root.node->action != Action::Reject) any_restorable = true;
+    }
+    if (w_.root_count > 0 && !any_restorable) {
+      plan_.status = Status(Error::Incompatible,
+                            "no root of the checkpoint can be restored into this build");
+    }
+  }
+
+  std::uint32_t new_counter(std::string path) {
+    plan_.counter_paths.push_back(std::move(path));
+    return static_cast<std::uint32_t>(plan_.counter_paths.size() - 1);
+  }
+
+  // ---- nodes ---------------------------------------------------------------------------
+  const PlanNode* node(std::uint32_t writer, std::uint32_t reader) {
+    auto key = std::make_pair(writer, reader);
+    auto found = memo_.find(key);
+    if (found != memo_.end()) return found->second;
+    plan_.nodes.emplace_back();
+    PlanNode& n = plan_.nodes.back();
+    memo_[key] = &n;
+    n.writer = writer;
+    n.reader = reader;
+    // Chains of distinct type pairs (a hostile writer schema nesting containers of containers)
+    // must not exhaust the stack: past the limit the plan is refused as a whole.
+    if (depth_ >= kMaxPlanDepth) {
+      too_deep_ = true;
+      n.action = Action::Skip;
+      return &n;
+    }
+    struct DepthGuard {
+      int& depth;
+      explicit DepthGuard(int& d) : depth(d) { ++depth; }
+      ~DepthGuard() { --depth; }
+    } guard(depth_);
+    if (reader == kNoType) {
+      fill_skip(n);
+    } else {
+      fill(n);
+      const TypeInfo& type = r_.types[reader];
+      n.validated = type.validate != nullptr && n.action != Action::Reject;
+      n.flat_reader = is_flat(reader, 0);
+    }
+    return &n;
+  }
+
+  bool is_flat(std::uint32_t t, int depth) const {
+    if (depth > 64) return false;
+    const TypeInfo& type = r_.types[t];
+    switch (type.kind) {
+      case Kind::Bool: case Kind::Int: case Kind::UInt: case Kind::Float: case Kind::Enum:
+      case Kind::Union: case Kind::Pointer:
+        return true;
+      case Kind::Array:
+        return is_flat(type.element, depth + 1);
+      case Kind::Struct:
+        for (std::uint32_t f = 0; f < type.field_count; ++f) {
+          if (!is_flat(type.fields[f].type, depth + 1)) return false;
+        }
+        return true;
+      default:
+        return false;
+    }
+  }
+
+  void fill_skip(PlanNode& n) {
+    const TypeInfo& type = w_.types[n.writer];
+    n.action = Action::Skip;
+    n.decision = Decision::Dropped;
+    n.lossy = true;
+    switch (type.kind) {
+      case Kind::Struct:
+        n.fields.resize(type.field_count);
+        for (std::uint32_t f = 0; f < type.field_count; ++f) {
+          n.fields[f].node = node(type.fields[f].type, kNoType);
+          n.fields[f].name = type.fields[f].name;
+          n.fields[f].counter = 0;
+        }
+        break;
+      case Kind::Array: case Kind::Container: case Kind::Optional: case Kind::UniquePtr:
+        n.element = node(type.element, kNoType);
+        n.element_skip = n.element;
+        break;
+      case Kind::Variant:
+        for (std::uint32_t a = 0; a < type.alternative_count; ++a) {
+          n.alternatives.push_back(node(type.alternatives[a], kNoType));
+          n.alternative_map.push_back(kNoType);
+        }
+        break;
+      default:
+        break;
+    }
+  }
+
+  void reject(PlanNode& n, std::string why) {
+    n.action = Action::Reject;
+    n.decision = Decision::Rejected;
+    n.lossy = true;
+    n.detail = std::move(why);
+    n.skip = node(n.writer, kNoType);
+  }
+
+  std::string pair_text(const TypeInfo& writer, const TypeInfo& reader) const {
+    return std::string(writer.name) + " -> " + reader.name;
+  }
+
+  void fill(PlanNode& n) {
+    const TypeInfo& wt = w_.types[n.writer];
+    const TypeInfo& rt = r_.types[n.reader];
+    if (is_scalar_kind(wt.kind) && is_scalar_kind(rt.kind)) return fill_scalar(n, wt, rt);
+    if (wt.kind != rt.kind) {
+      return reject(n, std::string("incompatible kinds: ") + kind_name(wt.kind) + " " + wt.name +
+                           " -> " + kind_name(rt.kind) + " " + rt.name);
+    }
+    switch (wt.kind) {
+      case Kind::Struct: return fill_struct(n, wt, rt);
+      case Kind::Union:
+        if (wt.size != rt.size) {
+          return reject(n, "union size changed: " + std::to_string(wt.size) + " -> " +
+                               std::to_string(rt.size) + " bytes");
+        }
+        n.action = Action::Union;
+        return;
+      case Kind::Array: {
+        n.action = Action::Array;
+        n.element = node(wt.element, rt.element);
+        n.element_skip = node(wt.element, kNoType);
+        n.reader_count = rt.count;
+        n.reader_stride = r_.types[rt.element].size;
+        if (wt.count > rt.count) {
+          n.decision = Decision::Converted;
+          n.lossy = true;
+          n.detail = "array shrinks " + std::to_string(wt.count) + " -> " +
+                     std::to_string(rt.count) + ": trailing elements dropped";
+        } else if (wt.count < rt.count) {
+          n.decision = Decision::Converted;
+          n.detail = "array grows " + std::to_string(wt.count) + " -> " +
+                     std::to_string(rt.count) + ": new elements keep this build's values";
+        }
+        return inherit_element(n);
+      }
+      case Kind::String: {
+        n.action = Action::String;
+        const std::uint32_t from = w_.types[wt.element].size, to = r_.types[rt.element].size;
+        if (from != to) {
+          n.decision = Decision::Converted;
+          n.detail = "characters " + std::to_string(from * 8) + " -> " + std::to_string(to * 8) +
+                     " bits";
+        }
+        return;
+      }
+      case Kind::Container: {
+        n.action = Action::Container;
+        n.element = node(wt.element, rt.element);
+        // Associative elements are staged before insertion: scalars in a buffer, anything
+        // else through its lifecycle.
+        if (is_associative(rt) && !r_.types[rt.element].lifecycle &&
+            !is_scalar_kind(r_.types[rt.element].kind)) {
+          return reject(n, std::string("no lifecycle for element type ") +
+                               r_.types[rt.element].name + " of " + rt.name);
+        }
+        if (!same_name(wt.name, rt.name)) {
+          n.decision = Decision::Converted;
+          n.detail = pair_text(wt, rt);
+        }
+        return inherit_element(n);
+      }
+      case Kind::Optional:
+        n.action = Action::Optional;
+        n.element = node(wt.element, rt.element);
+        return inherit_element(n);
+      case Kind::UniquePtr:
+        n.action = Action::UniquePtr;
+        n.element = node(wt.element, rt.element);
+        return inherit_element(n);
+      case Kind::Variant: {
+        n.action = Action::Variant;
+        for (std::uint32_t a = 0; a < wt.alternative_count; ++a) {
+          const TypeInfo& alternative = w_.types[wt.alternatives[a]];
+          std::uint32_t match = kNoType;
+          for (std::uint32_t b = 0; b < rt.alternative_count && match == kNoType; ++b) {
+            if (same_name(alternative.name, r_.types[rt.alternatives[b]].name)) match = b;
+          }
+          for (std::uint32_t b = 0; b < rt.alternative_count && match == kNoType; ++b) {
+            if (names_match(alternative, r_.types[rt.alternatives[b]])) match = b;
+          }
+          n.alternative_map.push_back(match);
+          n.alternatives.push_back(
+              node(wt.alternatives[a], match == kNoType ? kNoType : rt.alternatives[match]));
+          if (match == kNoType) {
+            n.decision = Decision::Converted;
+            if (!n.detail.empty()) n.detail += "; ";
+            n.detail += std::string("alternative ") + alternative.name +
+                        " not in this build: such values are rejected";
+          }
+        }
+        return;
+      }
+      case Kind::Pointer:
+      case Kind::SharedPtr: {
+        const TypeInfo& wp = w_.types[wt.element];
+        const TypeInfo& rp = r_.types[rt.element];
+        if (!names_match(wp, rp)) {
+          return reject(n, std::string("pointee type ") + wp.name + " -> " + rp.name);
+        }
+        n.action = wt.kind == Kind::Pointer ? Action::Pointer : Action::SharedPtr;
+        n.element = node(wt.element, rt.element);
+        return;
+      }
+      default:
+        return reject(n, "unsupported kind");
+    }
+  }
+
+  // A container-like node reports its element's conversion when it has none of its own.
+  void inherit_element(PlanNode& n) {
+    const PlanNode* e = n.element;
+    if (!e || e == &n) return;
+    if (e->action == Action::Reject && n.decision == Decision::Restored) {
+      n.decision = Decision::Converted;
+      n.detail = "elements rejected: " + e->detail;
+    } else if (e->action == Action::Scalar && e->decision == Decision::Converted &&
+               n.decision == Decision::Restored) {
+      n.decision = Decision::Converted;
+      n.detail = "elements " + e->detail;
+    }
+    if (e->action == Action::Scalar || e->action == Action::Reject) n.lossy = n.lossy || e->lossy;
+  }
+
+  void fill_scalar(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
+    n.action = Action::Scalar;
+    n.identical = wt.kind == rt.kind && wt.size == rt.size;
+    if (wt.kind == Kind::Enum) {
+      for (std::uint32_t e = 0; e < wt.enumerator_count; ++e) {
+        const EnumeratorInfo& writer = wt.enumerators[e];
+        EnumMapping mapping{writer.value, writer.name, false, 0};
+        if (rt.kind == Kind::Enum) {
+          for (std::uint32_t f = 0; f < rt.enumerator_count; ++f) {
+            if (same_name(writer.name, rt.enumerators[f].name)) {
+              mapping.mapped = true;
+              mapping.reader_value = rt.enumerators[f].value;
+              break;
+            }
+          }
+        }
+        if (!mapping.mapped || mapping.reader_value != writer.value) n.identical = false;
+        n.enum_map.push_back(mapping);
+      }
+      if (rt.kind == Kind::Enum && rt.enumerator_count != wt.enumerator_count) n.identical = false;
+      if (rt.kind == Kind::Enum &&
+          w_.types[wt.element].kind != r_.types[rt.element].kind) {
+        n.identical = false;
+      }
+    }
+    // Sorted by writer value: restore looks values up by binary search.
+    std::sort(n.enum_map.begin(), n.enum_map.end(),
+              [](const EnumMapping& a, const EnumMapping& b) { return a.writer_value < b.writer_value; });
+    if (n.identical) return;
+    n.decision = Decision::Converted;
+    n.detail = pair_text(wt, rt);
+    if (wt.kind == Kind::Enum && rt.kind == Kind::Enum) {
+      n.detail = "enum by name: " + n.detail;
+      for (const EnumMapping& mapping : n.enum_map) {
+        if (!mapping.mapped) {
+          n.detail += std::string("; ") + mapping.name + " not in this build";
+        }
+      }
+    }
+    if (wt.kind == Kind::Float && rt.kind == Kind::Float && rt.size < wt.size) {
+      n.lossy = true;  // precision is rounded away, not rejected
+      n.detail += " (precision rounded)";
+    }
+  }
+
+  void fill_struct(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
+    n.action = Action::Struct;
+    std::vector<bool> reader_used(rt.field_count, false);
+    n.fields.resize(wt.field_count);
+    for (std::uint32_t f = 0; f < wt.field_count; ++f) {
+      const FieldInfo& writer = wt.fields[f];
+      const std::uint32_t match = match_field(writer, rt, reader_used);
+      FieldPlan& field = n.fields[f];
+      field.name = writer.name;
+      field.counter = new_counter(std::string(wt.name) + "::" + writer.name);
+      if (match == kNoType) {
+        field.node = node(writer.type, kNoType);
+        continue;
+      }
+      reader_used[match] = true;
+      const FieldInfo& reader = rt.fields[match];
+      field.reader_field = match;
+      field.reader_offset = reader.offset;
+      field.bit_offset = reader.bit_offset;
+      field.bit_width = reader.bit_width;
+      field.has_range = (reader.flags & kFieldHasRange) != 0;
+      field.range_min = reader.range_min;
+      field.range_max = reader.range_max;
+      field.node = node(writer.type, reader.type);
+    }
+  }
+
+  std::uint32_t match_field(const FieldInfo& writer, const TypeInfo& rt,
+                            const std::vector<bool>& used) const {
+    const bool base = (writer.flags & kFieldBase) != 0;
+    for (std::uint32_t f = 0; f < rt.field_count; ++f) {
+      const FieldInfo& reader = rt.fields[f];
+      if (used[f] || ((reader.flags & kFieldBase) != 0) != base) continue;
+      if (same_name(reader.name, writer.name)) return f;
+    }
+    for (std::uint32_t f = 0; f < rt.field_count; ++f) {
+      const FieldInfo& reader = rt.fields[f];
+      if (used[f] || ((reader.flags & kFieldBase) != 0) != base) continue;
+      if (in_aliases(writer.name, reader.renamed_from)) return f;
+      if (base && in_aliases(writer.name, r_.types[reader.type].renamed_from)) return f;
+    }
+    return kNoType;
+  }
+
+  // ---- writer minimum sizes (bounds container counts in hostile payloads) ---------------
+  void compute_min_wire() {
+    plan_.min_wire.assign(w_.type_count, ~std::uint64_t{0});
+    for (std::uint32_t t = 0; t < w_.type_count; ++t) min_wire(t);
+  }
+  std::uint64_t min_wire(std::uint32_t t) {
+    std::uint64_t& cached = plan_.min_wire[t];
+    if (cached != ~std::uint64_t{0}) return cached;
+    const TypeInfo& type = w_.types[t];
+    std::uint64_t size = 0;
+    auto add = [&size](std::uint64_t more) {
+      size = size + more < size ? (std::uint64_t{1} << 62) : size + more;
+    };
+    switch (type.kind) {
+      case Kind::Bool: size = 1; break;
+      case Kind::Int: case Kind::UInt: case Kind::Float: case Kind::Enum: case Kind::Union:
+        size = type.size; break;
+      case Kind::Struct:
+        for (std::uint32_t f = 0; f < type.field_count; ++f) {
+          const FieldInfo& field = type.fields[f];
+          add(min_wire(field.type));
+        }
+        break;
+      case Kind::Array: {
+        const std::uint64_t element = min_wire(type.element);
+        size = element && type.count > (std::uint64_t{1} << 62) / element
+                   ? (std::uint64_t{1} << 62)
+                   : element * type.count;
+        break;
+      }
+      case Kind::String: case Kind::Container: case Kind::Variant: case Kind::Pointer:
+      case Kind::SharedPtr:
+        size = 4; break;
+      case Kind::Optional: case Kind::UniquePtr: size = 1; break;
+    }
+    cached = size;
+    return size;
+  }
+
+  // ---- the schema-level report ---------------------------------------------------------
+  void build_report() {
+    for (std::uint32_t wr = 0; wr < w_.root_count; ++wr) {
+      const RootPlan& root = plan_.roots[wr];
+      const RootInfo& writer = w_.roots[wr];
+      if (root.reader_root == kNoType) {
+        add(writer.name, Decision::Dropped, "root not in this build", true);
+        continue;
+      }
+      const RootInfo& reader = r_.roots[root.reader_root];
+      std::string detail = root.node->detail;
+      Decision decision = root.node->decision;
+      if (!same_name(reader.name, writer.name)) {
+        decision = decision == Decision::Rejected ? decision : Decision::Converted;
+        detail = std::string("renamed from ") + writer.name + (detail.empty() ? "" : "; ") + detail;
+      }
+      add(reader.name, decision, detail, root.node->lossy && root.node->action != Action::Struct);
+      expand(root.node, reader.name);
+    }
+    for (std::uint32_t rr = 0; rr < r_.root_count; ++rr) {
+      bool matched = false;
+      for (const RootPlan& root : plan_.roots) matched = matched || root.reader_root == rr;
+      if (!matched) add(r_.roots[rr].name, Decision::Kept, "root added in this build", false);
+    }
+    // Pointees once each, named by type: their fields are reached through any pointer.
+    for (std::size_t i = 0; i < pointees_.size(); ++i) {
+      const PlanNode* pointee = pointees_[i];
+      expand(pointee, std::string("(") + w_.types[pointee->writer].name + ")");
+    }
+    for (const ReportEntry& entry : plan_.entries) plan_.any_lossy = plan_.any_lossy || entry.lossy;
+  }
+
+  void add(std::string path, Decision decision, std::string detail, bool lossy) {
+    plan_.entries.push_back(ReportEntry{std::move(path), decision, std::move(detail), lossy});
+  }
+
+  void note_pointee(const PlanNode* n) {
+    if (!n || n->action == Action::Skip) return;
+    for (const PlanNode* seen : pointees_) {
+      if (seen == n) return;
+    }
+    pointees_.push_back(n);
+  }
+
+  void expand(const PlanNode* n, const std::string& path) {
+    for (const PlanNode* open : stack_) {
+      if (open == n) return;  // recursion: listed once, where first met
+    }
+    stack_.push_back(n);
+    switch (n->action) {
+      case Action::Struct: {
+        const TypeInfo& wt = w_.types[n->writer];
+        const TypeInfo& rt = r_.types[n->reader];
+        for (std::size_t f = 0; f < n->fields.size(); ++f) {
+          const FieldPlan& field = n->fields[f];
+          const FieldInfo& writer = wt.fields[f];
+          if (field.reader_field == kNoType) {
+            add(path + "." + writer.name, Decision::Dropped, "field removed in this build", true);
+            continue;
+          }
+          const FieldInfo& reader = rt.fields[field.reader_field];
+          const std::string child = path + "." + reader.name;
+          Decision decision = field.node->decision;
+          std::string detail = field.node->detail;
+          if (!same_name(reader.name, writer.name)) {
+            if (decision != Decision::Rejected) decision = Decision::Converted;
+            detail = std::string("renamed from ") + writer.name + (detail.empty() ? "" : "; ") + detail;
+          }
+          const bool own_lossy = field.node->lossy && field.node->action != Action::Struct;
+          add(child, decision, detail, own_lossy);
+          expand(field.node, child);
+        }
+        for (std::uint32_t f = 0; f < rt.field_count; ++f) {
+          bool matched = false;
+          for (const FieldPlan& field : n->fields) matched = matched || field.reader_field == f;
+          if (!matched) {
+            add(path + "." + rt.fields[f].name, Decision::Kept, "field added in this build", false);
+          }
+        }
+        break;
+      }
+      case Action::Array:
+      case Action::Container:
+        expand(n->element, path + "[]");
+        break;
+      case Action::Optional:
+      case Action::UniquePtr:
+        expand(n->element, path);
+        break;
+      case Action::Variant:
+        for (std::size_t a = 0; a < n->alternatives.size(); ++a) {
+          const PlanNode* alternative = n->alternatives[a];
+          if (alternative->action == Action::Skip) continue;
+          expand(alternative, path + "<" + w_.types[alternative->writer].name + ">");
+        }
+        break;
+      case Action::Pointer:
+      case Action::SharedPtr:
+        note_pointee(n->element);
+        break;
+      default:
+        break;
+    }
+    stack_.pop_back();
+  }
+
+  Plan& plan_;
+  const Schema& w_;
+  const Schema& r_;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, PlanNode*> memo_;
+  std::vector<const PlanNode*> stack_;
+  std::vector<const PlanNode*> pointees_;
+  int depth_ = 0;
+  bool too_deep_ = false;
+};
+
+struct CachedPlan {
+  std::uint64_t writer_hash;
+  const Schema* reader;
+  const TypeInfo* reader_types;
+  const RootInfo* reader_roots;
+  std::shared_ptr<const Plan> plan;
+};
+
+}  // namespace
+
+bool names_match(const TypeInfo& writer, const TypeInfo& reader) {
+  return same_name(writer.name, reader.name) || in_aliases(writer.name, reader.renamed_from);
+}
+
+std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_hash,
+                                     const Schema& reader, Status& status) {
+  static std::mutex mutex;
+  static std::deque<CachedPlan>* cache = new std::deque<CachedPlan>();  // never freed
+  constexpr std::size_t kMaxPlans = 8;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    for (const CachedPlan& cached : *cache) {
+      // The counts guard against a caller passing one hash for different schemas.
+      if (cached.writer_hash == writer_hash && cached.reader == &reader &&
+          cached.reader_types == reader.types && cached.reader_roots == reader.roots &&
+          cached.plan->writer->type_count == writer.type_count &&
+          cached.plan->writer->root_count == writer.root_count) {
+        return cached.plan;
+      }
+    }
+  }
+  auto plan = std::make_shared<Plan>();
+  // The plan keeps its own copy of the writer schema (a round trip through the wire form) so
+  // that cached plans never point into a caller's buffers.
+  std::vector<std::uint8_t> bytes;
+  serialise_schema(writer, bytes);
+  status = parse_schema(bytes.data(), bytes.size(), plan->writer_copy);
+  if (!status.ok()) return nullptr;
+  plan->writer = &plan->writer_copy.schema();
+  plan->reader = &reader;
+  Planner(*plan).run();
+  std::lock_guard<std::mutex> lock(mutex);
+  cache->push_front(CachedPlan{writer_hash, &reader, reader.types, reader.roots, plan});
+  if (cache->size() > kMaxPlans) cache->pop_back();
+  return plan;
+}
+
+}  // namespace symcr::detail

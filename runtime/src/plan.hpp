@@ -1,0 +1,109 @@
+// Resolution (PRODUCT.md §6): how each writer type of a checkpoint maps onto the running
+// build's (reader) types. A plan is built once per (writer schema hash, reader schema) and
+// cached; restore then only follows it.
+#ifndef SYMCR_SRC_PLAN_HPP
+#define SYMCR_SRC_PLAN_HPP
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine.hpp"
+#include "symcr/schema.hpp"
+#include "symcr/symcr.hpp"
+
+namespace symcr::detail {
+
+enum class Action : std::uint8_t {
+  Skip,       // no reader counterpart: decode and check the writer value, write nothing
+  Reject,     // incompatible: decode with `skip`, keep the reader's value
+  Scalar,     // Bool/Int/UInt/Float/Enum to Bool/Int/UInt/Float/Enum, converted per value
+  Struct,
+  Union,      // raw bytes, sizes equal
+  Array,
+  String,
+  Container,
+  Optional,
+  Variant,
+  UniquePtr,
+  Pointer,
+  SharedPtr,
+};
+
+struct PlanNode;
+
+struct FieldPlan {
+  const PlanNode* node = nullptr;        // (writer field type, reader field type or kNoType)
+  std::uint32_t reader_field = kNoType;  // kNoType: the field was removed
+  std::uint32_t reader_offset = 0;
+  std::uint16_t bit_offset = 0;          // reader bit-field
+  std::uint16_t bit_width = 0;
+  bool has_range = false;                // reader field's SYMCR_RANGE
+  double range_min = 0, range_max = 0;
+  std::uint32_t counter = 0;             // per-field index for capping value-level entries
+  const char* name = "";                 // writer field name (concrete paths)
+};
+
+struct EnumMapping {
+  std::int64_t writer_value;
+  const char* name;
+  bool mapped;
+  std::int64_t reader_value;
+};
+
+struct PlanNode {
+  std::uint32_t writer = kNoType;
+  std::uint32_t reader = kNoType;
+  Action action = Action::Skip;
+  Decision decision = Decision::Restored;
+  bool lossy = false;
+  std::string detail;
+
+  const PlanNode* skip = nullptr;     // Reject: how to consume the writer value
+  bool identical = false;             // Scalar: same representation, copy the bytes
+  std::vector<EnumMapping> enum_map;  // Scalar from an enum: writer value -> reader value
+  std::vector<FieldPlan> fields;      // Struct: one per writer field, in writer order
+  const PlanNode* element = nullptr;  // Array, Container, Optional, UniquePtr, pointers
+  const PlanNode* element_skip = nullptr;  // Array: elements beyond the reader's length
+  std::uint64_t reader_count = 0;     // Array
+  std::uint32_t reader_stride = 0;    // Array: reader element size
+  std::vector<const PlanNode*> alternatives;     // Variant: per writer alternative
+  std::vector<std::uint32_t> alternative_map;    // Variant: reader index or kNoType
+
+  bool validated = false;    // reader type has a symcr_validate
+  bool flat_reader = false;  // reader type is plain bytes (staged by copy)
+};
+
+struct RootPlan {
+  std::uint32_t reader_root = kNoType;  // kNoType: root removed
+  const PlanNode* node = nullptr;
+  std::uint32_t counter = 0;
+};
+
+struct Plan {
+  ParsedSchema writer_copy;  // the plan's own copy: its names outlive the caller's schema
+  const Schema* writer = nullptr;
+  const Schema* reader = nullptr;
+  std::deque<PlanNode> nodes;                 // stable addresses
+  std::vector<RootPlan> roots;                // per writer root
+  std::vector<const PlanNode*> heap_nodes;    // per writer type: how a heap object maps
+  std::vector<std::uint32_t> shared_types;    // per reader type: a SharedPtr<it> type or kNoType
+  std::vector<std::uint64_t> min_wire;        // per writer type: fewest payload bytes
+  std::vector<ReportEntry> entries;           // schema-level report
+  std::vector<std::string> counter_paths;     // schema-level path per counter
+  bool any_lossy = false;
+  Status status;                              // Incompatible when nothing can be restored
+};
+
+// The cached plan for restoring checkpoints written with `writer` (whose serialised form
+// hashes to `writer_hash`) into `reader`.
+std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_hash,
+                                     const Schema& reader, Status& status);
+
+bool names_match(const TypeInfo& writer, const TypeInfo& reader);
+
+}  // namespace symcr::detail
+
+#endif  // SYMCR_SRC_PLAN_HPP

@@ -1,0 +1,188 @@
+// Record encoding and validation (docs/format.md §1).
+#include "record.hpp"
+
+#include <time.h>
+
+#include <cstring>
+
+#include "crc32c.hpp"
+#include "engine.hpp"
+#include "little_endian.hpp"
+
+namespace symcr::detail {
+namespace {
+
+std::uint64_t realtime_ns() {
+  timespec now{};
+  clock_gettime(CLOCK_REALTIME, &now);
+  return static_cast<std::uint64_t>(now.tv_sec) * 1000000000u +
+         static_cast<std::uint64_t>(now.tv_nsec);
+}
+
+void store_header(const RecordHeader& h, std::uint8_t* p) {
+  std::memcpy(p, kRecordMagic, sizeof kRecordMagic);
+  le::store16(p + 8, h.format_version);
+  le::store16(p + 10, h.header_size);
+  le::store32(p + 12, h.flags);
+  le::store64(p + 16, h.sequence);
+  le::store64(p + 24, h.timestamp_ns);
+  le::store64(p + 32, h.schema_hash);
+  le::store32(p + 40, h.schema_size);
+  le::store32(p + 44, h.payload_size);
+  le::store32(p + 48, h.checksum);
+  le::store32(p + 52, 0);  // reserved
+}
+
+// CRC of the record with the checksum field read as zero, without modifying the bytes.
+std::uint32_t record_checksum(const std::uint8_t* record, std::size_t size) {
+  static constexpr std::uint8_t kZero[4] = {};
+  std::uint32_t crc = crc32c(record, kRecordChecksumOffset);
+  crc = crc32c_extend(crc, kZero, sizeof kZero);
+  return crc32c_extend(crc, record + kRecordChecksumOffset + 4,
+                       size - kRecordChecksumOffset - 4);
+}
+
+}  // namespace
+
+Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t sequence,
+                     std::vector<std::uint8_t>& out) {
+  const SchemaBlob& blob = schema_blob(schema);
+  out.clear();
+  out.resize(kRecordHeaderSize);
+  std::size_t schema_size = 0;
+  if (inline_schema) {
+    schema_size = blob.bytes.size();
+    if (schema_size > UINT32_MAX) {
+      return Status(Error::TooLarge, "schema of %zu bytes exceeds the format's 4 GiB limit",
+                    schema_size);
+    }
+    out.insert(out.end(), blob.bytes.begin(), blob.bytes.end());
+  }
+  Status status = append_payload(schema, out);
+  if (!status.ok()) return status;
+  const std::size_t payload_size = out.size() - kRecordHeaderSize - schema_size;
+  if (payload_size > UINT32_MAX) {
+    return Status(Error::TooLarge, "payload of %zu bytes exceeds the format's 4 GiB limit",
+                  payload_size);
+  }
+  RecordHeader header;
+  header.format_version = kRecordFormatVersion;
+  header.header_size = kRecordHeaderSize;
+  header.flags = inline_schema ? kRecordSchemaInline : 0;
+  header.sequence = sequence;
+  header.timestamp_ns = realtime_ns();
+  header.schema_hash = blob.hash;
+  header.schema_size = static_cast<std::uint32_t>(schema_size);
+  header.payload_size = static_cast<std::uint32_t>(payload_size);
+  store_header(header, out.data());
+  le::store32(out.data() + kRecordChecksumOffset, record_checksum(out.data(), out.size()));
+  return Status();
+}
+
+Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out) {
+  out = RecordView();
+  if (size == 0) return Status(Error::Truncated, "truncated: empty");
+  const std::size_t magic_bytes = size < sizeof kRecordMagic ? size : sizeof kRecordMagic;
+  if (std::memcmp(data, kRecordMagic, magic_bytes) != 0) {
+    return Status(Error::NotACheckpoint, "not a symcr checkpoint (bad magic)");
+  }
+  if (size < kRecordHeaderSize) {
+    return Status(Error::Truncated, "truncated: %zu bytes, shorter than the %u-byte header",
+                  size, unsigned{kRecordHeaderSize});
+  }
+  RecordHeader& h = out.header;
+  h.format_version = le::load16(data + 8);
+  h.header_size = le::load16(data + 10);
+  h.flags = le::load32(data + 12);
+  h.sequence = le::load64(data + 16);
+  h.timestamp_ns = le::load64(data + 24);
+  h.schema_hash = le::load64(data + 32);
+  h.schema_size = le::load32(data + 40);
+  h.payload_size = le::load32(data + 44);
+  h.checksum = le::load32(data + 48);
+
+  // The version comes before everything else: a newer version may lay out the rest anew.
+  if (h.format_version > kRecordFormatVersion) {
+    return Status(Error::FutureVersion,
+                  "written by checkpoint format version %u; this build reads up to version %u",
+                  unsigned{h.format_version}, unsigned{kRecordFormatVersion});
+  }
+  if (h.format_version == 0) return Status(Error::Corrupt, "format version 0 is invalid");
+  if (h.header_size < kRecordHeaderSize) {
+    return Status(Error::Corrupt, "header size %u is below the minimum %u",
+                  unsigned{h.header_size}, unsigned{kRecordHeaderSize});
+  }
+  // 64-bit sum of 16- and 32-bit fields: cannot overflow.
+  const std::uint64_t record_size = std::uint64_t{h.header_size} + h.schema_size + h.payload_size;
+  if (record_size > size) {
+    return Status(Error::Truncated, "truncated: header says %llu bytes, %zu available",
+                  static_cast<unsigned long long>(record_size), size);
+  }
+  const std::uint32_t actual = record_checksum(data, static_cast<std::size_t>(record_size));
+  if (actual != h.checksum) {
+    return Status(Error::Checksum, "checksum mismatch: stored %08x, computed %08x", h.checksum,
+                  actual);
+  }
+  if ((h.flags & ~kRecordKnownFlags) != 0) {
+    return Status(Error::Corrupt, "unknown header flags %08x", h.flags);
+  }
+  const bool inline_schema = (h.flags & kRecordSchemaInline) != 0;
+  if (inline_schema != (h.schema_size != 0)) {
+    return Status(Error::Corrupt, "schema flag %s but %u bytes of inline schema",
+                  inline_schema ? "set" : "clear", h.schema_size);
+  }
+  out.schema = inline_schema ? data + h.header_size : nullptr;
+  out.payload = data + h.header_size + h.schema_size;
+  out.payload_size = h.payload_size;
+  out.record_size = static_cast<std::size_t>(record_size);
+  if (inline_schema && fnv1a64(out.schema, h.schema_size) != h.schema_hash) {
+    return Status(Error::Corrupt, "inline schema does not match its hash %016llx",
+                  static_cast<unsigned long long>(h.schema_hash));
+  }
+  return Status();
+}
+
+Report restore_record(const RecordView& record, const Schema& writer, std::uint64_t writer_hash,
+                      const Schema& reader, const RestoreOptions& options) {
+  Report report = restore_payload(writer, writer_hash, record.payload, record.payload_size,
+                                  reader, options);
+  report.set_sequence(record.header.sequence);
+  return report;
+}
+
+Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
+                                 const Schema& reader, const RestoreOptions& options) {
+  Report report;
+  RecordView record;
+  Status status = parse_record(data, size, record);
+  if (status.ok() && record.record_size != size) {
+    status = Status(Error::Corrupt, "%zu unexpected bytes after the %zu-byte record",
+                    size - record.record_size, record.record_size);
+  }
+  if (status.ok() && record.schema == nullptr) {
+    status = Status(Error::SchemaUnknown,
+                    "the record references schema %016llx by hash (a store slot) and carries "
+                    "no schema of its own",
+                    static_cast<unsigned long long>(record.header.schema_hash));
+  }
+  if (!status.ok()) {
+    report.set_status(status);
+    return report;
+  }
+  // Written by this very build (the usual case): the inline schema is byte for byte the
+  // reader's own, so the reader serves as the writer schema and nothing needs parsing.
+  const SchemaBlob& own = schema_blob(reader);
+  if (record.header.schema_hash == own.hash && record.header.schema_size == own.bytes.size() &&
+      std::memcmp(record.schema, own.bytes.data(), own.bytes.size()) == 0) {
+    return restore_record(record, reader, own.hash, reader, options);
+  }
+  ParsedSchema writer;
+  status = parse_schema(record.schema, record.header.schema_size, writer);
+  if (!status.ok()) {
+    report.set_status(status);
+    return report;
+  }
+  return restore_record(record, writer.schema(), record.header.schema_hash, reader, options);
+}
+
+}  // namespace symcr::detail

@@ -1,0 +1,66 @@
+// Records (docs/format.md §1): a 56-byte header, an optional inline schema and a payload,
+// covered by one CRC-32C. Shared by single-file checkpoints, in-memory checkpoints and store
+// slots. Parsing never trusts a length: every size is checked against the bytes available.
+#ifndef SYMCR_SRC_RECORD_HPP
+#define SYMCR_SRC_RECORD_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "symcr/schema.hpp"
+#include "symcr/symcr.hpp"
+
+namespace symcr::detail {
+
+inline constexpr std::uint8_t kRecordMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'C', 'K', 'P'};
+inline constexpr std::uint16_t kRecordFormatVersion = 1;
+inline constexpr std::uint16_t kRecordHeaderSize = 56;
+inline constexpr std::uint32_t kRecordSchemaInline = 1u << 0;
+inline constexpr std::uint32_t kRecordKnownFlags = kRecordSchemaInline;
+inline constexpr std::size_t kRecordChecksumOffset = 48;
+
+struct RecordHeader {
+  std::uint16_t format_version = 0;
+  std::uint16_t header_size = 0;
+  std::uint32_t flags = 0;
+  std::uint64_t sequence = 0;
+  std::uint64_t timestamp_ns = 0;
+  std::uint64_t schema_hash = 0;
+  std::uint32_t schema_size = 0;
+  std::uint32_t payload_size = 0;
+  std::uint32_t checksum = 0;
+};
+
+// A record validated in place: views into the caller's bytes, valid while they are.
+struct RecordView {
+  RecordHeader header;
+  const std::uint8_t* schema = nullptr;  // inline schema (header.schema_size bytes) or null
+  const std::uint8_t* payload = nullptr;
+  std::size_t payload_size = 0;
+  std::size_t record_size = 0;  // header_size + schema_size + payload_size
+};
+
+// Replaces `out` with a complete record of every root of `schema`: header, the serialised
+// schema when `inline_schema`, the payload, and the checksum. Reuses `out`'s capacity.
+Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t sequence,
+                     std::vector<std::uint8_t>& out);
+
+// Checks magic, version, header size, flags, sizes against `size` and the checksum, and for an
+// inline schema that its bytes hash to `schema_hash`. Bytes after the record are not looked at
+// (a store slot has room to spare). Does not parse the schema.
+Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out);
+
+// Restores a record validated by parse_record whose writer schema is `writer`. The report
+// carries the record's sequence.
+Report restore_record(const RecordView& record, const Schema& writer, std::uint64_t writer_hash,
+                      const Schema& reader, const RestoreOptions& options);
+
+// Restores a complete, self-contained record (a single-file or in-memory checkpoint): it must
+// carry its schema inline and have no bytes after it.
+Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
+                                 const Schema& reader, const RestoreOptions& options);
+
+}  // namespace symcr::detail
+
+#endif  // SYMCR_SRC_RECORD_HPP

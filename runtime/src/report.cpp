@@ -1,0 +1,154 @@
+// Report: the restore's account of every root and field, as a text table or JSON.
+#include <algorithm>
+#include <cinttypes>
+#include <cstdio>
+#include <string>
+#include <utility>
+
+#include "symcr/symcr.hpp"
+
+namespace symcr {
+namespace {
+
+// Appends `text` as a JSON string. Names come from checkpoint files, which may hold any bytes:
+// control characters are escaped and invalid UTF-8 becomes U+FFFD, so the output always parses.
+void append_json_string(std::string& out, const std::string& text) {
+  out += '"';
+  const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
+  const std::size_t size = text.size();
+  std::size_t i = 0;
+  while (i < size) {
+    const unsigned char c = bytes[i];
+    if (c < 0x80) {
+      switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\r': out += "\\r"; break;
+        case '\t': out += "\\t"; break;
+        case '\b': out += "\\b"; break;
+        case '\f': out += "\\f"; break;
+        default:
+          if (c < 0x20 || c == 0x7f) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\u%04x", c);
+            out += escaped;
+          } else {
+            out += static_cast<char>(c);
+          }
+      }
+      ++i;
+      continue;
+    }
+    // Multi-byte sequence: validate length, continuation bytes, overlongs and surrogates.
+    std::size_t length = 0;
+    std::uint32_t code = 0;
+    if ((c & 0xE0) == 0xC0) { length = 2; code = c & 0x1F; }
+    else if ((c & 0xF0) == 0xE0) { length = 3; code = c & 0x0F; }
+    else if ((c & 0xF8) == 0xF0) { length = 4; code = c & 0x07; }
+    bool valid = length != 0 && i + length <= size;
+    for (std::size_t k = 1; valid && k < length; ++k) {
+      if ((bytes[i + k] & 0xC0) != 0x80) valid = false;
+      else code = (code << 6) | (bytes[i + k] & 0x3F);
+    }
+    if (valid) {
+      static const std::uint32_t kMinimum[5] = {0, 0, 0x80, 0x800, 0x10000};
+      valid = code >= kMinimum[length] && code <= 0x10FFFF && (code < 0xD800 || code > 0xDFFF);
+    }
+    if (valid) {
+      out.append(text, i, length);
+      i += length;
+    } else {
+      out += "\\ufffd";
+      ++i;
+    }
+  }
+  out += '"';
+}
+
+}  // namespace
+
+void Report::add(std::string path, Decision decision, std::string detail, bool lossy) {
+  entries_.push_back(ReportEntry{std::move(path), decision, std::move(detail), lossy});
+}
+
+std::size_t Report::count(Decision decision) const {
+  return static_cast<std::size_t>(
+      std::count_if(entries_.begin(), entries_.end(),
+                    [decision](const ReportEntry& entry) { return entry.decision == decision; }));
+}
+
+std::string Report::to_text() const {
+  // Column widths from the content, with the path column capped so one deep path does not
+  // push every line off the screen (longer paths simply overflow their column).
+  constexpr std::size_t kMaxPathWidth = 60;
+  std::size_t path_width = 4;
+  for (const ReportEntry& entry : entries_) {
+    path_width = std::max(path_width, std::min(entry.path.size(), kMaxPathWidth));
+  }
+  constexpr std::size_t kDecisionWidth = 9;  // "converted"
+  std::string out;
+  auto pad = [&out](std::size_t used, std::size_t width) {
+    if (used < width) out.append(width - used, ' ');
+  };
+  out += "path";
+  pad(4, path_width);
+  out += "  decision ";
+  out += " detail\n";
+  for (const ReportEntry& entry : entries_) {
+    out += entry.path;
+    pad(entry.path.size(), path_width);
+    out += "  ";
+    const char* name = decision_name(entry.decision);
+    out += name;
+    pad(std::string(name).size(), kDecisionWidth);
+    out += entry.lossy ? " * " : "   ";
+    out += entry.detail;
+    out += '\n';
+  }
+  char summary[64];
+  std::snprintf(summary, sizeof summary, "sequence %" PRIu64 ", ", sequence_);
+  out += summary;
+  if (ok()) {
+    out += "status: ok\n";
+  } else {
+    out += "status: ";
+    out += error_name(status_.error());
+    out += ": ";
+    out += status_.message();
+    out += '\n';
+  }
+  return out;
+}
+
+std::string Report::to_json() const {
+  std::string out = "{\"ok\":";
+  out += ok() ? "true" : "false";
+  out += ",\"error\":";
+  append_json_string(out, error_name(status_.error()));
+  out += ",\"message\":";
+  append_json_string(out, status_.message());
+  char number[32];
+  std::snprintf(number, sizeof number, "%" PRIu64, sequence_);
+  out += ",\"sequence\":";
+  out += number;
+  out += ",\"entries\":[";
+  bool first = true;
+  for (const ReportEntry& entry : entries_) {
+    if (!first) out += ',';
+    first = false;
+    out += "{\"path\":";
+    append_json_string(out, entry.path);
+    out += ",\"decision\":";
+    append_json_string(out, decision_name(entry.decision));
+    out += ",\"detail\":";
+    append_json_string(out, entry.detail);
+    out += ",\"lossy\":";
+    out += entry.lossy ? "true" : "false";
+    out += '}';
+  }
+  out += "]}";
+  return out;
+}
+
+}  // namespace symcr

@@ -1,0 +1,63 @@
+// The process-wide cache of serialised schemas and their facts, keyed by the Schema object.
+// Programs have one schema (tests and tools a few), so a short list searched linearly, with a
+// per-thread memo of the last hit, costs nothing on the checkpoint path after the first call.
+#include <mutex>
+#include <vector>
+
+#include "engine.hpp"
+#include "schema_facts.hpp"
+
+namespace symcr::detail {
+namespace {
+
+struct CacheKey {
+  const Schema* schema;
+  const TypeInfo* types;
+  std::uint32_t type_count;
+  const RootInfo* roots;
+  std::uint32_t root_count;
+  bool operator==(const CacheKey& other) const {
+    return schema == other.schema && types == other.types && type_count == other.type_count &&
+           roots == other.roots && root_count == other.root_count;
+  }
+};
+
+struct CachedSchema {
+  CacheKey key;
+  const SchemaCacheEntry* entry;
+};
+
+CacheKey key_of(const Schema& schema) {
+  // The tables are part of the key so a Schema object reused for other tables (e.g. a local in
+  // a test) is not served a stale blob.
+  return CacheKey{&schema, schema.types, schema.type_count, schema.roots, schema.root_count};
+}
+
+}  // namespace
+
+const SchemaCacheEntry& schema_cache_entry(const Schema& schema) {
+  const CacheKey key = key_of(schema);
+  thread_local CachedSchema last{{nullptr, nullptr, 0, nullptr, 0}, nullptr};
+  if (last.entry && last.key == key) return *last.entry;
+
+  static std::mutex mutex;
+  static std::vector<CachedSchema>* cache = new std::vector<CachedSchema>();  // never freed
+  std::lock_guard<std::mutex> lock(mutex);
+  for (const CachedSchema& cached : *cache) {
+    if (cached.key == key) {
+      last = cached;
+      return *cached.entry;
+    }
+  }
+  auto* entry = new SchemaCacheEntry();  // lives as long as the process, like the schema
+  serialise_schema(schema, entry->blob.bytes);
+  entry->blob.hash = fnv1a64(entry->blob.bytes.data(), entry->blob.bytes.size());
+  entry->facts = compute_schema_facts(schema);
+  cache->push_back(CachedSchema{key, entry});
+  last = cache->back();
+  return *entry;
+}
+
+const SchemaBlob& schema_blob(const Schema& schema) { return schema_cache_entry(schema).blob; }
+
+}  // namespace symcr::detail

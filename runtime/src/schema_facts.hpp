@@ -1,0 +1,52 @@
+// Per-Schema facts computed once and cached with the serialised schema: what the save and
+// restore paths need to know about a schema as a whole.
+#ifndef SYMCR_SRC_SCHEMA_FACTS_HPP
+#define SYMCR_SRC_SCHEMA_FACTS_HPP
+
+#include <cstdint>
+#include <vector>
+
+#include "engine.hpp"
+#include "symcr/schema.hpp"
+
+namespace symcr::detail {
+
+// A contiguous span of live bytes that is also contiguous on the wire.
+struct FlatRun {
+  std::uint32_t offset;
+  std::uint32_t length;
+};
+inline constexpr std::uint32_t kNotFlat = 0xFFFFFFFFu;
+
+struct SchemaFacts {
+  bool has_raw_pointers = false;  // some type is Kind::Pointer: interior targets must resolve
+  bool has_references = false;    // Pointer or SharedPtr: the reference memo is needed
+  // Plain types (integers, enums, float/double, unions, structs/arrays of only those, no
+  // bit-fields) save as a few memcpy runs: per type, its runs in `flat_runs` or kNotFlat.
+  std::vector<std::uint32_t> flat_first;
+  std::vector<std::uint32_t> flat_count;
+  std::vector<std::uint32_t> flat_wire_size;
+  std::vector<FlatRun> flat_runs;
+  std::vector<bool> has_pointer_fields;  // per type: a Struct with raw Pointer fields
+};
+
+// The blob and facts of `schema`, computed on first use. Both live as long as the process.
+struct SchemaCacheEntry {
+  SchemaBlob blob;
+  SchemaFacts facts;
+};
+const SchemaCacheEntry& schema_cache_entry(const Schema& schema);
+
+SchemaFacts compute_schema_facts(const Schema& schema);
+void serialise_schema(const Schema& schema, std::vector<std::uint8_t>& out);
+
+// Scalar helpers shared by the engine.
+inline bool is_scalar_kind(Kind kind) {
+  return kind == Kind::Bool || kind == Kind::Int || kind == Kind::UInt || kind == Kind::Float ||
+         kind == Kind::Enum;
+}
+const char* kind_name(Kind kind);
+
+}  // namespace symcr::detail
+
+#endif  // SYMCR_SRC_SCHEMA_FACTS_HPP

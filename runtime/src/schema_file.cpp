@@ -1,0 +1,81 @@
+// Schema files (schema_file.hpp): the record header is laid out here rather than through
+// encode_record, which always appends a payload of the live roots.
+#include "schema_file.hpp"
+
+#include <time.h>
+
+#include <vector>
+
+#include "crc32c.hpp"
+#include "file_io.hpp"
+#include "little_endian.hpp"
+#include "record.hpp"
+
+namespace symcr::detail {
+namespace {
+
+// A schema file is never larger than a record can be.
+constexpr std::uint64_t kMaxSchemaFileSize = 0xFFFFull + 0xFFFFFFFFull;
+
+std::uint64_t now_ns() {
+  timespec now{};
+  clock_gettime(CLOCK_REALTIME, &now);
+  return static_cast<std::uint64_t>(now.tv_sec) * 1000000000u +
+         static_cast<std::uint64_t>(now.tv_nsec);
+}
+
+}  // namespace
+
+Status write_schema_file(const Schema& schema, const char* path) {
+  const SchemaBlob& blob = schema_blob(schema);
+  if (blob.bytes.size() > UINT32_MAX) {
+    return Status(Error::TooLarge, "schema of %zu bytes exceeds the format's 4 GiB limit",
+                  blob.bytes.size());
+  }
+  std::vector<std::uint8_t> record(kRecordHeaderSize + blob.bytes.size());
+  std::uint8_t* h = record.data();
+  for (std::size_t i = 0; i < sizeof kRecordMagic; ++i) h[i] = kRecordMagic[i];
+  le::store16(h + 8, kRecordFormatVersion);
+  le::store16(h + 10, kRecordHeaderSize);
+  le::store32(h + 12, kRecordSchemaInline);
+  le::store64(h + 16, 0);  // sequence
+  le::store64(h + 24, now_ns());
+  le::store64(h + 32, blob.hash);
+  le::store32(h + 40, static_cast<std::uint32_t>(blob.bytes.size()));
+  le::store32(h + 44, 0);  // payload_size: a schema file carries no values
+  le::store32(h + 48, 0);  // checksum, computed over the record with this field zero
+  le::store32(h + 52, 0);
+  for (std::size_t i = 0; i < blob.bytes.size(); ++i) h[kRecordHeaderSize + i] = blob.bytes[i];
+  le::store32(h + kRecordChecksumOffset, crc32c(record.data(), record.size()));
+  return write_file_atomically(path, record.data(), record.size(), Durability::PageCache);
+}
+
+Status parse_schema_file(const std::uint8_t* data, std::size_t size, ParsedSchema& out) {
+  RecordView record;
+  Status status = parse_record(data, size, record);
+  if (!status.ok()) return status;
+  if (record.record_size != size) {
+    return Status(Error::Corrupt, "%zu unexpected bytes after the %zu-byte record",
+                  size - record.record_size, record.record_size);
+  }
+  if (record.schema == nullptr) {
+    return Status(Error::SchemaUnknown, "the record carries no schema of its own");
+  }
+  if (record.payload_size != 0) {
+    return Status(Error::Corrupt,
+                  "a checkpoint, not a schema file (it carries %zu bytes of values)",
+                  record.payload_size);
+  }
+  return parse_schema(record.schema, record.header.schema_size, out);
+}
+
+Status read_schema_file(const char* path, ParsedSchema& out) {
+  std::vector<std::uint8_t> bytes;
+  Status status = read_regular_file(path, kMaxSchemaFileSize, bytes);
+  if (!status.ok()) return status;
+  status = parse_schema_file(bytes.data(), bytes.size(), out);
+  if (!status.ok()) return Status(status.error(), "%s: %s", path, status.message());
+  return Status();
+}
+
+}  // namespace symcr::detail

@@ -1,0 +1,52 @@
+// Periodic checkpoints of the vehicle's critical state and their restoration at start-up.
+//
+// Methods:
+//   none       no checkpoints
+//   raw-image  the bytes of the root object (`copter`), as whole-memory checkpointers keep
+//              them, restored with memcpy: correct only if the new build's layout is the same
+//   symcr      symcr's checkpoint store: saved by schema, restored by source-level names
+//              (available when the build ran symcr_add_checkpointing on this target)
+//
+// Every save and restore is reported to the world as a SIM_CHECKPOINT frame (duration, size),
+// so the experiment measures the cost inside the vehicle's loop.
+#ifndef AUTOPILOT_AP_CHECKPOINT_HPP
+#define AUTOPILOT_AP_CHECKPOINT_HPP
+
+#include <cstdint>
+
+class AP_Checkpoint {
+ public:
+  enum class Method : std::uint8_t { None, RawImage, Symcr };
+
+  static bool parse_method(const char* name, Method& out);
+  static bool symcr_available();
+
+  // Opens (creating if needed) the checkpoint file. False with a message on stderr.
+  bool init(Method method, const char* path, std::uint32_t every_loops);
+  // Restores the latest checkpoint into `copter`. False (and `copter` untouched for symcr)
+  // when nothing valid could be restored.
+  bool restore();
+  // Scheduler task: saves when due.
+  static void save_task();
+
+ private:
+  bool save();
+  bool raw_save();
+  bool raw_restore();
+  bool symcr_open();
+  bool symcr_save();
+  bool symcr_restore();
+  void report(std::uint8_t event, std::uint64_t nanos);
+
+  Method _method = Method::None;
+  const char* _path = nullptr;
+  std::uint32_t _every_loops = 10;
+  std::uint32_t _loops = 0;
+  std::uint32_t _sequence = 0;
+  std::uint32_t _bytes = 0;
+  int _fd = -1;
+};
+
+extern AP_Checkpoint checkpointing;
+
+#endif  // AUTOPILOT_AP_CHECKPOINT_HPP

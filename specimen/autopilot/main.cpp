@@ -1,0 +1,100 @@
+// The autopilot process. The world (physics, sensors, ground station) starts it with the two
+// ends of its links as file descriptors and drives it in lock-step: one SIM_SENSORS frame in,
+// one loop, one SIM_MOTORS frame out.
+//
+//   copter --sim-fd 3 --gcs-fd 4 [--checkpoint none|raw-image|symcr --checkpoint-path FILE
+//          --checkpoint-every LOOPS] [--restore]
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "AP_Checkpoint.hpp"
+#include "AP_Motors.hpp"
+#include "Copter.hpp"
+#include "messages.hpp"
+
+namespace {
+constexpr int kSensorTimeoutMs = 30000;
+
+void usage() {
+  std::fprintf(stderr,
+               "usage: copter --sim-fd N --gcs-fd N [--checkpoint none|raw-image|symcr]\n"
+               "              [--checkpoint-path FILE] [--checkpoint-every LOOPS] [--restore]\n");
+}
+
+void apply_sensors(const mav::SimSensors& in) {
+  SensorSample& s = hal.sample;
+  s.gyro = {in.gyro[0], in.gyro[1], in.gyro[2]};
+  s.accel = {in.accel[0], in.accel[1], in.accel[2]};
+  s.mag_heading = in.mag_heading;
+  s.baro_alt = in.baro_alt;
+  s.gps_new = in.gps_new != 0;
+  s.gps_fix = in.gps_fix;
+  s.gps_loc = Location::make(in.gps_lat, in.gps_lng, static_cast<std::int32_t>(in.gps_alt * 100.0f));
+  s.gps_vel = {in.gps_vel[0], in.gps_vel[1], in.gps_vel[2]};
+  hal.now_us = in.time_us;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  int sim_fd = -1, gcs_fd = -1;
+  AP_Checkpoint::Method method = AP_Checkpoint::Method::None;
+  const char* checkpoint_path = "copter.ckpt";
+  std::uint32_t checkpoint_every = 10;
+  bool restore = false;
+  for (int i = 1; i < argc; ++i) {
+    const char* arg = argv[i];
+    const char* value = i + 1 < argc ? argv[i + 1] : nullptr;
+    if (std::strcmp(arg, "--restore") == 0) {
+      restore = true;
+    } else if (value == nullptr) {
+      usage();
+      return 2;
+    } else if (std::strcmp(arg, "--sim-fd") == 0) {
+      sim_fd = std::atoi(value), ++i;
+    } else if (std::strcmp(arg, "--gcs-fd") == 0) {
+      gcs_fd = std::atoi(value), ++i;
+    } else if (std::strcmp(arg, "--checkpoint") == 0) {
+      if (!AP_Checkpoint::parse_method(value, method)) {
+        usage();
+        return 2;
+      }
+      ++i;
+    } else if (std::strcmp(arg, "--checkpoint-path") == 0) {
+      checkpoint_path = value, ++i;
+    } else if (std::strcmp(arg, "--checkpoint-every") == 0) {
+      checkpoint_every = static_cast<std::uint32_t>(std::atoi(value)), ++i;
+    } else {
+      usage();
+      return 2;
+    }
+  }
+  if (sim_fd < 0 || gcs_fd < 0) {
+    usage();
+    return 2;
+  }
+  hal.sim = mav::Channel(sim_fd);
+  hal.gcs = mav::Channel(gcs_fd);
+
+  copter.setup();
+  if (!checkpointing.init(method, checkpoint_path, checkpoint_every)) return 3;
+
+  // The first sensor frame gives the time; restore after it so that the restored state and
+  // the clock agree from the first loop on.
+  mav::Frame frame;
+  bool restored_pending = restore;
+  while (hal.sim.receive(frame, kSensorTimeoutMs)) {
+    if (frame.msgid != mav::SIM_SENSORS) continue;
+    apply_sensors(mav::read_payload<mav::SimSensors>(frame));
+    if (restored_pending) {
+      restored_pending = false;
+      if (!checkpointing.restore()) return 4;
+      copter.resume_after_restore();
+    }
+    copter.loop();
+    mav::SimMotors out{};
+    std::memcpy(out.motor, motors.outputs(), sizeof(out.motor));
+    if (!hal.sim.send(mav::make_frame(mav::SIM_MOTORS, out))) break;
+  }
+  return 0;
+}

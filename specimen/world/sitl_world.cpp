@@ -1,0 +1,433 @@
+// sitl_world: one flight of the experiment. The world (physics, sensors, ground station) runs
+// here, in the parent; the autopilot runs as a child process that can be killed and replaced
+// by a patched build without the world noticing anything but silence on the links. The
+// vehicle's true physical state therefore survives every autopilot restart, as it would in
+// reality: only the autopilot's memory is lost, and what it gets back is what the checkpoint
+// method restores.
+//
+// The simulation is lock-step (the world waits for each autopilot loop), so it runs as fast
+// as the processes allow; --speedup N paces it at N times real time instead.
+//
+// Prints one JSON object describing the flight; writes the flown track as CSV with --track.
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "autopilot_process.hpp"
+#include "flight_judge.hpp"
+#include "geo.hpp"
+#include "ground_station.hpp"
+#include "messages.hpp"
+#include "mission_file.hpp"
+#include "physics.hpp"
+#include "sensors.hpp"
+
+namespace {
+
+using world::AutopilotProcess;
+using world::BodyState;
+
+struct Options {
+  std::string autopilot;         // the build that starts the mission (V0)
+  std::string resume_autopilot;  // the build restarted after the checkpoint (Vk)
+  std::string mission_path;
+  std::string method = "none";   // none | raw-image | symcr
+  std::string workdir = ".";
+  std::string track_path;
+  unsigned seed = 1;
+  double checkpoint_at_s = -1;   // seconds after arming; < 0: never stop the autopilot
+  double exploit_at_s = -1;      // red team: seconds after arming to send the exploit
+  int checkpoint_every = 10;     // autopilot loops between checkpoints
+  double outage_s = 0.2;         // world time while no autopilot runs (motors hold)
+  double time_limit_s = 0;       // 0: from the route length
+  double speedup = 0;            // 0: as fast as possible
+  double wind_max_ms = 3.0;
+  double visit_radius_m = 3.5;
+};
+
+struct Point {
+  double t = -1, north = 0, east = 0, alt = 0;
+};
+
+struct Result {
+  bool success = false;
+  std::string reason;
+  double mission_time_s = 0;
+  double sim_time_s = 0;
+  int checkpoints_saved = 0;
+  std::uint32_t checkpoint_bytes = 0;
+  double checkpoint_us_sum = 0;
+  bool restarted = false;
+  bool restored = false;
+  double restore_us = -1;
+  std::string autopilot_exit;
+  Point checkpoint_point, resume_point, exploit_point;
+};
+
+[[noreturn]] void usage(const char* message) {
+  std::fprintf(stderr,
+               "sitl_world: %s\n"
+               "usage: sitl_world --autopilot EXE --mission FILE [--resume-autopilot EXE]\n"
+               "  [--method none|raw-image|symcr] [--checkpoint-at S] [--exploit-at S]\n"
+               "  [--checkpoint-every LOOPS] [--outage S] [--seed N] [--time-limit S]\n"
+               "  [--speedup X] [--wind M/S] [--workdir DIR] [--track FILE]\n",
+               message);
+  std::exit(2);
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (i + 1 >= argc) usage(("missing value for " + arg).c_str());
+    const std::string value = argv[++i];
+    if (arg == "--autopilot") o.autopilot = value;
+    else if (arg == "--resume-autopilot") o.resume_autopilot = value;
+    else if (arg == "--mission") o.mission_path = value;
+    else if (arg == "--method") o.method = value;
+    else if (arg == "--workdir") o.workdir = value;
+    else if (arg == "--track") o.track_path = value;
+    else if (arg == "--seed") o.seed = static_cast<unsigned>(std::stoul(value));
+    else if (arg == "--checkpoint-at") o.checkpoint_at_s = std::stod(value);
+    else if (arg == "--exploit-at") o.exploit_at_s = std::stod(value);
+    else if (arg == "--checkpoint-every") o.checkpoint_every = std::stoi(value);
+    else if (arg == "--outage") o.outage_s = std::stod(value);
+    else if (arg == "--time-limit") o.time_limit_s = std::stod(value);
+    else if (arg == "--speedup") o.speedup = std::stod(value);
+    else if (arg == "--wind") o.wind_max_ms = std::stod(value);
+    else if (arg == "--visit-radius") o.visit_radius_m = std::stod(value);
+    else usage(("unknown option " + arg).c_str());
+  }
+  if (o.autopilot.empty() || o.mission_path.empty()) usage("--autopilot and --mission are required");
+  if (o.method != "none" && o.method != "raw-image" && o.method != "symcr") usage("unknown method");
+  if (o.resume_autopilot.empty()) o.resume_autopilot = o.autopilot;
+  return o;
+}
+
+std::string json_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) continue;
+    out += c;
+  }
+  return out;
+}
+
+std::string point_json(const Point& p) {
+  if (p.t < 0) return "null";
+  char buf[160];
+  std::snprintf(buf, sizeof(buf), "{\"t\":%.2f,\"north\":%.2f,\"east\":%.2f,\"alt\":%.2f}", p.t,
+                p.north, p.east, p.alt);
+  return buf;
+}
+
+class World {
+ public:
+  World(const Options& options, const world::Mission& mission, const world::Home& home)
+      : options_(options),
+        mission_(mission),
+        physics_(world::Airframe{}, make_wind(options), options.seed),
+        sensors_(home, options.seed * 7919u + 1u),
+        station_(mission),
+        judge_(mission, home, options.visit_radius_m) {
+    if (!options.track_path.empty()) track_.open(options.track_path);
+    if (track_) track_ << "t,north,east,alt,segment\n";
+  }
+
+  Result run();
+
+ private:
+  static world::WindModel make_wind(const Options& options) {
+    std::mt19937_64 rng(options.seed * 104729u + 17u);
+    std::uniform_real_distribution<double> speed(0.0, options.wind_max_ms), dir(0.0, 2 * M_PI);
+    const double s = speed(rng), d = dir(rng);
+    world::WindModel wind;
+    wind.mean = {s * std::cos(d), s * std::sin(d), 0};
+    return wind;
+  }
+
+  std::vector<std::string> autopilot_args() const {
+    std::vector<std::string> args;
+    if (options_.method != "none") {
+      args = {"--checkpoint", options_.method, "--checkpoint-path",
+              options_.workdir + "/checkpoint." + (options_.method == "symcr" ? "store" : "img"),
+              "--checkpoint-every", std::to_string(options_.checkpoint_every)};
+    }
+    return args;
+  }
+  std::string log_path() const { return options_.workdir + "/autopilot.log"; }
+
+  Point here() const {
+    const BodyState& s = physics_.state();
+    return {time_s(), s.position.x, s.position.y, -s.position.z};
+  }
+  double time_s() const { return static_cast<double>(time_us_) * 1e-6; }
+  void step_world(const std::array<double, 4>& motors, int segment);
+  // One autopilot loop; false when the autopilot is gone (`gone_how` says how).
+  bool autopilot_loop(std::array<double, 4>& motors, bool& saved_this_loop, std::string& gone_how);
+  bool restart_autopilot(Result& result, int& segment);
+  void pace();
+
+  const Options& options_;
+  const world::Mission& mission_;
+  world::Physics physics_;
+  world::Sensors sensors_;
+  world::GroundStation station_;
+  world::FlightJudge judge_;
+  AutopilotProcess autopilot_;
+  std::ofstream track_;
+  std::uint64_t time_us_ = 0;
+  std::uint64_t next_track_us_ = 0;
+  std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
+  Result* result_ = nullptr;
+};
+
+constexpr std::uint64_t kLoopUs = 10000;   // autopilot loop: 100 Hz
+constexpr int kPhysicsSubsteps = 4;         // physics: 400 Hz
+constexpr int kReplyTimeoutMs = 20000;
+
+void World::step_world(const std::array<double, 4>& motors, int segment) {
+  const double dt = kLoopUs * 1e-6 / kPhysicsSubsteps;
+  for (int i = 0; i < kPhysicsSubsteps; ++i) {
+    physics_.step(motors, dt);
+    sensors_.accumulate_imu(physics_.state());
+  }
+  time_us_ += kLoopUs;
+  judge_.update(physics_.state(), time_s());
+  // Every loop while the autopilot is down (it is short), every 0.2 s otherwise.
+  if (track_ && (time_us_ >= next_track_us_ || segment == 1)) {
+    next_track_us_ = time_us_ + 200000;
+    const Point p = here();
+    track_ << p.t << ',' << p.north << ',' << p.east << ',' << p.alt << ',' << segment << '\n';
+  }
+}
+
+void World::pace() {
+  if (options_.speedup <= 0) return;
+  const auto target = wall_start_ + std::chrono::microseconds(
+                                        static_cast<std::int64_t>(time_us_ / options_.speedup));
+  std::this_thread::sleep_until(target);
+}
+
+bool World::autopilot_loop(std::array<double, 4>& motors, bool& saved_this_loop,
+                           std::string& gone_how) {
+  saved_this_loop = false;
+  const mav::SimSensors sample = sensors_.sample(physics_.state(), time_us_);
+  if (!autopilot_.sim().send(mav::make_frame(mav::SIM_SENSORS, sample))) {
+    gone_how = autopilot_.reap();
+    return false;
+  }
+  mav::Frame frame;
+  for (;;) {
+    if (!autopilot_.sim().receive(frame, kReplyTimeoutMs)) {
+      if (autopilot_.sim().closed()) {
+        gone_how = autopilot_.reap();
+      } else {
+        autopilot_.kill_now();
+        gone_how = "hung (no reply)";
+      }
+      return false;
+    }
+    if (frame.msgid == mav::SIM_CHECKPOINT) {
+      const auto msg = mav::read_payload<mav::SimCheckpoint>(frame);
+      if (msg.event == mav::CKPT_SAVED) {
+        ++result_->checkpoints_saved;
+        result_->checkpoint_us_sum += msg.nanos * 1e-3;
+        // The checkpoint that counts is the one the first build wrote and the second restored.
+        if (!result_->restarted) {
+          result_->checkpoint_bytes = msg.bytes;
+          result_->checkpoint_point = here();
+        }
+        saved_this_loop = true;
+      } else if (msg.event == mav::CKPT_RESTORED) {
+        result_->restored = true;
+        result_->restore_us = msg.nanos * 1e-3;
+      } else {
+        result_->restored = false;
+      }
+      continue;
+    }
+    if (frame.msgid == mav::SIM_MOTORS) {
+      const auto out = mav::read_payload<mav::SimMotors>(frame);
+      for (int i = 0; i < 4; ++i) motors[i] = out.motor[i];
+      return true;
+    }
+  }
+}
+
+bool World::restart_autopilot(Result& result, int& segment) {
+  // The world goes on while the flight computer is down: the motor controllers hold their
+  // last command (as an IO co-processor does), the vehicle keeps flying open-loop.
+  std::array<double, 4> held{};
+  for (int i = 0; i < 4; ++i) held[i] = physics_.state().motor[i];
+  segment = 1;
+  for (double t = 0; t < options_.outage_s; t += kLoopUs * 1e-6) step_world(held, segment);
+  result.restarted = true;
+  std::vector<std::string> args = autopilot_args();
+  args.push_back("--restore");
+  if (!autopilot_.start(options_.resume_autopilot, args, log_path())) {
+    result.reason = "could not start " + options_.resume_autopilot;
+    return false;
+  }
+  station_.on_autopilot_restarted();
+  result.resume_point = here();
+  segment = 2;
+  return true;
+}
+
+Result World::run() {
+  Result result;
+  result_ = &result;
+  const double route_m = mission_.route_length_m();
+  const double limit_s = options_.time_limit_s > 0
+                             ? options_.time_limit_s
+                             : 2.5 * route_m / mission_.cruise_speed_ms() + 120.0;
+  if (!autopilot_.start(options_.autopilot, autopilot_args(), log_path())) {
+    result.reason = "could not start " + options_.autopilot;
+    return result;
+  }
+  std::array<double, 4> motors{};
+  int segment = 0;
+  bool exploit_sent = false;
+  bool airborne = false;
+  double landed_since = -1;
+  for (;;) {
+    bool saved = false;
+    std::string gone_how;
+    if (!autopilot_loop(motors, saved, gone_how)) {
+      result.autopilot_exit = gone_how;
+      if (exploit_sent && !result.restarted && options_.method != "none") {
+        // The attack crashed the flight software: the watchdog restarts the repaired build
+        // from the latest checkpoint taken before the exploit.
+        if (!restart_autopilot(result, segment)) return result;
+        continue;
+      }
+      result.reason = "autopilot stopped (" + gone_how + ")";
+      if (result.restarted && !result.restored) result.reason += ": restore failed";
+      break;
+    }
+    station_.update(autopilot_.gcs(), time_s());
+    step_world(motors, segment);
+    pace();
+
+    const BodyState& s = physics_.state();
+    if (!s.on_ground) airborne = true;
+    if (physics_.crashed()) {
+      result.reason = std::string("crashed: ") + physics_.crash_reason();
+      break;
+    }
+    if (judge_.max_distance_from_route() > 300.0) {
+      result.reason = "flew away from the route";
+      break;
+    }
+    const double mission_s = station_.mission_started() ? time_s() - station_.arm_time_s() : 0;
+    if (time_s() > limit_s + 60.0) {
+      result.reason = "time limit";
+      break;
+    }
+    const bool disarmed = motors[0] == 0 && motors[1] == 0 && motors[2] == 0 && motors[3] == 0;
+    if (airborne && s.on_ground && disarmed) {
+      if (landed_since < 0) landed_since = time_s();
+      if (time_s() - landed_since >= 1.0) {
+        result.mission_time_s = landed_since - station_.arm_time_s();
+        break;
+      }
+    } else {
+      landed_since = -1;
+    }
+
+    if (station_.mission_started() && options_.exploit_at_s >= 0 && !exploit_sent &&
+        mission_s >= options_.exploit_at_s) {
+      station_.send_exploit(autopilot_.gcs());
+      exploit_sent = true;
+      result.exploit_point = here();
+    }
+    if (station_.mission_started() && options_.method != "none" && options_.exploit_at_s < 0 &&
+        options_.checkpoint_at_s >= 0 && !result.restarted && saved &&
+        mission_s >= options_.checkpoint_at_s) {
+      // Stop the flight computer right after a checkpoint, as a crash would.
+      autopilot_.kill_now();
+      result.autopilot_exit = "killed (SIGKILL)";
+      if (!restart_autopilot(result, segment)) return result;
+    }
+  }
+  result.sim_time_s = time_s();
+  autopilot_.kill_now();
+  if (!result.reason.empty()) return result;
+
+  std::string why;
+  if (!judge_.route_flown_in_order(why)) {
+    result.reason = why;
+  } else if (judge_.distance_to_end(physics_.state()) > 5.0) {
+    result.reason = "landed away from the end of the route";
+  } else if (result.mission_time_s > limit_s) {
+    result.reason = "over the time bound";
+  } else if (options_.checkpoint_at_s >= 0 && options_.method != "none" && !result.restarted) {
+    result.reason = "mission ended before the checkpoint point";
+  } else if (options_.exploit_at_s >= 0 && !exploit_sent) {
+    result.reason = "mission ended before the exploit";
+  } else {
+    result.success = true;
+    result.reason = "ok";
+  }
+  return result;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options options = parse(argc, argv);
+  world::Mission mission;
+  std::string error;
+  if (!world::load_mission(options.mission_path, mission, error)) {
+    std::fprintf(stderr, "sitl_world: %s\n", error.c_str());
+    return 2;
+  }
+  std::error_code mkdir_error;
+  std::filesystem::create_directories(options.workdir, mkdir_error);
+  if (mkdir_error) {
+    std::fprintf(stderr, "sitl_world: %s: %s\n", options.workdir.c_str(), mkdir_error.message().c_str());
+    return 2;
+  }
+  world::Home home;
+  home.lat = static_cast<std::int32_t>(std::lround(mission.items[0].lat * 1e7));
+  home.lng = static_cast<std::int32_t>(std::lround(mission.items[0].lng * 1e7));
+
+  const auto wall_start = std::chrono::steady_clock::now();
+  World world(options, mission, home);
+  const Result r = world.run();
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(3);
+  out << "{\"success\":" << (r.success ? "true" : "false") << ",\"reason\":\""
+      << json_escape(r.reason) << "\",\"mission\":\"" << json_escape(mission.name)
+      << "\",\"method\":\"" << options.method << "\",\"seed\":" << options.seed
+      << ",\"mission_time_s\":" << r.mission_time_s << ",\"sim_time_s\":" << r.sim_time_s
+      << ",\"wall_time_s\":" << wall_s << ",\"checkpoints_saved\":" << r.checkpoints_saved
+      << ",\"checkpoint_bytes\":" << r.checkpoint_bytes << ",\"checkpoint_us_mean\":"
+      << (r.checkpoints_saved > 0 ? r.checkpoint_us_sum / r.checkpoints_saved : 0.0)
+      << ",\"restarted\":" << (r.restarted ? "true" : "false")
+      << ",\"restored\":" << (r.restored ? "true" : "false") << ",\"restore_us\":" << r.restore_us
+      << ",\"autopilot_exit\":\"" << json_escape(r.autopilot_exit) << "\""
+      << ",\"route_points\":" << mission.route_points().size() << ",\"checkpoint_point\":"
+      << (r.restarted ? point_json(r.checkpoint_point) : "null")
+      << ",\"resume_point\":" << point_json(r.resume_point)
+      << ",\"exploit_point\":" << point_json(r.exploit_point) << "}";
+  std::printf("%s\n", out.str().c_str());
+  return r.success ? 0 : 1;
+}

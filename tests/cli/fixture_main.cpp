@@ -1,0 +1,134 @@
+// The CLI fixture program: one build (v0, v1, ...) of a small program linking the runtime,
+// used to produce real checkpoints, stores and schema files, and damaged copies of them.
+//   fixture checkpoint <path> <seed>        single-file checkpoint
+//   fixture store <path> <saves>            4-slot store after <saves> saves (seeds 1..saves)
+//   fixture schema <path>                   this build's schema file
+//   fixture flip <path> <offset>            invert one byte
+//   fixture truncate <path> <size>          cut the file
+//   fixture flip-newest-slot <path>         invert a payload byte of the store's newest slot
+//   fixture flip-resign <path> <offset>     invert one byte of a single-file checkpoint, then
+//                                           fix its schema hash and checksum: a hostile file
+//                                           that passes the integrity checks
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "crc32c.hpp"
+#include "engine.hpp"
+#include "file_io.hpp"
+#include "fixture_tables.hpp"
+#include "little_endian.hpp"
+#include "schema_file.hpp"
+#include "symcr/symcr.hpp"
+
+namespace {
+
+int fail(const char* what, const symcr::Status& status) {
+  std::fprintf(stderr, "fixture: %s: %s: %s\n", what, symcr::error_name(status.error()),
+               status.message());
+  return 1;
+}
+
+bool flip_byte(const char* path, long offset) {
+  const int fd = ::open(path, O_RDWR);
+  if (fd < 0) return false;
+  unsigned char byte = 0;
+  bool ok = ::pread(fd, &byte, 1, offset) == 1;
+  byte = static_cast<unsigned char>(~byte);
+  ok = ok && ::pwrite(fd, &byte, 1, offset) == 1;
+  ::close(fd);
+  return ok;
+}
+
+// The slot with the highest sequence among those whose record header has the magic.
+bool flip_newest_slot(const char* path) {
+  const int fd = ::open(path, O_RDONLY);
+  if (fd < 0) return false;
+  std::uint8_t header[36];
+  bool ok = ::pread(fd, header, sizeof header, 0) == sizeof header;
+  const std::uint32_t slot_count = symcr::detail::le::load32(header + 12);
+  const std::uint32_t slot_size = symcr::detail::le::load32(header + 16);
+  const std::uint64_t slots_offset = symcr::detail::le::load64(header + 24);
+  long newest_offset = -1;
+  std::uint64_t newest_sequence = 0;
+  for (std::uint32_t i = 0; ok && i < slot_count; ++i) {
+    std::uint8_t record[56];
+    const long offset = static_cast<long>(slots_offset + std::uint64_t{i} * slot_size);
+    if (::pread(fd, record, sizeof record, offset) != sizeof record) ok = false;
+    if (!ok || std::memcmp(record, "SYMCRCKP", 8) != 0) continue;
+    const std::uint64_t sequence = symcr::detail::le::load64(record + 16);
+    if (newest_offset < 0 || sequence > newest_sequence) {
+      newest_offset = offset;
+      newest_sequence = sequence;
+    }
+  }
+  ::close(fd);
+  // 60: the fifth byte of the payload (store records carry no inline schema).
+  return ok && newest_offset >= 0 && flip_byte(path, newest_offset + 60);
+}
+
+bool flip_and_resign(const char* path, long offset) {
+  std::vector<std::uint8_t> bytes;
+  if (!symcr::detail::read_regular_file(path, 1u << 30, bytes).ok()) return false;
+  if (offset < 0 || static_cast<std::size_t>(offset) >= bytes.size() || bytes.size() < 56) {
+    return false;
+  }
+  bytes[static_cast<std::size_t>(offset)] ^= 0xFF;
+  using namespace symcr::detail;
+  const std::uint16_t header_size = le::load16(bytes.data() + 10);
+  const std::uint32_t schema_size = le::load32(bytes.data() + 40);
+  if (std::size_t{header_size} + schema_size <= bytes.size()) {
+    le::store64(bytes.data() + 32, fnv1a64(bytes.data() + header_size, schema_size));
+  }
+  le::store32(bytes.data() + 48, 0);
+  le::store32(bytes.data() + 48, crc32c(bytes.data(), bytes.size()));
+  return write_file_atomically(path, bytes.data(), bytes.size(), symcr::Durability::PageCache)
+      .ok();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: %s checkpoint|store|schema|flip|truncate|flip-newest-slot ...\n",
+                 argv[0]);
+    return 2;
+  }
+  const char* command = argv[1];
+  const char* path = argv[2];
+  const long number = argc > 3 ? std::strtol(argv[3], nullptr, 10) : 0;
+  if (std::strcmp(command, "checkpoint") == 0) {
+    cli_fixture::fill_state(static_cast<int>(number));
+    const symcr::Status status = symcr::checkpoint(cli_fixture::schema(), path);
+    return status.ok() ? 0 : fail("checkpoint", status);
+  }
+  if (std::strcmp(command, "store") == 0) {
+    ::unlink(path);
+    symcr::Store store;
+    symcr::StoreOptions options;
+    options.slots = 4;
+    options.slot_size = 4096;
+    symcr::Status status = symcr::Store::open(path, cli_fixture::schema(), options, store);
+    if (!status.ok()) return fail("open store", status);
+    for (long seed = 1; seed <= number; ++seed) {
+      cli_fixture::fill_state(static_cast<int>(seed));
+      status = store.save();
+      if (!status.ok()) return fail("save", status);
+    }
+    return 0;
+  }
+  if (std::strcmp(command, "schema") == 0) {
+    const symcr::Status status = symcr::detail::write_schema_file(cli_fixture::schema(), path);
+    return status.ok() ? 0 : fail("schema", status);
+  }
+  if (std::strcmp(command, "flip") == 0) return flip_byte(path, number) ? 0 : 1;
+  if (std::strcmp(command, "truncate") == 0) return ::truncate(path, number) == 0 ? 0 : 1;
+  if (std::strcmp(command, "flip-resign") == 0) return flip_and_resign(path, number) ? 0 : 1;
+  if (std::strcmp(command, "flip-newest-slot") == 0) return flip_newest_slot(path) ? 0 : 1;
+  std::fprintf(stderr, "fixture: unknown command %s\n", command);
+  return 2;
+}

@@ -1,0 +1,193 @@
+# The CLI's tests, by subcommand. Files come from make_fixtures.cmake (v0 seed 1 unless named).
+string(ASCII 27 esc)  # the start of a terminal colour sequence
+
+# ---- usage and help -------------------------------------------------------------------------
+symcr_cli_test(no_subcommand EXIT 2 ARGS EXPECT "a subcommand is needed")
+symcr_cli_test(unknown_option EXIT 2 ARGS inspect --bogus ${files}/v0.ckpt
+               EXPECT "Unknown command line argument '--bogus'")
+symcr_cli_test(missing_argument EXIT 2 ARGS inspect EXPECT "Not enough positional")
+symcr_cli_test(help EXIT 0 ARGS --help EXPECT "inspect" "verify" "diff" "plan" "Exit codes")
+symcr_cli_test(inspect_help EXIT 0 ARGS inspect --help EXPECT "--json" "--slot"
+               REJECT "--schema" "--strict")
+symcr_cli_test(plan_help EXIT 0 ARGS plan --help EXPECT "--schema" "--strict" "--json")
+
+# ---- inspect --------------------------------------------------------------------------------
+symcr_cli_test(inspect_checkpoint EXIT 0 ARGS inspect ${files}/v0.ckpt
+  EXPECT "format_version +1\n"
+         "sequence +0\n"
+         "time +20[0-9][0-9]-[01][0-9]-[0-3][0-9]T[0-2][0-9]:[0-5][0-9]:[0-6][0-9]\\.[0-9]+Z\n"
+         "schema_hash +[0-9a-f]+\n"
+         "schema +inline, 18 types, 2 roots"
+         "checksum +ok \\(crc32c [0-9a-f]+\\)"
+         "copter.ticks +=  *1001\n"
+         "copter.mode +=  *AUTO\n"
+         "copter.mission.items\\[3\\].lat += 42.28\n"
+         "copter.mission.items\\[1\\].alt += 100.5\n"
+         "copter.mission.items\\[0\\].alt += 100\n"
+         "copter.mission.name += \"ISTAR\"\n"
+         "copter.mission.log\\[2\\] += 1\n"
+         "copter.armed_ms += 5000000001\n"
+         "copter.target += -> copter.mission.items\\[2\\]\n"
+         "telemetry.rssi += -70\n"
+  REJECT "${esc}\\[")
+symcr_cli_test(inspect_json EXIT 0 JSON ARGS inspect --json ${files}/v0.ckpt
+  EXPECT "\"kind\": \"checkpoint\""
+         "\"format_version\": 1"
+         "\"path\": \"copter.mode\",[ \n]*\"type\": \"FlightMode\",[ \n]*\"value\": \"AUTO\""
+         "\"path\": \"copter.mission.items\\[3\\].lat\",[ \n]*\"type\": \"float64\",[ \n]*\"value\": 42.28"
+         "\"path\": \"copter.target\",[ \n]*\"type\": \"Waypoint\\*\",[ \n]*\"value\": \"-> copter.mission.items\\[2\\]\"")
+symcr_cli_test(inspect_store EXIT 0 ARGS inspect ${files}/v0.store
+  EXPECT "slots +4 x 4096 bytes"
+         "schema_area 0 +hash [0-9a-f]+, [0-9]+ bytes, 18 types, 2 roots"
+         "restore_latest +slot 1 \\(sequence 6\\)"
+         "\n0 +valid +5 "
+         "\n1 +valid +6 .*<- shown"
+         "\n2 +valid +3 "
+         "\nslot 1\n"
+         "schema +store area 0"
+         "copter.ticks += 1006\n")
+symcr_cli_test(inspect_store_slot EXIT 0 ARGS inspect --slot 2 ${files}/v0.store
+  EXPECT "\n2 +valid +3 .*<- shown" "copter.ticks += 1003\n")
+symcr_cli_test(inspect_store_no_such_slot EXIT 2 ARGS inspect --slot 9 ${files}/v0.store
+  EXPECT "has 4 slots; there is no slot 9")
+symcr_cli_test(inspect_store_json EXIT 0 JSON ARGS inspect --json ${files}/v0.store
+  EXPECT "\"kind\": \"store\"" "\"restore_latest_slot\": 1" "\"selected_slot\": 1"
+         "\"value\": 1006")
+symcr_cli_test(inspect_torn_store EXIT 0 ARGS inspect ${files}/torn.store
+  EXPECT "restore_latest +slot 0 \\(sequence 5\\)"
+         "\n1 +corrupt +- .*checksum mismatch"
+         "copter.ticks += 1005\n")
+symcr_cli_test(inspect_torn_slot EXIT 2 ARGS inspect --slot 1 ${files}/torn.store
+  EXPECT "slot 1 is corrupt: checksum mismatch")
+symcr_cli_test(inspect_schema_file EXIT 0 ARGS inspect ${files}/v1.schema
+  EXPECT "schema file" "payload_size +0\n" "copter +Copter\n" "telemetry +Telemetry\n")
+symcr_cli_test(inspect_corrupt EXIT 2 ARGS inspect ${files}/corrupt.ckpt
+  EXPECT "symcr: error: .*corrupt.ckpt: checksum mismatch" REJECT "copter.ticks")
+symcr_cli_test(inspect_truncated EXIT 2 ARGS inspect ${files}/truncated.ckpt
+  EXPECT "truncated: header says [0-9]+ bytes, 100 available")
+symcr_cli_test(inspect_not_a_checkpoint EXIT 2 ARGS inspect ${files}/not-a-checkpoint.txt
+  EXPECT "not a symcr checkpoint or store \\(bad magic\\)")
+symcr_cli_test(inspect_missing EXIT 2 ARGS inspect ${files}/no-such-file
+  EXPECT "cannot open .*no-such-file: No such file or directory")
+symcr_cli_test(inspect_symlink EXIT 0 ARGS inspect ${files}/latest.ckpt
+  EXPECT "copter.ticks += 1001\n")
+symcr_cli_test(verify_symlinked_store EXIT 0 ARGS verify ${files}/latest.store
+  EXPECT "restore_latest +slot 1 \\(sequence 6\\)")
+symcr_cli_test(inspect_no_color EXIT 0 ARGS inspect ${files}/v0.ckpt ENV NO_COLOR=1
+  REJECT "${esc}\\[")
+
+# ---- verify ---------------------------------------------------------------------------------
+symcr_cli_test(verify_checkpoint EXIT 0 ARGS verify ${files}/v0.ckpt
+  EXPECT "record +ok +format 1, [0-9]+ bytes, checksum ok"
+         "schema +ok +inline, hash [0-9a-f]+, 18 types, 2 roots"
+         "payload +ok +[0-9]+ bytes, [0-9]+ values decoded"
+         "\nvalid\n")
+symcr_cli_test(verify_schema_file EXIT 0 ARGS verify ${files}/v0.schema
+  EXPECT "^schema " "payload +ok +none \\(a schema file\\)" "\nvalid\n")
+symcr_cli_test(verify_corrupt EXIT 1 ARGS verify ${files}/corrupt.ckpt
+  EXPECT "record +FAILED +Checksum: checksum mismatch" "\ninvalid\n" REJECT "payload")
+symcr_cli_test(verify_truncated EXIT 1 ARGS verify ${files}/truncated.ckpt
+  EXPECT "record +FAILED +Truncated" "\ninvalid\n")
+symcr_cli_test(verify_not_a_checkpoint EXIT 1 ARGS verify ${files}/not-a-checkpoint.txt
+  EXPECT "invalid: .*bad magic")
+symcr_cli_test(verify_missing EXIT 2 ARGS verify ${files}/no-such-file EXPECT "cannot open")
+symcr_cli_test(verify_json EXIT 1 JSON ARGS verify --json ${files}/corrupt.ckpt
+  EXPECT "\"valid\": false" "\"check\": \"record\",[ \n]*\"ok\": false")
+symcr_cli_test(verify_store EXIT 0 ARGS verify ${files}/v0.store
+  EXPECT "restore_latest +slot 1 \\(sequence 6\\)" "\nvalid\n")
+symcr_cli_test(verify_torn_store EXIT 1 ARGS verify ${files}/torn.store
+  EXPECT "restore_latest +slot 0 \\(sequence 5\\)"
+         "\n1 +corrupt +- .*checksum mismatch"
+         "\ninvalid: 1 damaged slot")
+symcr_cli_test(verify_torn_store_json EXIT 1 JSON ARGS verify --json ${files}/torn.store
+  EXPECT "\"valid\": false" "\"damaged_slots\": 1" "\"restore_latest_slot\": 0")
+
+# ---- diff -----------------------------------------------------------------------------------
+symcr_cli_test(diff_same EXIT 0 ARGS diff ${files}/v0.ckpt ${files}/v0.ckpt
+  EXPECT "no differences \\([0-9]+ values\\)")
+symcr_cli_test(diff_seeds EXIT 1 ARGS diff ${files}/v0.ckpt ${files}/v0-seed2.ckpt
+  EXPECT "\n +path +a +b\n"
+         "\n~ +copter.ticks +1001 +1002\n"
+         "\n~ +copter.mode +AUTO +LAND\n"
+         "\n~ +copter.mission.log\\[2\\] +1 +2\n"
+  REJECT "copter.mission.name" "\n[+-] ")
+symcr_cli_test(diff_builds EXIT 1 ARGS diff ${files}/v0.ckpt ${files}/v1.ckpt
+  EXPECT "\n~ +copter.ticks +1001 +2001 +\\(int32 -> int64\\)\n"
+         "\n- +copter.armed_ms +5000000001 +\\(absent\\)\n"
+         "\n- +copter.mission.items\\[3\\].lat +42.28 +\\(absent\\)\n"
+         "\n- +copter.mission.current +1 +\\(absent\\)\n"
+         "\n\\+ +copter.mission.active_index +\\(absent\\) +1\n"
+         "\n\\+ +copter.geofence +\\(absent\\) +150\n"
+         "\n~ +copter.target +-> copter.mission.items\\[2\\] +-> copter.mission.items\\[1\\]\n"
+         "9 difference\\(s\\): 2 changed, 5 removed, 2 added"
+  REJECT "copter.mode" "copter.battery" "telemetry.rssi")
+symcr_cli_test(diff_store_and_file EXIT 1 ARGS diff --slot-a 0 ${files}/v0.store ${files}/v0.ckpt
+  EXPECT "a +.*v0.store slot 0 \\(sequence 5" "\n~ +copter.ticks +1005 +1001\n")
+symcr_cli_test(diff_json EXIT 1 JSON ARGS diff --json ${files}/v0.ckpt ${files}/v1.ckpt
+  EXPECT "\"path\": \"copter.geofence\",[ \n]*\"change\": \"added\",[ \n]*\"b\": 150"
+         "\"removed\": [1-9]")
+symcr_cli_test(diff_corrupt EXIT 2 ARGS diff ${files}/v0.ckpt ${files}/corrupt.ckpt
+  EXPECT "corrupt.ckpt: checksum mismatch")
+symcr_cli_test(diff_truncated EXIT 2 ARGS diff ${files}/truncated.ckpt ${files}/v0.ckpt
+  EXPECT "truncated")
+
+# ---- plan -----------------------------------------------------------------------------------
+symcr_cli_test(plan_same_build EXIT 0 ARGS plan ${files}/v0.ckpt --schema ${files}/v0.schema
+  EXPECT "\ncopter +restored" "restore would succeed"
+  REJECT "[])a-z] +(converted|dropped|kept|rejected)[ \n]")
+symcr_cli_test(plan_patch EXIT 0 ARGS plan ${files}/v0.ckpt --schema ${files}/v1.schema
+  EXPECT "checkpoint +.*v0.ckpt \\(sequence 0"
+         "build +.*v1.schema \\(schema [0-9a-f]+, 17 types, 2 roots\\)"
+         "copter.ticks +converted +int32 -> int64"
+         "copter.armed_ms +dropped +\\*"
+         "copter.geofence +kept"
+         "copter.mission.active_index +converted +renamed from current"
+         "copter.battery +converted +float32 -> float64"
+         "restore would succeed"
+  REJECT "[])a-z] +rejected[ \n]")
+symcr_cli_test(plan_patch_strict EXIT 1 ARGS plan --strict ${files}/v0.ckpt --schema ${files}/v1.schema
+  EXPECT "mode +strict" "restore would fail: Strict: strict mode: lossy restore refused")
+symcr_cli_test(plan_kind_change EXIT 1 ARGS plan ${files}/v0.ckpt --schema ${files}/v1-kind-change.schema
+  EXPECT "copter.home +rejected +\\*" "[1-9][0-9]* rejected")
+symcr_cli_test(plan_rejected_value EXIT 1 ARGS plan ${files}/v0-weak-signal.ckpt --schema ${files}/v1.schema
+  EXPECT "telemetry.rssi +rejected +\\* +-270 out of range"
+         "restore would proceed with 1 rejected")
+symcr_cli_test(plan_json EXIT 0 JSON ARGS plan --json ${files}/v0.ckpt --schema ${files}/v1.schema
+  EXPECT "\"would_restore\": true" "\"strict\": false"
+         "\"path\": \"copter.geofence\",[ \n]*\"decision\": \"kept\"")
+symcr_cli_test(plan_from_store EXIT 0 ARGS plan ${files}/torn.store --schema ${files}/v1.schema
+  EXPECT "torn.store slot 0 \\(sequence 5" "restore would succeed")
+symcr_cli_test(plan_checkpoint_as_schema EXIT 2 ARGS plan ${files}/v0.ckpt --schema ${files}/v1.ckpt
+  EXPECT "a checkpoint, not a schema file")
+symcr_cli_test(plan_corrupt EXIT 2 ARGS plan ${files}/corrupt.ckpt --schema ${files}/v1.schema
+  EXPECT "checksum mismatch")
+symcr_cli_test(plan_no_schema EXIT 2 ARGS plan ${files}/v0.ckpt
+  EXPECT "must be specified at least once|Must specify|schema")
+
+# ---- hostile files --------------------------------------------------------------------------
+add_test(NAME cli_hostile_files
+         COMMAND ${CMAKE_COMMAND} -DSYMCR=$<TARGET_FILE:symcr-cli>
+                 -DFIXTURE=$<TARGET_FILE:symcr_cli_fixture_v0> -DSOURCE=${files}/v0.ckpt
+                 -DSCHEMA=${files}/v1.schema -DWORK=${CMAKE_CURRENT_BINARY_DIR}/hostile
+                 -DSTEP=11 -P ${CMAKE_CURRENT_SOURCE_DIR}/hostile_files.cmake)
+set_tests_properties(cli_hostile_files PROPERTIES FIXTURES_REQUIRED symcr_cli_files)
+
+# ---- colour: only on a terminal, and never with NO_COLOR ------------------------------------
+find_program(SYMCR_SCRIPT script)  # util-linux: runs a command on a pseudo-terminal
+if(SYMCR_SCRIPT)
+  foreach(case colour no_colour)
+    set(expect "EXPECT=${esc}\\[36m42.28${esc}\\[0m")
+    set(environment "ENV=")
+    if(case STREQUAL no_colour)
+      set(expect "REJECT=${esc}\\[")
+      set(environment "ENV=NO_COLOR=1")
+    endif()
+    add_test(NAME cli_tty_${case}
+             COMMAND ${CMAKE_COMMAND}
+                     "-DCOMMAND=${SYMCR_SCRIPT}@@-qec@@$<TARGET_FILE:symcr-cli> inspect ${files}/v0.ckpt@@/dev/null"
+                     -DEXPECT_EXIT=0 "-D${expect}" "-D${environment}"
+                     -P ${CMAKE_CURRENT_SOURCE_DIR}/run_cli.cmake)
+    set_tests_properties(cli_tty_${case} PROPERTIES FIXTURES_REQUIRED symcr_cli_files)
+  endforeach()
+endif()
+symcr_cli_test(version EXIT 0 ARGS --version EXPECT "symcr [0-9]+\\.[0-9]+\\.[0-9]+")

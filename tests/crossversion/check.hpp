@@ -1,0 +1,90 @@
+// Helpers for the cross-version programs: v0 saves, v1 restores and checks every value and the
+// report's decisions. v1's exit code is the test's verdict.
+#ifndef SYMCR_TESTS_CROSSVERSION_CHECK_HPP
+#define SYMCR_TESTS_CROSSVERSION_CHECK_HPP
+
+#include <cstdio>
+#include <cstring>
+
+#include <symcr/symcr.hpp>
+
+namespace xv {
+
+inline int failures = 0;
+
+#define XV_CHECK(condition)                                                        \
+  do {                                                                             \
+    if (!(condition)) {                                                            \
+      std::fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
+      ++xv::failures;                                                              \
+    }                                                                              \
+  } while (0)
+
+// Saves every root into `path`; v0's exit code.
+inline int save(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: %s <checkpoint>\n", argv[0]);
+    return 2;
+  }
+  symcr::Status status = symcr::checkpoint(argv[1]);
+  if (!status.ok()) {
+    std::fprintf(stderr, "checkpoint failed: %s\n", status.message());
+    return 1;
+  }
+  return 0;
+}
+
+inline symcr::Report restore(int argc, char** argv, bool strict = false) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: %s <checkpoint>\n", argv[0]);
+    symcr::Report report;
+    report.set_status(symcr::Status(symcr::Error::Io, "no checkpoint path"));
+    return report;
+  }
+  symcr::RestoreOptions options;
+  options.strict = strict;
+  symcr::Report report = symcr::restore(argv[1], options);
+  std::printf("%s\n", report.to_text().c_str());
+  return report;
+}
+
+inline const symcr::ReportEntry* entry(const symcr::Report& report, const char* path) {
+  for (const symcr::ReportEntry& e : report.entries())
+    if (e.path == path) return &e;
+  return nullptr;
+}
+
+// True when the report has an entry for `path` with `decision` (a path can have a plan-level
+// entry, e.g. converted int64 -> int8, and a value-level one, e.g. rejected: out of range).
+inline bool decided(const symcr::Report& report, const char* path, symcr::Decision decision) {
+  bool any = false;
+  for (const symcr::ReportEntry& e : report.entries()) {
+    if (e.path != path) continue;
+    any = true;
+    if (e.decision == decision) return true;
+  }
+  std::fprintf(stderr, any ? "'%s': no entry with decision %s\n" : "no report entry for '%s' (%s)\n",
+               path, symcr::decision_name(decision));
+  return false;
+}
+
+// A value restored plainly has no entry other than Restored ones.
+inline bool restored(const symcr::Report& report, const char* path) {
+  for (const symcr::ReportEntry& e : report.entries()) {
+    if (e.path == path && e.decision != symcr::Decision::Restored) {
+      std::fprintf(stderr, "'%s': decision %s, expected restored (%s)\n", path,
+                   symcr::decision_name(e.decision), e.detail.c_str());
+      return false;
+    }
+  }
+  return true;
+}
+
+inline int verdict() {
+  if (failures) std::fprintf(stderr, "%d check(s) failed\n", failures);
+  return failures ? 1 : 0;
+}
+
+}  // namespace xv
+
+#endif  // SYMCR_TESTS_CROSSVERSION_CHECK_HPP

@@ -1,0 +1,40 @@
+# Installs symcr into a temporary prefix, configures and builds the consumer against it, runs
+# it, then edits its header and checks that the build regenerates the checkpoint code.
+#   cmake -DBUILD=<symcr build dir> -DSOURCE=<this dir> -DWORK=<scratch dir>
+#         [-DGEN=<prebuilt symcr-gen>] [-DSANITIZE=ON] -P run.cmake
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE out)
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "failed (${result}): ${ARGN}\n${out}")
+  endif()
+endfunction()
+
+file(REMOVE_RECURSE "${WORK}")
+# Only what a consuming project needs (the "sdk" component), not the other tools.
+run(${CMAKE_COMMAND} --install "${BUILD}" --prefix "${WORK}/prefix" --component sdk)
+file(COPY "${SOURCE}/" DESTINATION "${WORK}/src" PATTERN run.cmake EXCLUDE)
+set(args -S "${WORK}/src" -B "${WORK}/build" -G Ninja "-DCMAKE_PREFIX_PATH=${WORK}/prefix")
+if(GEN)
+  list(APPEND args "-DSYMCR_GEN_EXECUTABLE=${GEN}")
+endif()
+if(SANITIZE)
+  list(APPEND args "-DCMAKE_CXX_FLAGS=-fsanitize=address,undefined"
+                   "-DCMAKE_EXE_LINKER_FLAGS=-fsanitize=address,undefined")
+endif()
+run(${CMAKE_COMMAND} ${args})
+run(${CMAKE_COMMAND} --build "${WORK}/build")
+run("${WORK}/build/hello" save "${WORK}/hello.ckpt")
+run("${WORK}/build/hello" restore "${WORK}/hello.ckpt")
+
+# Editing the annotated header must regenerate (the generator's depfile lists it).
+file(READ "${WORK}/src/state.hpp" header)
+string(REPLACE "// MARKER" "int added_by_test = 0;  // MARKER" header "${header}")
+file(WRITE "${WORK}/src/state.hpp" "${header}")
+run(${CMAKE_COMMAND} --build "${WORK}/build")
+file(GLOB_RECURSE schema "${WORK}/build/*/symcr_schema.cpp")
+file(READ "${schema}" generated)
+if(NOT generated MATCHES "\"added_by_test\"")
+  message(FATAL_ERROR "editing state.hpp did not regenerate ${schema}")
+endif()
+run("${WORK}/build/hello" restore "${WORK}/hello.ckpt")
+message("consumer built and ran against the installed symcr; header edit regenerated")

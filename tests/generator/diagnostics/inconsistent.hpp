@@ -1,0 +1,6 @@
+#include <symcr/symcr.hpp>
+
+struct Shared {
+  int value;
+  int scratch;
+};

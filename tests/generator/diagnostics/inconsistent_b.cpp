@@ -1,0 +1,3 @@
+#include "inconsistent.hpp"
+
+SYMCR_CHECKPOINT Shared second;

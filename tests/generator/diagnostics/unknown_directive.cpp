@@ -1,0 +1,3 @@
+// A misspelt directive.
+int altitude;
+#pragma symcr checkpiont(altitude)

@@ -1,0 +1,87 @@
+// CRC-32C: published vectors (RFC 3720 B.4, and the "123456789" check value), and the
+// hardware and portable implementations agreeing at every length and alignment.
+#include "crc32c.hpp"
+
+#include <cstdint>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+using symcr::detail::crc32c;
+using symcr::detail::crc32c_extend;
+using symcr::detail::crc32c_extend_hardware;
+using symcr::detail::crc32c_extend_portable;
+using symcr::detail::crc32c_hardware_available;
+
+struct Vector {
+  std::vector<std::uint8_t> bytes;
+  std::uint32_t crc;
+};
+
+std::vector<Vector> known_vectors() {
+  std::vector<Vector> vectors;
+  vectors.push_back({{}, 0x00000000u});
+  const char* check = "123456789";
+  vectors.push_back({{check, check + 9}, 0xE3069283u});
+  vectors.push_back({std::vector<std::uint8_t>(32, 0x00), 0x8A9136AAu});
+  vectors.push_back({std::vector<std::uint8_t>(32, 0xFF), 0x62A8AB43u});
+  std::vector<std::uint8_t> ascending(32), descending(32);
+  for (int i = 0; i < 32; ++i) {
+    ascending[i] = static_cast<std::uint8_t>(i);
+    descending[i] = static_cast<std::uint8_t>(31 - i);
+  }
+  vectors.push_back({ascending, 0x46DD794Eu});
+  vectors.push_back({descending, 0x113FDB5Cu});
+  return vectors;
+}
+
+TEST(Crc32c, KnownVectors) {
+  for (const Vector& v : known_vectors()) {
+    EXPECT_EQ(crc32c(v.bytes.data(), v.bytes.size()), v.crc);
+    EXPECT_EQ(crc32c_extend_portable(0, v.bytes.data(), v.bytes.size()), v.crc);
+    if (crc32c_hardware_available()) {
+      EXPECT_EQ(crc32c_extend_hardware(0, v.bytes.data(), v.bytes.size()), v.crc);
+    }
+  }
+}
+
+TEST(Crc32c, ExtendingEqualsOneCall) {
+  const char* text = "The quick brown fox jumps over the lazy dog";
+  const std::size_t n = std::strlen(text);
+  const std::uint32_t whole = crc32c(text, n);
+  for (std::size_t split = 0; split <= n; ++split) {
+    EXPECT_EQ(crc32c_extend(crc32c(text, split), text + split, n - split), whole) << split;
+  }
+}
+
+TEST(Crc32c, HardwareAndPortableAgreeAtEveryLengthAndAlignment) {
+  if (!crc32c_hardware_available()) GTEST_SKIP() << "no SSE4.2 on this CPU";
+  std::mt19937 random(20201);
+  std::vector<std::uint8_t> data(1024 + 8);
+  for (auto& byte : data) byte = static_cast<std::uint8_t>(random());
+  for (std::size_t offset = 0; offset < 8; ++offset) {
+    for (std::size_t size = 0; size <= 1024; size += (size < 64 ? 1 : 37)) {
+      const std::uint32_t seed = static_cast<std::uint32_t>(random());
+      ASSERT_EQ(crc32c_extend_hardware(seed, data.data() + offset, size),
+                crc32c_extend_portable(seed, data.data() + offset, size))
+          << "offset " << offset << " size " << size;
+    }
+  }
+}
+
+TEST(Crc32c, DetectsEverySingleBitFlip) {
+  std::vector<std::uint8_t> data(300);
+  for (std::size_t i = 0; i < data.size(); ++i) data[i] = static_cast<std::uint8_t>(i * 7);
+  const std::uint32_t clean = crc32c(data.data(), data.size());
+  for (std::size_t bit = 0; bit < data.size() * 8; ++bit) {
+    data[bit / 8] ^= static_cast<std::uint8_t>(1u << (bit % 8));
+    ASSERT_NE(crc32c(data.data(), data.size()), clean) << bit;
+    data[bit / 8] ^= static_cast<std::uint8_t>(1u << (bit % 8));
+  }
+}
+
+}  // namespace

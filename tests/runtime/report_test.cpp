@@ -1,0 +1,62 @@
+// Status, error and decision names, and the report's text and JSON forms.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "symcr/symcr.hpp"
+
+namespace {
+
+TEST(EngineStatus, FormatsAndTruncatesSafely) {
+  symcr::Status ok;
+  EXPECT_TRUE(ok.ok());
+  EXPECT_STREQ(ok.message(), "");
+  symcr::Status error(symcr::Error::Corrupt, "bad %s at %d", "field", 42);
+  EXPECT_FALSE(error.ok());
+  EXPECT_EQ(error.error(), symcr::Error::Corrupt);
+  EXPECT_STREQ(error.message(), "bad field at 42");
+  const std::string long_text(1000, 'x');
+  symcr::Status truncated(symcr::Error::Io, "%s", long_text.c_str());
+  EXPECT_EQ(std::string(truncated.message()), long_text.substr(0, 239));
+}
+
+TEST(EngineStatus, NamesEveryErrorAndDecision) {
+  EXPECT_STREQ(symcr::error_name(symcr::Error::None), "None");
+  EXPECT_STREQ(symcr::error_name(symcr::Error::Strict), "Strict");
+  EXPECT_STREQ(symcr::error_name(symcr::Error::TooLarge), "TooLarge");
+  EXPECT_STREQ(symcr::decision_name(symcr::Decision::Restored), "restored");
+  EXPECT_STREQ(symcr::decision_name(symcr::Decision::Kept), "kept");
+  EXPECT_STREQ(symcr::decision_name(symcr::Decision::Dropped), "dropped");
+  EXPECT_STREQ(symcr::decision_name(symcr::Decision::Converted), "converted");
+  EXPECT_STREQ(symcr::decision_name(symcr::Decision::Rejected), "rejected");
+}
+
+TEST(EngineReport, CountsAndAlignsText) {
+  symcr::Report report;
+  report.add("copter.yaw", symcr::Decision::Converted, "renamed from heading", false);
+  report.add("copter.mission.items[].lat", symcr::Decision::Restored, "", false);
+  report.add("copter.old", symcr::Decision::Dropped, "field removed in this build", true);
+  report.set_sequence(7);
+  EXPECT_EQ(report.count(symcr::Decision::Converted), 1u);
+  EXPECT_EQ(report.count(symcr::Decision::Kept), 0u);
+  const std::string text = report.to_text();
+  EXPECT_NE(text.find("copter.yaw                  converted   renamed from heading\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("copter.old                  dropped   * field removed in this build\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("sequence 7, status: ok\n"), std::string::npos) << text;
+}
+
+TEST(EngineReport, JsonEscapesEverything) {
+  symcr::Report report;
+  report.add("a\"b\\c\n\x01", symcr::Decision::Rejected, "bad \xff byte, ok \xc3\xa9", true);
+  report.set_status(symcr::Status(symcr::Error::Strict, "no \"way\""));
+  EXPECT_EQ(report.to_json(),
+            "{\"ok\":false,\"error\":\"Strict\",\"message\":\"no \\\"way\\\"\",\"sequence\":0,"
+            "\"entries\":[{\"path\":\"a\\\"b\\\\c\\n\\u0001\",\"decision\":\"rejected\","
+            "\"detail\":\"bad \\ufffd byte, ok \xc3\xa9\",\"lossy\":true}]}");
+}
+
+}  // namespace

@@ -1,0 +1,526 @@
+// The checkpoint store (docs/format.md §4): the ring, fallback past torn and corrupt slots,
+// a new build reading the previous build's checkpoints, geometry, durability and file safety.
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "crc32c.hpp"
+#include "file_test_schemas.hpp"
+#include "file_test_util.hpp"
+#include "little_endian.hpp"
+#include "symcr/symcr.hpp"
+
+// Counts every allocation through operator new in this test binary: the store's save() must
+// not allocate once warmed up (PRODUCT.md §5).
+// GCC cannot see that the replaced new and delete below are a matching pair.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+static std::atomic<std::uint64_t> g_allocations{0};
+void* operator new(std::size_t size) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size ? size : 1)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace file_tests {
+namespace {
+
+namespace le = symcr::detail::le;
+using symcr::Error;
+
+std::vector<std::uint8_t> state_a() {
+  std::vector<std::uint8_t> bytes = snapshot(copter_a);
+  const std::vector<std::uint8_t> telemetry = snapshot(telemetry_a);
+  bytes.insert(bytes.end(), telemetry.begin(), telemetry.end());
+  return bytes;
+}
+
+// Raw access to a store file, read through its header, to corrupt what a crash could.
+struct StoreFile {
+  std::string path;
+  std::vector<std::uint8_t> bytes;
+  explicit StoreFile(std::string p) : path(std::move(p)), bytes(read_file(path)) {}
+  std::uint32_t slot_count() const { return le::load32(bytes.data() + 12); }
+  std::uint32_t slot_size() const { return le::load32(bytes.data() + 16); }
+  std::uint32_t schema_area_size() const { return le::load32(bytes.data() + 20); }
+  std::uint64_t slots_offset() const { return le::load64(bytes.data() + 24); }
+  std::uint8_t* slot(std::uint32_t i) { return bytes.data() + slots_offset() + i * slot_size(); }
+  std::uint64_t sequence(std::uint32_t i) { return le::load64(slot(i) + 16); }
+  std::size_t record_size(std::uint32_t i) {
+    return 56 + le::load32(slot(i) + 40) + le::load32(slot(i) + 44);
+  }
+  std::uint32_t slot_with_sequence(std::uint64_t sequence) {
+    for (std::uint32_t i = 0; i < slot_count(); ++i) {
+      if (std::memcmp(slot(i), "SYMCRCKP", 8) == 0 && this->sequence(i) == sequence) return i;
+    }
+    ADD_FAILURE() << "no slot holds sequence " << sequence;
+    return 0;
+  }
+  void reseal(std::uint32_t i) {
+    le::store32(slot(i) + 48, 0);
+    le::store32(slot(i) + 48, symcr::detail::crc32c(slot(i), record_size(i)));
+  }
+  void write() const { write_file(path, bytes); }
+};
+
+class StoreTest : public ::testing::Test {
+ protected:
+  TempDir dir;
+  std::string path = dir.file("copter.store");
+  symcr::StoreOptions options;
+
+  void open(symcr::Store& store, const symcr::Schema& schema = schema_a) {
+    const symcr::Status status = symcr::Store::open(path.c_str(), schema, options, store);
+    ASSERT_TRUE(status.ok()) << status.message();
+  }
+  // Opens, saves seeds first..last (sequences 1..n), closes.
+  void save_seeds(int first, int last) {
+    symcr::Store store;
+    open(store);
+    for (int seed = first; seed <= last; ++seed) {
+      fill_a(seed);
+      const symcr::Status status = store.save();
+      ASSERT_TRUE(status.ok()) << status.message();
+    }
+  }
+  symcr::Report restore_latest(const symcr::Schema& schema = schema_a) {
+    symcr::Store store;
+    open(store, schema);
+    return store.restore_latest();
+  }
+};
+
+void expect_a(int seed) {
+  EXPECT_EQ(copter_a.ticks, 1000 + seed);
+  EXPECT_EQ(copter_a.mission.items[2].speed, seed * 10 + 2);
+  EXPECT_EQ(copter_a.armed_ms, 5000000000ull + static_cast<std::uint64_t>(seed));
+  EXPECT_EQ(telemetry_a.frames, static_cast<std::uint32_t>(7 * seed));
+}
+
+TEST_F(StoreTest, CreatesAPreallocatedFileWithMode0600) {
+  ScopedUmask no_mask(0);
+  symcr::Store store;
+  open(store);
+  EXPECT_TRUE(store.is_open());
+  EXPECT_EQ(store.last_sequence(), 0u);
+  EXPECT_EQ(permission_bits(path), 0600u);
+  const StoreFile file(path);
+  EXPECT_EQ(std::memcmp(file.bytes.data(), "SYMCRSTO", 8), 0);
+  EXPECT_EQ(le::load16(file.bytes.data() + 8), 1u);
+  EXPECT_EQ(file.slot_count(), 4u);
+  EXPECT_EQ(file.slot_size(), 65536u);
+  EXPECT_EQ(file.slots_offset() % 4096, 0u);
+  EXPECT_EQ(file.slots_offset(), 4096u + 2u * file.schema_area_size());
+  EXPECT_EQ(le::load32(file.bytes.data() + 32), symcr::detail::crc32c(file.bytes.data(), 32));
+  EXPECT_EQ(file.bytes.size(), file.slots_offset() + 4u * 65536u);
+  struct stat info {};
+  ASSERT_EQ(::stat(path.c_str(), &info), 0);
+  EXPECT_GE(static_cast<std::uint64_t>(info.st_blocks) * 512, file.bytes.size());  // allocated
+}
+
+TEST_F(StoreTest, EmptyStoreHasNoValidSlot) {
+  fill_a(1);
+  const auto before = state_a();
+  const symcr::Report report = restore_latest();
+  EXPECT_EQ(report.status().error(), Error::NoValidSlot);
+  EXPECT_EQ(state_a(), before);
+}
+
+TEST_F(StoreTest, SavesWrapTheRingAndRestoreTheNewest) {
+  {
+    symcr::Store store;
+    open(store);
+    for (int seed = 1; seed <= 10; ++seed) {
+      fill_a(seed);
+      ASSERT_TRUE(store.save().ok());
+      EXPECT_EQ(store.last_sequence(), static_cast<std::uint64_t>(seed));
+    }
+    scramble_a();
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(report.sequence(), 10u);
+    expect_a(10);
+  }
+  // The ring holds the last four, one per slot.
+  StoreFile file(path);
+  std::vector<std::uint64_t> sequences;
+  for (std::uint32_t i = 0; i < 4; ++i) sequences.push_back(file.sequence(i));
+  std::sort(sequences.begin(), sequences.end());
+  EXPECT_EQ(sequences, (std::vector<std::uint64_t>{7, 8, 9, 10}));
+  // Each slot costs the payload plus the 56-byte header: the schema is shared.
+  EXPECT_LT(file.record_size(file.slot_with_sequence(10)), 56u + 200u);
+
+  // A reopened store continues the sequence.
+  symcr::Store store;
+  open(store);
+  EXPECT_EQ(store.last_sequence(), 10u);
+  fill_a(11);
+  ASSERT_TRUE(store.save().ok());
+  EXPECT_EQ(store.last_sequence(), 11u);
+  scramble_a();
+  const symcr::Report report = store.restore_latest();
+  ASSERT_TRUE(report.ok());
+  EXPECT_EQ(report.sequence(), 11u);
+  expect_a(11);
+}
+
+TEST_F(StoreTest, FallsBackPastABitFlipInTheNewestSlot) {
+  save_seeds(1, 6);
+  StoreFile file(path);
+  const std::uint32_t newest = file.slot_with_sequence(6);
+  file.slot(newest)[60] ^= 0x04;
+  file.write();
+  scramble_a();
+  const symcr::Report report = restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 5u);
+  expect_a(5);
+}
+
+TEST_F(StoreTest, FallsBackPastATornNewestSlot) {
+  save_seeds(1, 6);
+  {
+    // Torn write: the second half of the record never reached the disk.
+    StoreFile file(path);
+    const std::uint32_t newest = file.slot_with_sequence(6);
+    const std::size_t half = file.record_size(newest) / 2;
+    std::memset(file.slot(newest) + half, 0, file.slot_size() - half);
+    file.write();
+  }
+  scramble_a();
+  symcr::Report report = restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 5u);
+  expect_a(5);
+  {
+    // Torn the other way: the first half of the slot zeroed, header included.
+    StoreFile file(path);
+    const std::uint32_t slot5 = file.slot_with_sequence(5);
+    std::memset(file.slot(slot5), 0, file.slot_size() / 2);
+    file.write();
+  }
+  scramble_a();
+  report = restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 4u);
+  expect_a(4);
+}
+
+TEST_F(StoreTest, SaveAfterFallbackContinuesPastTheHighestValidSequence) {
+  save_seeds(1, 3);
+  StoreFile file(path);
+  file.slot(file.slot_with_sequence(3))[70] ^= 1;
+  file.write();
+  symcr::Store store;
+  open(store);
+  EXPECT_EQ(store.last_sequence(), 2u);
+  fill_a(9);
+  ASSERT_TRUE(store.save().ok());
+  EXPECT_EQ(store.last_sequence(), 3u);
+  // The corrupt slot was reused first: sequences 1, 2, 3 (new) remain.
+  StoreFile after(path);
+  EXPECT_EQ(after.slot_with_sequence(3), file.slot_with_sequence(3));
+  scramble_a();
+  const symcr::Report report = store.restore_latest();
+  ASSERT_TRUE(report.ok());
+  EXPECT_EQ(report.sequence(), 3u);
+  expect_a(9);
+}
+
+TEST_F(StoreTest, AllSlotsCorruptIsNoValidSlotAndChangesNothing) {
+  save_seeds(1, 4);
+  StoreFile file(path);
+  for (std::uint32_t i = 0; i < 4; ++i) file.slot(i)[56 + i] ^= 0x80;
+  file.write();
+  scramble_a();
+  const auto before = state_a();
+  const symcr::Report report = restore_latest();
+  EXPECT_EQ(report.status().error(), Error::NoValidSlot);
+  EXPECT_NE(std::string(report.status().message()).find("4 corrupt"), std::string::npos)
+      << report.status().message();
+  EXPECT_EQ(state_a(), before);
+}
+
+TEST_F(StoreTest, AValidSlotThatRestoreRejectsFallsBackToTheNextOne) {
+  save_seeds(1, 3);
+  StoreFile file(path);
+  const std::uint32_t newest = file.slot_with_sequence(3);
+  // A bool of 7 passes the CRC once resealed, but no writer produces it: the engine's full
+  // decode rejects it as corrupt before writing anything.
+  file.slot(newest)[56 + kPayloadOffsetOfActiveA] = 7;
+  file.reseal(newest);
+  file.write();
+  scramble_a();
+  const symcr::Report report = restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 2u);
+  expect_a(2);
+}
+
+TEST_F(StoreTest, AFutureVersionSlotIsSkipped) {
+  save_seeds(1, 3);
+  StoreFile file(path);
+  const std::uint32_t newest = file.slot_with_sequence(3);
+  le::store16(file.slot(newest) + 8, 2);
+  file.reseal(newest);
+  file.write();
+  scramble_a();
+  const symcr::Report report = restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 2u);
+}
+
+TEST_F(StoreTest, SaveTooLargeForASlotWritesNothing) {
+  options.slot_size = 1024;
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), blob_schema, options, store).ok());
+    const std::vector<std::uint8_t> before = read_file(path);
+    const symcr::Status status = store.save();
+    EXPECT_EQ(status.error(), Error::TooLarge);
+    EXPECT_NE(std::string(status.message()).find("1024"), std::string::npos);
+    EXPECT_EQ(read_file(path), before);
+    EXPECT_EQ(store.last_sequence(), 0u);
+  }
+}
+
+TEST_F(StoreTest, NewBuildRestoresThePreviousBuildsCheckpointAndKeepsItUntilItSaves) {
+  save_seeds(1, 3);  // build A: sequences 1..3
+  {
+    // Build B starts: the newest checkpoint is A's, restored by names into B's layout.
+    copter_b = CopterB{};
+    copter_b.geofence = 77;
+    symcr::Store store;
+    open(store, schema_b);
+    EXPECT_EQ(store.last_sequence(), 3u);
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(report.sequence(), 3u);
+    EXPECT_EQ(copter_b.ticks, 1003);  // int32 -> int64
+    EXPECT_EQ(copter_b.mode, FlightMode::Auto);
+    EXPECT_EQ(copter_b.mission.items[2].speed, 32);
+    EXPECT_EQ(copter_b.battery, 15.5f - 3 * 0.125f);
+    EXPECT_EQ(copter_b.geofence, 77);  // added: kept
+    EXPECT_EQ(telemetry_b.frames, 21u);
+
+    // B's first save must not destroy A's schema: A's checkpoints stay restorable.
+    copter_b.ticks = 5000;
+    ASSERT_TRUE(store.save().ok());
+    EXPECT_EQ(store.last_sequence(), 4u);
+  }
+  {
+    StoreFile file(path);
+    file.slot(file.slot_with_sequence(4))[60] ^= 1;  // B's only checkpoint torn
+    file.write();
+  }
+  copter_b.ticks = 0;
+  symcr::Report report = restore_latest(schema_b);
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 3u);  // A's, through A's schema area
+  EXPECT_EQ(copter_b.ticks, 1003);
+
+  // B keeps saving; reopened, B's newest is what comes back.
+  {
+    symcr::Store store;
+    open(store, schema_b);
+    copter_b.ticks = 6000;
+    ASSERT_TRUE(store.save().ok());
+    EXPECT_EQ(store.last_sequence(), 4u);
+  }
+  copter_b.ticks = 0;
+  report = restore_latest(schema_b);
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 4u);
+  EXPECT_EQ(copter_b.ticks, 6000);
+}
+
+TEST_F(StoreTest, AThirdBuildReplacesOnlyTheOlderSchemaArea) {
+  // Build C: B's types with only the "copter" root, so its schema (and hash) differ.
+  const symcr::Schema schema_c{tables::types_b, tables::kTypeCount, tables::roots_b, 1};
+  save_seeds(1, 2);  // A: 1, 2
+  {
+    symcr::Store store;
+    open(store, schema_b);
+    copter_b.ticks = 3333;
+    ASSERT_TRUE(store.save().ok());  // B: 3, its schema beside A's
+  }
+  {
+    symcr::Store store;
+    open(store, schema_c);
+    copter_b.ticks = 4444;
+    ASSERT_TRUE(store.save().ok());  // C: 4, its schema replaces A's, not B's (the newest)
+  }
+  StoreFile file(path);
+  file.slot(file.slot_with_sequence(4))[60] ^= 1;
+  file.write();
+  copter_b.ticks = 0;
+  symcr::Report report = restore_latest(schema_c);
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 3u);  // B's checkpoint survived C's first save
+  EXPECT_EQ(copter_b.ticks, 3333);
+
+  // A's checkpoints went with A's schema area: C's save reused the first of them (an invalid
+  // slot is the oldest), the other is left with an unknown schema.
+  file.slot(file.slot_with_sequence(3))[60] ^= 1;
+  file.write();
+  report = restore_latest(schema_c);
+  EXPECT_EQ(report.status().error(), Error::NoValidSlot);
+  EXPECT_NE(std::string(report.status().message())
+                .find("1 empty, 2 corrupt or torn, 1 with an unknown schema"),
+            std::string::npos)
+      << report.status().message();
+}
+
+TEST_F(StoreTest, FdatasyncDurability) {
+  options.durability = symcr::Durability::Fdatasync;
+  save_seeds(1, 3);
+  scramble_a();
+  const symcr::Report report = restore_latest();
+  ASSERT_TRUE(report.ok());
+  EXPECT_EQ(report.sequence(), 3u);
+  expect_a(3);
+}
+
+TEST_F(StoreTest, SaveAllocatesNothingAfterTheFirstCall) {
+  symcr::Store store;
+  open(store);
+  fill_a(1);
+  ASSERT_TRUE(store.save().ok());
+  ASSERT_TRUE(store.save().ok());
+  const std::uint64_t before = g_allocations.load();
+  for (int seed = 2; seed < 20; ++seed) {
+    fill_a(seed);
+    ASSERT_TRUE(store.save().ok());
+  }
+  EXPECT_EQ(g_allocations.load(), before);
+}
+
+TEST_F(StoreTest, DifferentGeometryWithCheckpointsIsRefused) {
+  save_seeds(1, 2);
+  const std::vector<std::uint8_t> before = read_file(path);
+  options.slots = 8;
+  symcr::Store store;
+  const symcr::Status status = symcr::Store::open(path.c_str(), schema_a, options, store);
+  EXPECT_EQ(status.error(), Error::Incompatible);
+  EXPECT_NE(std::string(status.message()).find("4 slots"), std::string::npos) << status.message();
+  EXPECT_FALSE(store.is_open());
+  EXPECT_EQ(read_file(path), before);
+}
+
+TEST_F(StoreTest, DifferentGeometryWithoutCheckpointsIsReinitialised) {
+  { symcr::Store store; open(store); }
+  options.slots = 3;
+  options.slot_size = 8192;
+  symcr::Store store;
+  open(store);
+  const StoreFile file(path);
+  EXPECT_EQ(file.slot_count(), 3u);
+  EXPECT_EQ(file.slot_size(), 8192u);
+  EXPECT_EQ(file.bytes.size(), file.slots_offset() + 3u * 8192u);
+}
+
+TEST_F(StoreTest, InvalidOptionsAreRefused) {
+  symcr::Store store;
+  options.slots = 1;
+  EXPECT_FALSE(symcr::Store::open(path.c_str(), schema_a, options, store).ok());
+  options.slots = 4;
+  options.slot_size = 16;
+  EXPECT_FALSE(symcr::Store::open(path.c_str(), schema_a, options, store).ok());
+  EXPECT_EQ(dir.entries(), std::vector<std::string>{});
+}
+
+TEST_F(StoreTest, AFileThatIsNotAStoreIsLeftAlone) {
+  write_text(path, std::string(5000, 'x'));
+  symcr::Store store;
+  const symcr::Status status = symcr::Store::open(path.c_str(), schema_a, options, store);
+  EXPECT_EQ(status.error(), Error::NotACheckpoint);
+  EXPECT_EQ(read_file(path), std::vector<std::uint8_t>(5000, 'x'));
+}
+
+TEST_F(StoreTest, CorruptStoreHeaderIsRefused) {
+  save_seeds(1, 1);
+  StoreFile file(path);
+  file.bytes[13] ^= 1;  // slot_count, under the header CRC
+  file.write();
+  symcr::Store store;
+  EXPECT_EQ(symcr::Store::open(path.c_str(), schema_a, options, store).error(), Error::Checksum);
+}
+
+TEST_F(StoreTest, AFutureStoreVersionIsRefusedAndLeftAlone) {
+  save_seeds(1, 1);
+  StoreFile file(path);
+  le::store16(file.bytes.data() + 8, 2);
+  le::store32(file.bytes.data() + 32, symcr::detail::crc32c(file.bytes.data(), 32));
+  file.write();
+  symcr::Store store;
+  const symcr::Status status = symcr::Store::open(path.c_str(), schema_a, options, store);
+  EXPECT_EQ(status.error(), Error::FutureVersion);
+  EXPECT_NE(std::string(status.message()).find("version 2"), std::string::npos)
+      << status.message();
+  EXPECT_EQ(read_file(path), file.bytes);
+}
+
+TEST_F(StoreTest, AnEmptyFileIsInitialised) {
+  write_text(path, "");  // e.g. a crash between creating and initialising
+  symcr::Store store;
+  open(store);
+  fill_a(2);
+  ASSERT_TRUE(store.save().ok());
+  scramble_a();
+  ASSERT_TRUE(store.restore_latest().ok());
+  expect_a(2);
+}
+
+TEST_F(StoreTest, ASymlinkAtThePathIsNotFollowed) {
+  const std::string victim = dir.file("victim");
+  write_text(victim, "precious");
+  ASSERT_EQ(::symlink(victim.c_str(), path.c_str()), 0);
+  symcr::Store store;
+  const symcr::Status status = symcr::Store::open(path.c_str(), schema_a, options, store);
+  EXPECT_EQ(status.error(), Error::Io);
+  EXPECT_NE(std::string(status.message()).find("symbolic link"), std::string::npos);
+  const std::vector<std::uint8_t> precious = read_file(victim);
+  EXPECT_EQ(std::string(precious.begin(), precious.end()), "precious");
+  EXPECT_TRUE(is_symlink(path));
+}
+
+TEST_F(StoreTest, OneOpenStorePerFile) {
+  symcr::Store first;
+  open(first);
+  symcr::Store second;
+  const symcr::Status status = symcr::Store::open(path.c_str(), schema_a, options, second);
+  EXPECT_EQ(status.error(), Error::Io);
+  EXPECT_FALSE(second.is_open());
+  first.close();
+  open(second);
+  EXPECT_TRUE(second.is_open());
+}
+
+TEST_F(StoreTest, MovedStoreKeepsWorking) {
+  symcr::Store store;
+  open(store);
+  symcr::Store moved(std::move(store));
+  EXPECT_FALSE(store.is_open());  // NOLINT(bugprone-use-after-move): defined as closed
+  fill_a(4);
+  ASSERT_TRUE(moved.save().ok());
+  symcr::Store assigned;
+  assigned = std::move(moved);
+  scramble_a();
+  const symcr::Report report = assigned.restore_latest();
+  ASSERT_TRUE(report.ok());
+  expect_a(4);
+  EXPECT_EQ(store.save().error(), Error::Io);  // closed stores refuse cleanly
+}
+
+}  // namespace
+}  // namespace file_tests
