@@ -4,7 +4,6 @@
 #include <llvm/Support/CommandLine.h>
 #include <llvm/Support/raw_ostream.h>
 
-#include <cstdio>
 #include <optional>
 #include <string>
 

@@ -318,46 +318,70 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
     return OS.str();
   }
 
-  OS << "#include <cstddef>\n\n#include <symcr/ops.hpp>\n\n";
-  bool NeedsAccess = false;
-  for (std::uint32_t I : Roots)
-    NeedsAccess |= Program.Roots[I].AddressPrelude.find("export_address") !=
-                   std::string::npos;
-  if (NeedsAccess)
-    OS << "namespace symcr_gen_access {\n"
-          "template <typename Tag, auto* Target>\n"
-          "struct export_address {\n"
-          "  friend void* address(Tag) {\n"
-          "    return const_cast<void*>(static_cast<const volatile "
-          "void*>(Target));\n"
-          "  }\n"
-          "};\n"
-          "}  // namespace symcr_gen_access\n";
+  OS << "#include <cstddef>\n#include <type_traits>\n\n#include "
+        "<symcr/ops.hpp>\n\n";
+  // Explicit instantiations may name private members and types (the
+  // access-check exemption of [temp.spec]); friend functions defined by them
+  // export a root's address or a type, so private nested types and private
+  // static members need no edit of the class.
+  OS << "namespace symcr_gen_access {\n"
+        "template <typename Tag, auto* Target>\n"
+        "struct export_address {\n"
+        "  friend void* address(Tag) {\n"
+        "    return const_cast<void*>(static_cast<const volatile "
+        "void*>(Target));\n"
+        "  }\n"
+        "};\n"
+        "template <typename Tag, typename T>\n"
+        "struct export_type {\n"
+        "  friend auto type_of(Tag) { return static_cast<T*>(nullptr); }\n"
+        "};\n";
+  auto IsScalar = [](const TypeModel &T) {
+    return T.Kind == symcr::Kind::Bool || T.Kind == symcr::Kind::Int ||
+           T.Kind == symcr::Kind::UInt || T.Kind == symcr::Kind::Float;
+  };
+  for (std::uint32_t I : Home) {
+    const TypeModel &T = Program.Types[I];
+    if (T.Spelling.empty() || IsScalar(T))
+      continue;
+    OS << "struct type_tag_" << I << " { friend auto type_of(type_tag_" << I
+       << "); };\n"
+       << "template struct export_type<type_tag_" << I << ", " << T.Spelling
+       << ">;\n";
+  }
+  OS << "}  // namespace symcr_gen_access\n\n";
   OS << "namespace symcr_gen {\n";
   for (std::uint32_t I : Home) {
     const TypeModel &T = Program.Types[I];
     if (T.Spelling.empty())
       continue;
-    OS << "static_assert(sizeof(" << T.Spelling << ") == " << T.Size
-       << " && alignof(" << T.Spelling << ") == " << T.Align
-       << ", \"symcr-gen: layout of " << T.Name
+    std::string Type = T.Spelling;
+    if (!IsScalar(T)) {
+      Type = "type_" + std::to_string(I);
+      OS << "// " << T.Name << "\n"
+         << "using " << Type
+         << " = std::remove_pointer_t<decltype(type_of(symcr_gen_access::"
+            "type_tag_"
+         << I << "{}))>;\n";
+    }
+    OS << "static_assert(sizeof(" << Type << ") == " << T.Size << " && alignof("
+       << Type << ") == " << T.Align << ", \"symcr-gen: layout of " << T.Name
        << " differs from this compiler's\");\n";
     for (const FieldModel &F : T.Fields)
       if (!F.OffsetCheckMember.empty())
-        OS << "static_assert(offsetof(" << T.Spelling << ", "
-           << F.OffsetCheckMember << ") == " << F.Offset
-           << ", \"symcr-gen: offset of " << T.Name << "::" << F.Name
-           << " differs\");\n";
+        OS << "static_assert(offsetof(" << Type << ", " << F.OffsetCheckMember
+           << ") == " << F.Offset << ", \"symcr-gen: offset of " << T.Name
+           << "::" << F.Name << " differs\");\n";
     if (T.Ops != OpsKind::None)
       OS << "extern const symcr::" << opsTableType(T.Ops) << " ops_" << I
          << ";\n"
          << "const symcr::" << opsTableType(T.Ops) << " ops_" << I
-         << " = symcr::ops::" << opsTemplate(T.Ops) << "<" << T.Spelling
+         << " = symcr::ops::" << opsTemplate(T.Ops) << "<" << Type
          << ">::table;\n";
     if (hasLifecycle(T))
       OS << "extern const symcr::Lifecycle lifecycle_" << I << ";\n"
          << "const symcr::Lifecycle lifecycle_" << I
-         << " = symcr::ops::lifecycle<" << T.Spelling << ">::table;\n";
+         << " = symcr::ops::lifecycle<" << Type << ">::table;\n";
   }
   OS << "}  // namespace symcr_gen\n\n";
   for (std::uint32_t I : Roots)

@@ -73,6 +73,11 @@ static llvm::cl::opt<bool>
 static llvm::cl::opt<std::string>
     ReportFile("report-file", llvm::cl::desc("Write the report to this file"),
                llvm::cl::value_desc("file"), llvm::cl::cat(Category));
+static llvm::cl::opt<unsigned>
+    Jobs("j",
+         llvm::cl::desc("Parse this many sources in parallel (default: the "
+                        "number of CPUs)"),
+         llvm::cl::init(0), llvm::cl::cat(Category));
 static llvm::cl::opt<bool>
     Timing("time", llvm::cl::desc("Print the time spent per source"),
            llvm::cl::cat(Category));
@@ -354,6 +359,10 @@ int main(int argc, const char **argv) {
     return 1;
   }
 
+  if (Program.Roots.empty())
+    Diags.warning(Location(),
+                  "no roots: nothing is annotated with SYMCR_CHECKPOINT "
+                  "or a checkpoint directive; the schema is empty");
   std::string ReportText = renderReport(Program);
   if (Report)
     llvm::outs() << ReportText;

@@ -191,18 +191,26 @@ class Encoder {
   std::uint32_t size_of(std::uint32_t type) const { return types_[type].size; }
 
   // ---- output --------------------------------------------------------------------------
+  // out_ holds pos_ bytes written plus a little zero-filled slack (std::vector cannot grow
+  // without value-initialising). The vector's capacity grows geometrically on its own, so the
+  // slack only bounds how much is zero-filled ahead of use; large copies are appended without
+  // any zero-fill.
+  static constexpr std::size_t kSlack = 1024;
+  static constexpr std::size_t kBulk = 4096;  // put_bytes at least this large: append directly
   std::uint8_t* grow(std::size_t n) {
-    if (__builtin_expect(out_.size() - pos_ < n, 0)) {
-      std::size_t size = out_.size() * 2;
-      if (size < pos_ + n) size = pos_ + n;
-      if (size < 256) size = 256;
-      out_.resize(size);
-    }
+    if (__builtin_expect(out_.size() - pos_ < n, 0)) out_.resize(pos_ + n + kSlack);
     std::uint8_t* at = out_.data() + pos_;
     pos_ += n;
     return at;
   }
   void put_bytes(const void* data, std::size_t n) {
+    if (n >= kBulk) {
+      out_.resize(pos_);  // drops the slack: trivially, nothing is freed
+      const auto* bytes = static_cast<const std::uint8_t*>(data);
+      out_.insert(out_.end(), bytes, bytes + n);
+      pos_ += n;
+      return;
+    }
     if (n) std::memcpy(grow(n), data, n);
   }
   void put_u8(std::uint8_t v) { *grow(1) = v; }
@@ -224,8 +232,14 @@ class Encoder {
   void encode(std::uint32_t type_index, const std::uint8_t* p) {
     const std::uint32_t first_run = facts_.flat_first[type_index];
     if (first_run != kNotFlat) {
-      std::uint8_t* at = grow(facts_.flat_wire_size[type_index]);
       const FlatRun* run = facts_.flat_runs.data() + first_run;
+      if (__builtin_expect(facts_.flat_wire_size[type_index] >= kBulk, 0)) {
+        for (std::uint32_t r = facts_.flat_count[type_index]; r > 0; --r, ++run) {
+          put_bytes(p + run->offset, run->length);
+        }
+        return;
+      }
+      std::uint8_t* at = grow(facts_.flat_wire_size[type_index]);
       for (std::uint32_t r = facts_.flat_count[type_index]; r > 0; --r, ++run) {
         std::memcpy(at, p + run->offset, run->length);
         at += run->length;
@@ -408,6 +422,22 @@ class Encoder {
     const std::size_t count = ops->size(p);
     if (count > 0xFFFFFFFFu) return fail_unsupported("a container with more than 2^32 elements");
     put_u32(static_cast<std::uint32_t>(count));
+    // Contiguous fixed-width little-endian scalars (wire width == size): one block.
+    if (ops->contiguous_data && count > 0 && depth_ < kMaxDepth) {
+      const TypeInfo& element = types_[type.element];
+      if (element.kind == Kind::Int || element.kind == Kind::UInt || element.kind == Kind::Enum ||
+          (element.kind == Kind::Float && element.size != 16)) {
+        const auto* data = static_cast<const std::uint8_t*>(ops->contiguous_data(p));
+        const std::uint32_t ordinal = container_ordinal_++;
+        if (track_regions_) {
+          const auto start = reinterpret_cast<std::uintptr_t>(data);
+          add_region(Region{start, start + count * element.size, type.element,
+                            RegionKind::ContainerRun, ordinal, 0, element.size, 0, 0});
+        }
+        put_bytes(data, count * element.size);
+        return;
+      }
+    }
     ContainerWalk walk{this, type.element, container_ordinal_++, size_of(type.element), 0, 0, 0, 0};
     ops->for_each(p, &Encoder::visit_element, &walk);
     if (ok() && walk.index != count) {

@@ -54,6 +54,7 @@ class Planner {
       }
     }
     build_report();
+    for (PlanNode& n : plan_.nodes) compute_copy(n);
     if (too_deep_) {
       plan_.status = Status(Error::Corrupt, "invalid schema: types nest deeper than %d levels",
                             kMaxPlanDepth);
@@ -455,6 +456,101 @@ class Planner {
   }
 
   // ---- the schema-level report ---------------------------------------------------------
+  // ---- copy-only programs (restore's fast path) ------------------------------------------
+  static constexpr std::size_t kMaxCopyRuns = 512;
+  static constexpr std::size_t kMaxCopyBools = 1024;
+  static constexpr std::uint32_t kMaxCopyWire = 1u << 24;
+
+  static void add_run(PlanNode& n, std::uint64_t wire, std::uint64_t dst, std::uint64_t length) {
+    if (length == 0) return;
+    if (!n.copy_runs.empty()) {
+      CopyRun& last = n.copy_runs.back();
+      if (std::uint64_t{last.wire} + last.length == wire &&
+          std::uint64_t{last.dst} + last.length == dst) {
+        last.length += static_cast<std::uint32_t>(length);
+        return;
+      }
+    }
+    n.copy_runs.push_back(CopyRun{static_cast<std::uint32_t>(wire),
+                                  static_cast<std::uint32_t>(dst),
+                                  static_cast<std::uint32_t>(length)});
+  }
+
+  // Appends `child`'s program at (wire, dst); false when `n` grows past the limits.
+  static bool append_copy(PlanNode& n, const PlanNode& child, std::uint64_t wire,
+                          std::uint64_t dst) {
+    if (wire + child.copy_wire > kMaxCopyWire || dst + kMaxCopyWire > 0xFFFFFFFFu) return false;
+    for (std::uint32_t offset : child.copy_bools) {
+      if (n.copy_bools.size() >= kMaxCopyBools) return false;
+      n.copy_bools.push_back(static_cast<std::uint32_t>(wire + offset));
+    }
+    for (const CopyRun& run : child.copy_runs) {
+      add_run(n, wire + run.wire, dst + run.dst, run.length);
+      if (n.copy_runs.size() > kMaxCopyRuns) return false;
+    }
+    return true;
+  }
+
+  void compute_copy(PlanNode& n) {
+    if (copy_state_.count(&n)) return;
+    copy_state_[&n] = 1;  // in progress: a (malformed) cycle is not copy-only
+    n.copy_only = build_copy(n);
+    if (!n.copy_only) {
+      n.copy_wire = 0;
+      n.copy_runs.clear();
+      n.copy_runs.shrink_to_fit();
+      n.copy_bools.clear();
+      n.copy_bools.shrink_to_fit();
+    }
+  }
+
+  bool child_copy_only(const PlanNode* child) {
+    if (!child || child->validated) return false;
+    auto& mutable_child = const_cast<PlanNode&>(*child);  // a node of plan_.nodes
+    compute_copy(mutable_child);
+    return child->copy_only;
+  }
+
+  bool build_copy(PlanNode& n) {
+    if (n.reader == kNoType || n.writer >= w_.type_count) return false;
+    const TypeInfo& wt = w_.types[n.writer];
+    switch (n.action) {
+      case Action::Scalar:
+        if (!n.identical || (wt.kind == Kind::Float && wt.size == 16)) return false;
+        if (wt.kind == Kind::Bool) n.copy_bools.push_back(0);
+        n.copy_wire = wt.size;
+        add_run(n, 0, 0, wt.size);
+        return true;
+      case Action::Union:
+        n.copy_wire = wt.size;
+        add_run(n, 0, 0, wt.size);
+        return true;
+      case Action::Struct: {
+        std::uint64_t wire = 0;
+        for (const FieldPlan& field : n.fields) {
+          if (field.reader_field == kNoType || field.bit_width || field.has_range) return false;
+          if (!child_copy_only(field.node)) return false;
+          if (!append_copy(n, *field.node, wire, field.reader_offset)) return false;
+          wire += field.node->copy_wire;
+        }
+        n.copy_wire = static_cast<std::uint32_t>(wire);
+        return true;
+      }
+      case Action::Array: {
+        if (wt.count != n.reader_count || !child_copy_only(n.element)) return false;
+        const PlanNode& e = *n.element;
+        if (e.copy_wire == 0 || wt.count > kMaxCopyWire / e.copy_wire) return false;
+        for (std::uint64_t i = 0; i < wt.count; ++i) {
+          if (!append_copy(n, e, i * e.copy_wire, i * n.reader_stride)) return false;
+        }
+        n.copy_wire = static_cast<std::uint32_t>(wt.count * e.copy_wire);
+        return true;
+      }
+      default:
+        return false;
+    }
+  }
+
   void build_report() {
     for (std::uint32_t wr = 0; wr < w_.root_count; ++wr) {
       const RootPlan& root = plan_.roots[wr];
@@ -564,6 +660,7 @@ class Planner {
   const Schema& w_;
   const Schema& r_;
   std::map<std::pair<std::uint32_t, std::uint32_t>, PlanNode*> memo_;
+  std::map<const PlanNode*, int> copy_state_;  // copy-only programs computed or under way
   std::vector<const PlanNode*> stack_;
   std::vector<const PlanNode*> pointees_;
   int depth_ = 0;

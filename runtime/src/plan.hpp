@@ -53,6 +53,13 @@ struct EnumMapping {
   std::int64_t reader_value;
 };
 
+// A byte copy of a copy-only value: `length` wire bytes at `wire` go to `dst` in the reader.
+struct CopyRun {
+  std::uint32_t wire;
+  std::uint32_t dst;
+  std::uint32_t length;
+};
+
 struct PlanNode {
   std::uint32_t writer = kNoType;
   std::uint32_t reader = kNoType;
@@ -74,6 +81,14 @@ struct PlanNode {
 
   bool validated = false;    // reader type has a symcr_validate
   bool flat_reader = false;  // reader type is plain bytes (staged by copy)
+
+  // Copy-only (structs, arrays, identical scalars and unions all the way down: every field
+  // kept, no conversion, range, bit-field or nested validator): restoring it is checking the
+  // bools and copying `copy_runs`, over exactly `copy_wire` payload bytes.
+  bool copy_only = false;
+  std::uint32_t copy_wire = 0;
+  std::vector<CopyRun> copy_runs;
+  std::vector<std::uint32_t> copy_bools;  // wire offsets of bools, each must be 0 or 1
 };
 
 struct RootPlan {

@@ -69,12 +69,22 @@ void append_json_string(std::string& out, const std::string& text) {
 }  // namespace
 
 void Report::add(std::string path, Decision decision, std::string detail, bool lossy) {
+  if (shared_entries_) {
+    entries_ = *shared_entries_;
+    shared_entries_.reset();
+  }
   entries_.push_back(ReportEntry{std::move(path), decision, std::move(detail), lossy});
+}
+
+void Report::set_shared_entries(std::shared_ptr<const std::vector<ReportEntry>> entries) {
+  entries_.clear();
+  shared_entries_ = std::move(entries);
+  if (shared_entries_ && shared_entries_->empty()) shared_entries_.reset();
 }
 
 std::size_t Report::count(Decision decision) const {
   return static_cast<std::size_t>(
-      std::count_if(entries_.begin(), entries_.end(),
+      std::count_if(entries().begin(), entries().end(),
                     [decision](const ReportEntry& entry) { return entry.decision == decision; }));
 }
 
@@ -83,7 +93,7 @@ std::string Report::to_text() const {
   // push every line off the screen (longer paths simply overflow their column).
   constexpr std::size_t kMaxPathWidth = 60;
   std::size_t path_width = 4;
-  for (const ReportEntry& entry : entries_) {
+  for (const ReportEntry& entry : entries()) {
     path_width = std::max(path_width, std::min(entry.path.size(), kMaxPathWidth));
   }
   constexpr std::size_t kDecisionWidth = 9;  // "converted"
@@ -95,7 +105,7 @@ std::string Report::to_text() const {
   pad(4, path_width);
   out += "  decision ";
   out += " detail\n";
-  for (const ReportEntry& entry : entries_) {
+  for (const ReportEntry& entry : entries()) {
     out += entry.path;
     pad(entry.path.size(), path_width);
     out += "  ";
@@ -134,7 +144,7 @@ std::string Report::to_json() const {
   out += number;
   out += ",\"entries\":[";
   bool first = true;
-  for (const ReportEntry& entry : entries_) {
+  for (const ReportEntry& entry : entries()) {
     if (!first) out += ',';
     first = false;
     out += "{\"path\":";

@@ -325,19 +325,25 @@ class Restorer {
 
   bool plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
     if (n->action == Action::Reject) return value(n->skip, nullptr, nullptr);
+    if (n->copy_only && !(field && (field->bit_width || field->has_range)) && copy(n, dst)) {
+      return true;
+    }
     const TypeInfo& wt = w_.types[n->writer];
     switch (wt.kind) {
       case Kind::Bool: case Kind::Int: case Kind::UInt: case Kind::Float: case Kind::Enum:
         return scalar(n, wt, dst, field);
       case Kind::Struct: {
         const std::uint32_t saved = counter_;
+        // One path frame for all the fields, renamed per field.
+        const std::size_t frame = frames_.size();
+        frames_.push_back({PathFrame::Kind::Name, "", 0});
         for (const FieldPlan& child : n->fields) {
-          frames_.push_back({PathFrame::Kind::Name, child.name, 0});
+          frames_[frame].name = child.name;
           counter_ = child.counter;
           std::uint8_t* at = dst && child.reader_field != kNoType ? dst + child.reader_offset : nullptr;
           if (!value(child.node, at, &child)) return false;
-          frames_.pop_back();
         }
+        frames_.pop_back();
         counter_ = saved;
         return true;
       }
@@ -414,6 +420,24 @@ class Restorer {
         return pointer(n, wt, dst);
     }
     return corrupt("unknown kind").ok();
+  }
+
+  // A copy-only value in one step: check its bools (pass 1), copy its runs (writing passes).
+  // False, consuming nothing, when the bytes are short or a bool is invalid: the general path
+  // then finds and reports the same error at its place.
+  bool copy(const PlanNode* n, std::uint8_t* dst) {
+    if (in_.remaining() < n->copy_wire) return false;
+    const std::uint8_t* base = in_.position();
+    if (mode_ == Mode::Check) {
+      for (std::uint32_t offset : n->copy_bools) {
+        if (base[offset] > 1) return false;
+      }
+    }
+    if (dst && writing()) {
+      for (const CopyRun& run : n->copy_runs) std::memcpy(dst + run.dst, base + run.wire, run.length);
+    }
+    in_.seek(base + n->copy_wire);
+    return true;
   }
 
   bool scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst, const FieldPlan* field) {
@@ -503,13 +527,15 @@ class Restorer {
     if (plan_.min_wire[wt.element] == 0 && wt.count > (1u << 20)) {
       return corrupt("array of %llu empty elements", static_cast<unsigned long long>(wt.count)).ok();
     }
+    const std::size_t frame = frames_.size();
+    frames_.push_back({PathFrame::Kind::Index, nullptr, 0});
     for (std::uint64_t i = 0; i < wt.count; ++i) {
       const bool kept = to_reader && i < n->reader_count;
-      frames_.push_back({PathFrame::Kind::Index, nullptr, i});
+      frames_[frame].index = i;
       std::uint8_t* at = kept && dst ? dst + i * n->reader_stride : nullptr;
       if (!value(kept ? e : n->element_skip, at, nullptr)) return false;
-      frames_.pop_back();
     }
+    frames_.pop_back();
     return true;
   }
 
@@ -567,6 +593,17 @@ class Restorer {
     if (mode_ == Mode::Apply && ordinal < element_slots_.size() && element_slots_[ordinal] != kNoType) {
       addresses = &element_addresses_[element_slots_[ordinal]];
     }
+    // Identical fixed-width scalars (not bool: its bytes need checking) need no per-element
+    // decoding: one bounds check, and into a contiguous reader container one copy.
+    const TypeInfo& we = w_.types[wt.element];
+    const bool packed = e->action == Action::Scalar && e->identical && !e->validated &&
+                        we.kind != Kind::Bool && !(we.kind == Kind::Float && we.size == 16) &&
+                        count > 0 && depth_ < kMaxDepth;
+    if (packed && (!to_reader || !dst || !writing())) {
+      const std::uint8_t* bytes = nullptr;
+      if (!in_.bytes(std::size_t{count} * we.size, bytes)) return truncated("scalar");
+      return true;
+    }
     if (!to_reader || !dst || !writing()) {
       for (std::uint32_t i = 0; i < count; ++i) {
         frames_.push_back({PathFrame::Kind::Index, nullptr, i});
@@ -578,6 +615,16 @@ class Restorer {
     const TypeInfo& rt = r_.types[n->reader];
     const auto* ops = static_cast<const ContainerOps*>(rt.ops);
     ops->clear(dst);
+    if (packed && ops->resize_default && r_.types[rt.element].size == we.size) {
+      const std::uint8_t* bytes = nullptr;
+      if (!in_.bytes(std::size_t{count} * we.size, bytes)) return truncated("scalar");
+      auto* elements = static_cast<std::uint8_t*>(ops->resize_default(dst, count));
+      std::memcpy(elements, bytes, std::size_t{count} * we.size);
+      if (addresses) {
+        for (std::uint32_t i = 0; i < count; ++i) addresses->push_back(elements + std::size_t{i} * we.size);
+      }
+      return true;
+    }
     if (ops->append) {
       ops->reserve(dst, count);  // vectors: element addresses stay valid while we append
       for (std::uint32_t i = 0; i < count; ++i) {
@@ -1116,9 +1163,10 @@ Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::u
     report.set_status(status);
     return report;
   }
-  for (const ReportEntry& entry : plan->entries) {
-    report.add(entry.path, entry.decision, entry.detail, entry.lossy);
-  }
+  // The schema-level entries depend only on the plan: shared with it, copied only if a
+  // value-level entry is added.
+  report.set_shared_entries(
+      std::shared_ptr<const std::vector<ReportEntry>>(plan, &plan->entries));
   if (!plan->status.ok()) {
     report.set_status(plan->status);
     return report;

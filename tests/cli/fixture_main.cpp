@@ -2,6 +2,7 @@
 // used to produce real checkpoints, stores and schema files, and damaged copies of them.
 //   fixture checkpoint <path> <seed>        single-file checkpoint
 //   fixture store <path> <saves>            4-slot store after <saves> saves (seeds 1..saves)
+//   fixture store-more <path> <saves>       <saves> more saves into an existing store
 //   fixture schema <path>                   this build's schema file
 //   fixture flip <path> <offset>            invert one byte
 //   fixture truncate <path> <size>          cut the file
@@ -106,8 +107,9 @@ int main(int argc, char** argv) {
     const symcr::Status status = symcr::checkpoint(cli_fixture::schema(), path);
     return status.ok() ? 0 : fail("checkpoint", status);
   }
-  if (std::strcmp(command, "store") == 0) {
-    ::unlink(path);
+  const bool more = std::strcmp(command, "store-more") == 0;
+  if (std::strcmp(command, "store") == 0 || more) {
+    if (!more) ::unlink(path);
     symcr::Store store;
     symcr::StoreOptions options;
     options.slots = 4;

@@ -59,6 +59,15 @@ symcr_cli_test(inspect_torn_store EXIT 0 ARGS inspect ${files}/torn.store
          "copter.ticks += 1005\n")
 symcr_cli_test(inspect_torn_slot EXIT 2 ARGS inspect --slot 1 ${files}/torn.store
   EXPECT "slot 1 is corrupt: checksum mismatch")
+symcr_cli_test(inspect_empty_store EXIT 2 ARGS inspect ${files}/empty.store
+  EXPECT "restore_latest +none \\(no restorable slot\\)" "\n0 +empty +- "
+         "no slot holds a restorable checkpoint")
+symcr_cli_test(inspect_patched_store EXIT 0 ARGS inspect ${files}/patched.store
+  EXPECT "schema_area 0 +hash [0-9a-f]+, [0-9]+ bytes, 18 types"
+         "schema_area 1 +hash [0-9a-f]+, [0-9]+ bytes, 17 types"
+         "restore_latest +slot 3 \\(sequence 4\\)"
+         "\n0 +valid +1 .* area 0" "\n3 +valid +4 .* area 1 +<- shown"
+         "copter.geofence += 150\n")
 symcr_cli_test(inspect_schema_file EXIT 0 ARGS inspect ${files}/v1.schema
   EXPECT "schema file" "payload_size +0\n" "copter +Copter\n" "telemetry +Telemetry\n")
 symcr_cli_test(inspect_corrupt EXIT 2 ARGS inspect ${files}/corrupt.ckpt
@@ -91,6 +100,8 @@ symcr_cli_test(verify_truncated EXIT 1 ARGS verify ${files}/truncated.ckpt
 symcr_cli_test(verify_not_a_checkpoint EXIT 1 ARGS verify ${files}/not-a-checkpoint.txt
   EXPECT "invalid: .*bad magic")
 symcr_cli_test(verify_missing EXIT 2 ARGS verify ${files}/no-such-file EXPECT "cannot open")
+symcr_cli_test(verify_empty_store EXIT 1 ARGS verify ${files}/empty.store
+  EXPECT "\ninvalid: no restorable slot\n")
 symcr_cli_test(verify_json EXIT 1 JSON ARGS verify --json ${files}/corrupt.ckpt
   EXPECT "\"valid\": false" "\"check\": \"record\",[ \n]*\"ok\": false")
 symcr_cli_test(verify_store EXIT 0 ARGS verify ${files}/v0.store
@@ -123,6 +134,10 @@ symcr_cli_test(diff_builds EXIT 1 ARGS diff ${files}/v0.ckpt ${files}/v1.ckpt
   REJECT "copter.mode" "copter.battery" "telemetry.rssi")
 symcr_cli_test(diff_store_and_file EXIT 1 ARGS diff --slot-a 0 ${files}/v0.store ${files}/v0.ckpt
   EXPECT "a +.*v0.store slot 0 \\(sequence 5" "\n~ +copter.ticks +1005 +1001\n")
+symcr_cli_test(diff_across_a_patch EXIT 1
+  ARGS diff --slot-a 2 --slot-b 3 ${files}/patched.store ${files}/patched.store
+  EXPECT "\n~ +copter.ticks +1003 +2001 +\\(int32 -> int64\\)\n"
+         "\n\\+ +copter.geofence +\\(absent\\) +150\n")
 symcr_cli_test(diff_json EXIT 1 JSON ARGS diff --json ${files}/v0.ckpt ${files}/v1.ckpt
   EXPECT "\"path\": \"copter.geofence\",[ \n]*\"change\": \"added\",[ \n]*\"b\": 150"
          "\"removed\": [1-9]")
@@ -157,6 +172,8 @@ symcr_cli_test(plan_json EXIT 0 JSON ARGS plan --json ${files}/v0.ckpt --schema 
          "\"path\": \"copter.geofence\",[ \n]*\"decision\": \"kept\"")
 symcr_cli_test(plan_from_store EXIT 0 ARGS plan ${files}/torn.store --schema ${files}/v1.schema
   EXPECT "torn.store slot 0 \\(sequence 5" "restore would succeed")
+symcr_cli_test(plan_empty_store EXIT 2 ARGS plan ${files}/empty.store --schema ${files}/v1.schema
+  EXPECT "no slot holds a valid checkpoint")
 symcr_cli_test(plan_checkpoint_as_schema EXIT 2 ARGS plan ${files}/v0.ckpt --schema ${files}/v1.ckpt
   EXPECT "a checkpoint, not a schema file")
 symcr_cli_test(plan_corrupt EXIT 2 ARGS plan ${files}/corrupt.ckpt --schema ${files}/v1.schema

@@ -73,6 +73,45 @@ TEST(Crc32c, HardwareAndPortableAgreeAtEveryLengthAndAlignment) {
   }
 }
 
+// The hardware path runs three interleaved chains over blocks of 3 x 256 and 3 x 8192 bytes
+// and combines them: every length around those block boundaries, at every alignment, and as
+// extensions of a previous CRC.
+TEST(Crc32c, HardwareAndPortableAgreeAroundChainBlockBoundaries) {
+  if (!crc32c_hardware_available()) GTEST_SKIP() << "no SSE4.2 on this CPU";
+  std::mt19937 random(777);
+  std::vector<std::uint8_t> data(3 * 3 * 8192 + 3 * 256 + 64);
+  for (auto& byte : data) byte = static_cast<std::uint8_t>(random());
+  std::vector<std::size_t> sizes;
+  for (std::size_t base : {std::size_t{3 * 256}, std::size_t{2 * 3 * 256}, std::size_t{3 * 8192},
+                           std::size_t{3 * 8192 + 3 * 256}, std::size_t{2 * 3 * 8192},
+                           std::size_t{3 * 3 * 8192}}) {
+    for (std::size_t delta = 0; delta <= 17; ++delta) {
+      sizes.push_back(base + delta);
+      if (base >= delta) sizes.push_back(base - delta);
+    }
+  }
+  for (std::size_t offset = 0; offset < 8; ++offset) {
+    for (std::size_t size : sizes) {
+      ASSERT_LE(offset + size, data.size());
+      const std::uint32_t seed = static_cast<std::uint32_t>(random());
+      ASSERT_EQ(crc32c_extend_hardware(seed, data.data() + offset, size),
+                crc32c_extend_portable(seed, data.data() + offset, size))
+          << "offset " << offset << " size " << size;
+    }
+  }
+  // Split anywhere: extending equals one call across block boundaries.
+  const std::size_t n = 2 * 3 * 8192 + 5;
+  const std::uint32_t whole = crc32c_extend_portable(0, data.data(), n);
+  for (std::size_t split : {std::size_t{0}, std::size_t{1}, std::size_t{767}, std::size_t{768},
+                            std::size_t{769}, std::size_t{24575}, std::size_t{24576},
+                            std::size_t{24577}, n}) {
+    EXPECT_EQ(crc32c_extend_hardware(crc32c_extend_hardware(0, data.data(), split),
+                                     data.data() + split, n - split),
+              whole)
+        << split;
+  }
+}
+
 TEST(Crc32c, DetectsEverySingleBitFlip) {
   std::vector<std::uint8_t> data(300);
   for (std::size_t i = 0; i < data.size(); ++i) data[i] = static_cast<std::uint8_t>(i * 7);

@@ -13,6 +13,7 @@
 #include <type_traits>
 #include <utility>
 #include <variant>
+#include <vector>
 
 #include "symcr/schema.hpp"
 
@@ -51,6 +52,11 @@ template <typename C, typename = void>
 struct has_size : std::false_type {};
 template <typename C>
 struct has_size<C, std::void_t<decltype(std::declval<const C&>().size())>> : std::true_type {};
+
+template <typename C>
+struct is_contiguous_vector : std::false_type {};
+template <typename T, typename A>
+struct is_contiguous_vector<std::vector<T, A>> : std::true_type {};
 
 // The element type restore stages for associative containers: pair<const K, V> becomes
 // pair<K, V> so the key can be filled in before insertion.
@@ -122,9 +128,35 @@ struct container {
       }
     }
   }
-  static constexpr ContainerOps table{&size,    &for_each, &element_at, &clear,
-                                      &reserve, is_sequence ? &append : nullptr,
-                                      is_sequence ? nullptr : &insert};
+  static constexpr bool is_contiguous =
+      detail::is_contiguous_vector<C>::value && !std::is_same_v<Value, bool>;
+  static const void* contiguous_data(const void* c) {
+    if constexpr (is_contiguous) {
+      return static_cast<const C*>(c)->data();
+    } else {
+      (void)c;
+      return nullptr;
+    }
+  }
+  static void* resize_default(void* c, std::size_t n) {
+    if constexpr (is_contiguous) {
+      static_cast<C*>(c)->resize(n);
+      return static_cast<C*>(c)->data();
+    } else {
+      (void)c;
+      (void)n;
+      return nullptr;
+    }
+  }
+  static constexpr ContainerOps table{&size,
+                                      &for_each,
+                                      &element_at,
+                                      &clear,
+                                      &reserve,
+                                      is_sequence ? &append : nullptr,
+                                      is_sequence ? nullptr : &insert,
+                                      is_contiguous ? &contiguous_data : nullptr,
+                                      is_contiguous ? &resize_default : nullptr};
 };
 
 template <typename O>

@@ -107,6 +107,13 @@ struct ContainerOps {
   // type's Lifecycle); moves from it; returns the inserted element, or nullptr if the key was
   // already present (a duplicate: the checkpoint is inconsistent). nullptr for sequences.
   void* (*insert)(void* c, void* staged_element);
+  // Contiguous sequences (std::vector, except vector<bool>): the first element, so that runs
+  // of fixed-width scalars move as one block. nullptr for other containers (and when the
+  // member is left out of a table: both are optional).
+  const void* (*contiguous_data)(const void* c);
+  // Contiguous sequences: resize to n value-initialised elements and return the first
+  // (nullptr when n == 0 may be returned). nullptr for other containers.
+  void* (*resize_default)(void* c, std::size_t n);
 };
 
 struct OptionalOps {

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -100,7 +101,9 @@ class Report {
   // in default mode; strict mode turns every lossy entry into a failure.
   bool ok() const { return status_.ok(); }
   const Status& status() const { return status_; }
-  const std::vector<ReportEntry>& entries() const { return entries_; }
+  const std::vector<ReportEntry>& entries() const {
+    return shared_entries_ ? *shared_entries_ : entries_;
+  }
   std::size_t count(Decision decision) const;
   std::uint64_t sequence() const { return sequence_; }  // of the checkpoint restored
 
@@ -111,11 +114,15 @@ class Report {
   void set_status(const Status& status) { status_ = status; }
   void set_sequence(std::uint64_t sequence) { sequence_ = sequence; }
   void add(std::string path, Decision decision, std::string detail, bool lossy);
+  // Starts an empty report with `entries` (shared, not copied: a cached plan's schema-level
+  // entries); a later add() copies them first.
+  void set_shared_entries(std::shared_ptr<const std::vector<ReportEntry>> entries);
   void clear() { *this = Report(); }
 
  private:
   Status status_;
   std::vector<ReportEntry> entries_;
+  std::shared_ptr<const std::vector<ReportEntry>> shared_entries_;  // when set: the entries
   std::uint64_t sequence_ = 0;
 };
 

@@ -168,6 +168,22 @@ TEST(Tables, BasesAndNonPublicMembers) {
             distance(&everything.vehicle, everything.vehicle.secret_address()));
 }
 
+TEST(Tables, PrivateNestedTypes) {
+  const symcr::TypeInfo* slot = type_named("fleet::Vehicle::Slot");
+  ASSERT_NE(slot, nullptr);
+  EXPECT_EQ(slot->size, fleet::Vehicle::slot_size());
+  const symcr::TypeInfo* slots = type_named("std::vector<fleet::Vehicle::Slot>");
+  ASSERT_NE(slots, nullptr);
+  ASSERT_NE(slots->ops, nullptr);  // instantiated although Slot is private
+  everything.vehicle.add_slot(4);
+  everything.vehicle.add_slot(5);
+  const symcr::FieldInfo* field = field_named(*type_named("fleet::Vehicle"), "slots_");
+  ASSERT_NE(field, nullptr);
+  const void* vector = reinterpret_cast<const char*>(&everything.vehicle) + field->offset;
+  EXPECT_EQ(static_cast<const symcr::ContainerOps*>(slots->ops)->size(vector),
+            everything.vehicle.slot_count());
+}
+
 TEST(Tables, UnionsAreRawBytes) {
   EXPECT_FIELD(raw, "fleet::Raw", Union);
   EXPECT_EQ(type_named("fleet::Raw")->size, sizeof(fleet::Raw));

@@ -64,12 +64,20 @@ class Vehicle : public Base, protected Other {
   const void* other_address() const { return &other_value; }
   const void* secret_address() const { return &secret_; }
   const void* hidden_address() const { return &hidden_; }
+  static std::size_t slot_size() { return sizeof(Slot); }
+  std::size_t slot_count() const { return slots_.size(); }
+  void add_slot(int s) { slots_.push_back(Slot{s, 0}); }
 
  protected:
   long hidden_ = 0;
 
  private:
+  struct Slot {  // a private nested type, also as a container element
+    int s;
+    double weight;
+  };
   char secret_ = 's';
+  std::vector<Slot> slots_;
 };
 
 union Raw {

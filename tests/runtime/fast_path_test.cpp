@@ -1,0 +1,186 @@
+// The engine's fast paths behave exactly like the general ones: contiguous containers of
+// fixed-width scalars moved as one block (save and restore, with pointers into their
+// elements), copy-only structs (identical layouts: bools still checked, all-or-nothing kept),
+// and large arrays appended to the output without zero-fill.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstring>
+#include <deque>
+#include <vector>
+
+#include "engine_test_util.hpp"
+#include "handwritten_schemas.hpp"
+#include "symcr/ops.hpp"
+
+namespace engine_tests {
+namespace {
+
+struct VRoot {
+  std::vector<double> doubles;
+  std::vector<std::int32_t> ints;
+  std::int32_t* into = nullptr;  // points into `ints`
+  std::deque<std::int32_t> bits;  // not contiguous: the general path
+};
+VRoot vroot;
+
+const symcr::Schema& vroot_schema() {
+  using symcr::ops::offset_of;
+  static const symcr::FieldInfo fields[] = {
+      field("doubles", 2, offset_of(&VRoot::doubles)), field("ints", 3, offset_of(&VRoot::ints)),
+      field("into", 4, offset_of(&VRoot::into)), field("bits", 6, offset_of(&VRoot::bits))};
+  static const symcr::TypeInfo types[] = {
+      scalar("double", Kind::Float, 8),
+      scalar("int32", Kind::Int, 4),
+      holder("std::vector<double>", Kind::Container, sizeof(std::vector<double>),
+             alignof(std::vector<double>), 0, &symcr::ops::container<std::vector<double>>::table),
+      holder("std::vector<int32>", Kind::Container, sizeof(std::vector<std::int32_t>),
+             alignof(std::vector<std::int32_t>), 1,
+             &symcr::ops::container<std::vector<std::int32_t>>::table),
+      holder("int32*", Kind::Pointer, sizeof(void*), alignof(void*), 1, nullptr),
+      scalar("int64", Kind::Int, 8),
+      holder("std::deque<int32>", Kind::Container, sizeof(std::deque<std::int32_t>),
+             alignof(std::deque<std::int32_t>), 1,
+             &symcr::ops::container<std::deque<std::int32_t>>::table, symcr::ContainerKind::Deque),
+      record("VRoot", sizeof(VRoot), alignof(VRoot), fields, 4),
+  };
+  static const symcr::RootInfo roots[] = {{"vroot", 7, &vroot, 0, nullptr}};
+  static const symcr::Schema schema{types, 8, roots, 1};
+  return schema;
+}
+
+TEST(FastPath, ContainerOpsTablesDescribeContiguity) {
+  EXPECT_NE(symcr::ops::container<std::vector<double>>::table.contiguous_data, nullptr);
+  EXPECT_NE(symcr::ops::container<std::vector<double>>::table.resize_default, nullptr);
+  EXPECT_EQ(symcr::ops::container<std::deque<int>>::table.contiguous_data, nullptr);
+  EXPECT_EQ(symcr::ops::container<std::deque<int>>::table.resize_default, nullptr);
+}
+
+TEST(FastPath, ContiguousScalarContainersRoundTripWithPointersIntoThem) {
+  vroot.doubles.clear();
+  for (int i = 0; i < 10000; ++i) vroot.doubles.push_back(i * 0.5 - 7);
+  vroot.ints = {5, 6, 7, 8, 9};
+  vroot.into = &vroot.ints[3];
+  vroot.bits = {4, -4, 44};
+  const Saved saved = save(vroot_schema());
+  const std::vector<double> doubles = vroot.doubles;
+  vroot.doubles = {1, 2};
+  vroot.ints = {0};
+  vroot.into = nullptr;
+  vroot.bits.clear();
+  const symcr::Report report = load(saved, vroot_schema(), /*strict=*/true);
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(vroot.doubles, doubles);
+  EXPECT_EQ(vroot.ints, (std::vector<std::int32_t>{5, 6, 7, 8, 9}));
+  EXPECT_EQ(vroot.into, &vroot.ints[3]);
+  EXPECT_EQ(vroot.bits, (std::deque<std::int32_t>{4, -4, 44}));
+}
+
+TEST(FastPath, EmptyContiguousContainersClearTheReader) {
+  vroot.doubles.clear();
+  vroot.ints.clear();
+  vroot.into = nullptr;
+  vroot.bits.clear();
+  const Saved saved = save(vroot_schema());
+  vroot.doubles = {1};
+  vroot.ints = {2};
+  const symcr::Report report = load(saved, vroot_schema(), true);
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_TRUE(vroot.doubles.empty());
+  EXPECT_TRUE(vroot.ints.empty());
+}
+
+TEST(FastPath, TruncatedContiguousContainerFailsWithStateUntouched) {
+  vroot.doubles.assign(100, 2.5);
+  vroot.ints = {1, 2, 3};
+  vroot.into = nullptr;
+  vroot.bits.clear();
+  const Saved saved = save(vroot_schema());
+  vroot.doubles = {9};
+  vroot.ints = {8};
+  for (std::size_t size : {std::size_t{3}, std::size_t{4}, std::size_t{4 + 8 * 50},
+                           std::size_t{4 + 8 * 100 + 6}}) {
+    const symcr::Report report = load(saved, vroot_schema(), false, size);
+    EXPECT_FALSE(report.ok()) << size;
+    EXPECT_EQ(vroot.doubles, (std::vector<double>{9})) << size;
+    EXPECT_EQ(vroot.ints, (std::vector<std::int32_t>{8})) << size;
+  }
+}
+
+// A flat struct restored into the same build takes the copy-only path.
+struct Flat {
+  std::int32_t a;
+  bool flag;
+  double b;
+  std::int16_t c[3];
+  bool flags[2];
+};
+Flat flat;
+
+const symcr::Schema& flat_schema() {
+  static const symcr::FieldInfo fields[] = {
+      field("a", 0, offsetof(Flat, a)), field("flag", 1, offsetof(Flat, flag)),
+      field("b", 2, offsetof(Flat, b)), field("c", 4, offsetof(Flat, c)),
+      field("flags", 5, offsetof(Flat, flags))};
+  static const symcr::TypeInfo types[] = {
+      scalar("int32", Kind::Int, 4),         scalar("bool", Kind::Bool, 1),
+      scalar("double", Kind::Float, 8),      scalar("int16", Kind::Int, 2),
+      array("int16[3]", 3, 3, 6, 2),         array("bool[2]", 1, 2, 2, 1),
+      record("Flat", sizeof(Flat), alignof(Flat), fields, 5),
+  };
+  static const symcr::RootInfo roots[] = {{"flat", 6, &flat, 0, nullptr}};
+  static const symcr::Schema schema{types, 7, roots, 1};
+  return schema;
+}
+
+TEST(FastPath, CopyOnlyStructRoundTrips) {
+  flat = Flat{-5, true, 2.25, {1, -2, 3}, {false, true}};
+  const Saved saved = save(flat_schema());
+  ASSERT_EQ(saved.payload.size(), 4 + 1 + 8 + 6 + 2 + 4 + 4u);  // values, heap and reference counts
+  std::memset(&flat, 0, sizeof flat);
+  const symcr::Report report = load(saved, flat_schema(), true);
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(flat.a, -5);
+  EXPECT_TRUE(flat.flag);
+  EXPECT_EQ(flat.b, 2.25);
+  EXPECT_EQ(flat.c[1], -2);
+  EXPECT_FALSE(flat.flags[0]);
+  EXPECT_TRUE(flat.flags[1]);
+  expect_entry(report, "flat", symcr::Decision::Restored);
+}
+
+TEST(FastPath, CopyOnlyStructStillRefusesInvalidBools) {
+  flat = Flat{1, true, 1.0, {1, 2, 3}, {true, false}};
+  const std::size_t bool_offsets[] = {4, 4 + 1 + 8 + 6, 4 + 1 + 8 + 6 + 1};
+  for (std::size_t offset : bool_offsets) {
+    Saved saved = save(flat_schema());
+    saved.payload[offset] = 2;
+    flat = Flat{7, false, 7.0, {7, 7, 7}, {false, false}};
+    const symcr::Report report = load(saved, flat_schema());
+    EXPECT_FALSE(report.ok()) << offset;
+    EXPECT_NE(std::string(report.status().message()).find("bool value 2"), std::string::npos)
+        << report.status().message();
+    EXPECT_EQ(flat.a, 7) << offset;  // nothing written
+    EXPECT_EQ(flat.c[0], 7) << offset;
+    flat = Flat{1, true, 1.0, {1, 2, 3}, {true, false}};
+  }
+}
+
+TEST(FastPath, ReportsAreIndependentCopies) {
+  flat = Flat{1, true, 1.0, {1, 2, 3}, {true, false}};
+  const Saved saved = save(flat_schema());
+  symcr::Report first = load(saved, flat_schema());
+  const symcr::Report second = load(saved, flat_schema());
+  ASSERT_TRUE(first.ok());
+  const std::size_t count = second.entries().size();
+  first.add("extra", symcr::Decision::Rejected, "added later", true);
+  EXPECT_EQ(first.entries().size(), count + 1);
+  EXPECT_EQ(second.entries().size(), count);
+  EXPECT_EQ(first.entries().back().path, "extra");
+  first.clear();
+  EXPECT_TRUE(first.entries().empty());
+  EXPECT_EQ(second.entries().size(), count);
+}
+
+}  // namespace
+}  // namespace engine_tests
