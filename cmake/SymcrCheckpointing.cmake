@@ -13,6 +13,12 @@
 # function enables for the target. A depfile lists every header the generator read, so editing
 # an annotated header regenerates.
 #
+# The build's schema file (for `symcr plan <checkpoint> --schema <file>`, which needs no running
+# program) is written by the generator to <binary dir>/symcr/<target>/<target>.symcr-schema, a
+# path the target property SYMCR_SCHEMA_FILE holds (an output of the generation step, so other
+# custom commands may depend on it), and copied after each link next to the program, to
+# `$<TARGET_FILE_DIR:target>/<target>.symcr-schema`.
+#
 # `#pragma symcr` lines are unknown to g++, which warns under -Wall (-Wunknown-pragmas): the
 # function adds -Wno-unknown-pragmas to the annotated target (only there).
 include_guard(GLOBAL)
@@ -77,13 +83,15 @@ function(symcr_add_checkpointing target)
   endif()
 
   set(schema "${out_dir}/symcr_schema.cpp")
+  set(schema_file "${out_dir}/${target}.symcr-schema")
   set(annotation_args)
   foreach(file IN LISTS annotations)
     list(APPEND annotation_args --annotations "${file}")
   endforeach()
   add_custom_command(
-    OUTPUT "${schema}" ${wrappers}
+    OUTPUT "${schema}" ${wrappers} "${schema_file}"
     COMMAND "${generator}" -p "${CMAKE_BINARY_DIR}" --out-dir "${out_dir}"
+            --schema-file "${schema_file}"
             --depfile "${out_dir}/symcr-gen.d" --depfile-target "${schema}"
             --report-file "${out_dir}/report.txt" ${annotation_args} ${inputs}
     DEPENDS ${generator_dependency} ${inputs} ${annotations}
@@ -96,7 +104,13 @@ function(symcr_add_checkpointing target)
   list(REMOVE_ITEM kept_sources ${replaced})
   set_property(TARGET ${target} PROPERTY SOURCES ${kept_sources})
   target_sources(${target} PRIVATE "${schema}" ${wrappers})
-  set_target_properties(${target} PROPERTIES EXPORT_COMPILE_COMMANDS ON)
+  set_target_properties(${target} PROPERTIES EXPORT_COMPILE_COMMANDS ON
+    SYMCR_SCHEMA_FILE "${schema_file}")
+  # OUTPUT cannot name $<TARGET_FILE_DIR>: the file is generated beside the code and copied.
+  add_custom_command(TARGET ${target} POST_BUILD
+    COMMAND "${CMAKE_COMMAND}" -E copy_if_different "${schema_file}"
+            "$<TARGET_FILE_DIR:${target}>/${target}.symcr-schema"
+    VERBATIM)
   target_link_libraries(${target} PRIVATE ${runtime})
   target_compile_options(${target} PRIVATE
     $<$<COMPILE_LANG_AND_ID:CXX,GNU,Clang,AppleClang>:-Wno-unknown-pragmas>

@@ -10,6 +10,7 @@
 #include "llvm/Support/raw_ostream.h"
 
 #include <cctype>
+#include <cstdlib>
 
 namespace symcr_gen {
 
@@ -58,6 +59,8 @@ static bool directiveKindFromName(const std::string &Name,
     Kind = DirectiveKind::Renamed;
   else if (Name == "include")
     Kind = DirectiveKind::Include;
+  else if (Name == "range")
+    Kind = DirectiveKind::Range;
   else
     return false;
   return true;
@@ -93,7 +96,7 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
   if (!directiveKindFromName(Name, D.Kind)) {
     Diags.error(At(NameBegin),
                 "unknown symcr directive '" + Name +
-                    "' (expected checkpoint, skip, renamed or include)");
+                    "' (expected checkpoint, skip, renamed, include or range)");
     return false;
   }
   SkipSpace();
@@ -171,6 +174,29 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
     Diags.error(D.Where, "renamed(...) takes two arguments: the new name "
                          "(Type::field, Type or variable) and the old name");
     return false;
+  }
+  if (D.Kind == DirectiveKind::Range) {
+    if (D.Arguments.size() != 3) {
+      Diags.error(D.Where, "range(...) takes three arguments: the member "
+                           "(Type::field) and the bounds lo and hi");
+      return false;
+    }
+    double Bounds[2];
+    for (int B = 0; B < 2; ++B) {
+      const DirectiveArgument &A = D.Arguments[1 + B];
+      char *End = nullptr;
+      Bounds[B] = std::strtod(A.Text.c_str(), &End);
+      if (*End != '\0') {
+        Diags.error(A.Where, "range bound '" + A.Text + "' is not a number");
+        return false;
+      }
+    }
+    if (Bounds[0] > Bounds[1]) {
+      Diags.error(D.Arguments[1].Where, "range(...) needs lo <= hi, got '" +
+                                            D.Arguments[1].Text + "' and '" +
+                                            D.Arguments[2].Text + "'");
+      return false;
+    }
   }
   Out.push_back(std::move(D));
   return true;

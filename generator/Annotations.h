@@ -28,6 +28,7 @@ enum class DirectiveKind {
   Skip,       ///< skip(Type, Type::field, ...)
   Renamed,    ///< renamed(Type::field | Type | var, old_name)
   Include,    ///< include(Type::field, ...): selected for a shallow root
+  Range,      ///< range(Type::field, lo, hi): as SYMCR_RANGE(lo, hi)
 };
 
 struct DirectiveArgument {

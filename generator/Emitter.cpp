@@ -118,6 +118,12 @@ bool hasLifecycle(const TypeModel &Type) {
          Type.Kind != symcr::Kind::Union && Type.Kind != symcr::Kind::Array;
 }
 
+/// The type has a user's symcr_validate and a C++ home TU to call it from.
+bool hasValidate(const ProgramModel &Program, const TypeModel &Type) {
+  return Type.HasValidate && !Type.Spelling.empty() &&
+         !Program.TranslationUnits[Type.HomeTU].IsC;
+}
+
 std::string renamedList(const std::vector<std::string> &Names) {
   std::string Out = "{";
   for (const std::string &N : Names)
@@ -141,6 +147,8 @@ std::string emitSchemaSource(const ProgramModel &Program) {
          << ";\n";
     if (hasLifecycle(T) && !Program.TranslationUnits[T.HomeTU].IsC)
       OS << "extern const symcr::Lifecycle lifecycle_" << I << ";\n";
+    if (hasValidate(Program, T))
+      OS << "bool validate_" << I << "(const void* object);\n";
   }
   OS << "}  // namespace symcr_gen\n\n";
   // C types' lifecycles are C functions in their C wrappers (calloc/free).
@@ -227,7 +235,10 @@ std::string emitSchemaSource(const ProgramModel &Program) {
              : Program.TranslationUnits[T.HomeTU].IsC
                  ? "&symcr_gen_c_lifecycle_" + Index
                  : "&symcr_gen::lifecycle_" + Index)
-         << ", nullptr, " << TypeRenamed[I] << "},  // " << Index << "\n";
+         << ", "
+         << (hasValidate(Program, T) ? "&symcr_gen::validate_" + Index
+                                     : std::string("nullptr"))
+         << ", " << TypeRenamed[I] << "},  // " << Index << "\n";
     }
     OS << "};\n";
   }
@@ -382,6 +393,13 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
       OS << "extern const symcr::Lifecycle lifecycle_" << I << ";\n"
          << "const symcr::Lifecycle lifecycle_" << I
          << " = symcr::ops::lifecycle<" << Type << ">::table;\n";
+    // Unqualified: argument-dependent lookup finds a hook in the type's
+    // namespace (or a hidden friend), ordinary lookup a global one.
+    if (hasValidate(Program, T))
+      OS << "bool validate_" << I << "(const void* object);\n"
+         << "bool validate_" << I << "(const void* object) {\n"
+         << "  return symcr_validate(*static_cast<const " << Type
+         << "*>(object));\n}\n";
   }
   OS << "}  // namespace symcr_gen\n\n";
   for (std::uint32_t I : Roots)

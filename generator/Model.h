@@ -89,6 +89,9 @@ struct TypeModel {
   /// named there (unnamed or function-local types).
   std::string Spelling;
   std::vector<std::string> RenamedFrom;
+  /// The program declares `bool symcr_validate(const T&)`: the home TU's
+  /// wrapper defines a thunk calling it for TypeInfo::validate.
+  bool HasValidate = false;
   /// Index of the TU whose wrapper defines this type's ops and layout checks.
   unsigned HomeTU = 0;
   /// Describes the layout and selection; two TUs producing the same name with a

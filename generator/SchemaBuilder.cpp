@@ -107,6 +107,11 @@ public:
     Templates[qualifiedDeclName(TD)].push_back(TD);
     return true;
   }
+  bool VisitFunctionDecl(FunctionDecl *FD) {
+    if (FD->getIdentifier() && FD->getName() == "symcr_validate")
+      Validators.push_back(FD);
+    return true;
+  }
   bool VisitTypedefNameDecl(TypedefNameDecl *TD) {
     Typedefs[qualifiedDeclName(TD)].push_back(TD);
     return true;
@@ -165,6 +170,8 @@ public:
   std::map<std::string, std::vector<RecordDecl *>> Records;
   std::map<std::string, std::vector<ClassTemplateDecl *>> Templates;
   std::map<std::string, std::vector<TypedefNameDecl *>> Typedefs;
+  /// Every function named symcr_validate (templates' patterns included).
+  std::vector<FunctionDecl *> Validators;
 };
 
 /// Selections resolved from directives, keyed by record names (either the
@@ -178,6 +185,12 @@ struct Selections {
   std::map<std::string, std::vector<std::string>> TypeRenames;
   std::map<std::string, std::vector<std::string>> RootRenames;
   std::set<std::pair<std::string, std::string>> IncludedFields;
+  /// range(Type::field, lo, hi) directives.
+  std::map<std::pair<std::string, std::string>, std::pair<double, double>>
+      FieldRanges;
+  /// Record types (canonical) that have a usable `bool symcr_validate(const
+  /// T&)` in this TU.
+  std::set<const Type *> Validated;
   struct RootRequest {
     bool Shallow = false;
     Location Where;
@@ -533,10 +546,16 @@ std::string TypeWalker::fingerprint(const TypeModel &Model) const {
                                    : Program.Types[Index].Name;
   };
   F += NameOf(Model.Element);
-  for (const FieldModel &Field : Model.Fields)
+  if (Model.HasValidate)
+    F += "|validate";
+  for (const FieldModel &Field : Model.Fields) {
     F += "|" + Field.Name + ":" + NameOf(Field.Type) + "@" +
          std::to_string(Field.Offset) + "." + std::to_string(Field.BitOffset) +
          "/" + std::to_string(Field.BitWidth);
+    if (Field.Flags & symcr::kFieldHasRange)
+      F += "[" + std::to_string(Field.RangeMin) + "," +
+           std::to_string(Field.RangeMax) + "]";
+  }
   for (const auto &E : Model.Enumerators)
     F += "|" + E.first + "=" + std::to_string(E.second);
   for (std::uint32_t A : Model.Alternatives)
@@ -1218,6 +1237,20 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
       }
       Field.Flags |= symcr::kFieldHasRange;
     }
+    if (auto It = Lookup(Select.FieldRanges, Name);
+        It != Select.FieldRanges.end()) {
+      if ((Field.Flags & symcr::kFieldHasRange) &&
+          (Field.RangeMin != It->second.first ||
+           Field.RangeMax != It->second.second)) {
+        Diags.error(F.Where, "member '" + F.Path +
+                                 "' has SYMCR_RANGE and a different "
+                                 "range directive");
+        Ok = false;
+      }
+      Field.RangeMin = It->second.first;
+      Field.RangeMax = It->second.second;
+      Field.Flags |= symcr::kFieldHasRange;
+    }
     Model.Fields.push_back(Field);
   }
   return Ok;
@@ -1297,6 +1330,15 @@ std::uint32_t TypeWalker::record(QualType Type, const RecordDecl *Decl,
   Walked[{Type.getTypePtr(), C.Shallow}] = Index;
   if (!fillFields(RD, Model, C))
     return symcr::kNoType;
+  if (CRD && !Model.Spelling.empty() &&
+      Select.Validated.count(
+          Type.getCanonicalType().getUnqualifiedType().getTypePtr())) {
+    Model.HasValidate = true;
+    // Restore checks a staged copy, created with the lifecycle unless the
+    // type is plain bytes.
+    if (CRD->hasDefaultConstructor())
+      Model.NeedsLifecycle = true;
+  }
   store(Index, std::move(Model), C);
   return Index;
 }
@@ -1387,6 +1429,55 @@ bool resolveTypeName(
   return Found;
 }
 
+/// Validation hooks: a non-template `bool symcr_validate(const T&)` for a
+/// class T, declared in T's innermost enclosing namespace (a hidden friend
+/// counts) or in the global namespace: the generated thunk calls it
+/// unqualified from namespace symcr_gen, so argument-dependent lookup finds the
+/// first kind and ordinary lookup the second. Any other declaration of that
+/// name with a class parameter is an error rather than a silently unused hook.
+void findValidators(ASTContext &Context,
+                    const std::vector<FunctionDecl *> &Candidates,
+                    std::set<const Type *> &Validated, Diagnostics &Diags) {
+  for (const FunctionDecl *FD : Candidates) {
+    if (FD->getTemplatedKind() != FunctionDecl::TK_NonTemplate ||
+        FD->isDependentContext() || FD->getNumParams() != 1 ||
+        isa<CXXMethodDecl>(FD))
+      continue;
+    QualType Param = FD->getParamDecl(0)->getType().getCanonicalType();
+    const RecordDecl *RD = Param.getNonReferenceType()->getAsRecordDecl();
+    if (!RD)
+      continue;
+    Location Where = locationOf(Context, FD->getLocation());
+    PrintingPolicy Policy = Context.getPrintingPolicy();
+    Policy.SuppressTagKeyword = true;
+    std::string Wanted =
+        "'bool symcr_validate(const " +
+        Param.getNonReferenceType().getUnqualifiedType().getAsString(Policy) +
+        "&)'";
+    if (!Param->isLValueReferenceType() ||
+        !Param.getNonReferenceType().isConstQualified() ||
+        Param.getNonReferenceType().isVolatileQualified() ||
+        !FD->getReturnType().getCanonicalType()->isBooleanType()) {
+      Diags.error(Where, "a validation hook must be declared " + Wanted);
+      continue;
+    }
+    const DeclContext *Home = FD->getDeclContext()->getRedeclContext();
+    const DeclContext *Enclosing =
+        RD->getEnclosingNamespaceContext()->getRedeclContext();
+    if (!Home->isTranslationUnit() && !Home->Equals(Enclosing)) {
+      Diags.error(Where, "validation hook " + Wanted +
+                             " must be declared in the namespace of its "
+                             "class (or as its friend, or globally), where "
+                             "argument-dependent lookup finds it");
+      continue;
+    }
+    Validated.insert(Param.getNonReferenceType()
+                         .getUnqualifiedType()
+                         .getCanonicalType()
+                         .getTypePtr());
+  }
+}
+
 bool recordHasMember(const RecordDecl *RD, const std::string &Member) {
   const RecordDecl *Def = RD->getDefinition();
   if (!Def)
@@ -1412,6 +1503,9 @@ void SchemaBuilder::addTranslationUnit(
   NameIndex Index(Context);
   Index.TraverseDecl(Context.getTranslationUnitDecl());
   Selections Select;
+
+  if (Context.getLangOpts().CPlusPlus)
+    findValidators(Context, Index.Validators, Select.Validated, Diags);
 
   TypeWalker Namer(Context, S, TUIndex, Program, Diags, Select);
   auto CanonicalName = [&](const RecordDecl *RD) {
@@ -1461,15 +1555,19 @@ void SchemaBuilder::addTranslationUnit(
       }
       case DirectiveKind::Skip:
       case DirectiveKind::Include:
+      case DirectiveKind::Range:
       case DirectiveKind::Renamed: {
         if (D.Kind == DirectiveKind::Renamed && I == 1)
           continue; // the old name
+        if (D.Kind == DirectiveKind::Range && I >= 1)
+          continue; // the bounds
         const std::string &Text = A.Text;
         std::vector<std::string> Keys;
         std::vector<const RecordDecl *> Records;
         std::string Reason = IsSidecar ? "skipped by the annotation file"
                                        : "skipped by '#pragma symcr skip'";
         if (D.Kind != DirectiveKind::Include &&
+            D.Kind != DirectiveKind::Range &&
             resolveTypeName(Index, Text, Keys, &Records, CanonicalName)) {
           Found = true;
           for (const std::string &K : Keys) {
@@ -1493,6 +1591,7 @@ void SchemaBuilder::addTranslationUnit(
               " '" + Text + "' in symcr " +
               (D.Kind == DirectiveKind::Skip      ? "skip"
                : D.Kind == DirectiveKind::Include ? "include"
+               : D.Kind == DirectiveKind::Range   ? "range"
                                                   : "renamed") +
               " directive");
           break;
@@ -1516,6 +1615,10 @@ void SchemaBuilder::addTranslationUnit(
             Select.SkippedFields[{K, Member}] = Reason;
           else if (D.Kind == DirectiveKind::Include)
             Select.IncludedFields.insert({K, Member});
+          else if (D.Kind == DirectiveKind::Range)
+            Select.FieldRanges[{K, Member}] = {
+                std::strtod(D.Arguments[1].Text.c_str(), nullptr),
+                std::strtod(D.Arguments[2].Text.c_str(), nullptr)};
           else
             Select.FieldRenames[{K, Member}].push_back(D.Arguments[1].Text);
         }
@@ -1687,7 +1790,8 @@ void SchemaBuilder::finish() {
   for (std::size_t I = 0; I < Sidecar.size(); ++I)
     for (std::size_t A = 0; A < Sidecar[I].Arguments.size(); ++A) {
       if (SidecarMatched[I][A] ||
-          (Sidecar[I].Kind == DirectiveKind::Renamed && A == 1))
+          (Sidecar[I].Kind == DirectiveKind::Renamed && A == 1) ||
+          (Sidecar[I].Kind == DirectiveKind::Range && A >= 1))
         continue;
       Diags.error(Sidecar[I].Arguments[A].Where,
                   "'" + Sidecar[I].Arguments[A].Text +

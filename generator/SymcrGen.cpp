@@ -11,6 +11,7 @@
 #include "Annotations.h"
 #include "Emitter.h"
 #include "SchemaBuilder.h"
+#include "SchemaFile.h"
 
 #include "clang/Driver/Options.h"
 #include "clang/Frontend/CompilerInstance.h"
@@ -59,6 +60,10 @@ static llvm::cl::list<std::string>
     AnnotationFiles("annotations",
                     llvm::cl::desc("Sidecar annotation file (repeatable)"),
                     llvm::cl::value_desc("file"), llvm::cl::cat(Category));
+static llvm::cl::opt<std::string> SchemaFile(
+    "schema-file",
+    llvm::cl::desc("Write the build's schema file (for `symcr plan --schema`)"),
+    llvm::cl::value_desc("file"), llvm::cl::cat(Category));
 static llvm::cl::opt<std::string>
     Depfile("depfile", llvm::cl::desc("Write a Makefile-style depfile"),
             llvm::cl::value_desc("file"), llvm::cl::cat(Category));
@@ -368,6 +373,13 @@ int main(int argc, const char **argv) {
     llvm::outs() << ReportText;
   if (!ReportFile.empty() && !writeFileIfChanged(ReportFile, ReportText, Diags))
     return 1;
+  if (!SchemaFile.empty()) {
+    llvm::StringRef Parent = llvm::sys::path::parent_path(SchemaFile);
+    if (!Parent.empty())
+      llvm::sys::fs::create_directories(Parent);
+    if (!writeSchemaFile(Program, SchemaFile, Diags))
+      return 1;
+  }
   if (!OutDir.empty()) {
     llvm::sys::fs::create_directories(OutDir);
     std::string Schema = absolute(OutDir + "/symcr_schema.cpp");

@@ -74,6 +74,7 @@ struct EncodeScratch {
   std::vector<HeapObject> heap;
   std::vector<std::uint32_t> steps;
   std::vector<Span> spans;  // overlap check of the fast pass
+  std::vector<Span> spans_scratch;  // its radix sort's other buffer
   ProcessMemory memory;
 };
 
@@ -175,12 +176,50 @@ class Encoder {
   bool heap_objects_overlap() {
     s_.spans.clear();
     for (const Region& region : s_.regions) s_.spans.push_back(Span{region.start, region.end});
-    std::sort(s_.spans.begin(), s_.spans.end(),
-              [](const Span& a, const Span& b) { return a.start < b.start; });
+    sort_spans();
     for (std::size_t i = 1; i < s_.spans.size(); ++i) {
       if (s_.spans[i].start < s_.spans[i - 1].end) return true;
     }
     return false;
+  }
+
+  // Sorts s_.spans by start. Large graphs: an LSD radix sort over the bits in which the starts
+  // differ (heap addresses span a few hundred MB: three 11-bit passes instead of N log N
+  // mispredicted comparisons).
+  void sort_spans() {
+    const std::size_t n = s_.spans.size();
+    if (n < 2048) {
+      std::sort(s_.spans.begin(), s_.spans.end(),
+                [](const Span& a, const Span& b) { return a.start < b.start; });
+      return;
+    }
+    std::uintptr_t low = s_.spans[0].start, high = low;
+    for (const Span& span : s_.spans) {
+      low = span.start < low ? span.start : low;
+      high = span.start > high ? span.start : high;
+    }
+    const std::uintptr_t range = high - low;
+    const int bits = range ? 64 - __builtin_clzll(static_cast<unsigned long long>(range)) : 0;
+    constexpr int kDigitBits = 11;
+    constexpr std::size_t kDigits = std::size_t{1} << kDigitBits;
+    s_.spans_scratch.resize(n);
+    std::size_t counts[kDigits];
+    for (int shift = 0; shift < bits; shift += kDigitBits) {
+      const Span* from = s_.spans.data();
+      Span* to = s_.spans_scratch.data();
+      std::memset(counts, 0, sizeof counts);
+      for (std::size_t i = 0; i < n; ++i) ++counts[((from[i].start - low) >> shift) & (kDigits - 1)];
+      std::size_t sum = 0;
+      for (std::size_t d = 0; d < kDigits; ++d) {
+        const std::size_t c = counts[d];
+        counts[d] = sum;
+        sum += c;
+      }
+      for (std::size_t i = 0; i < n; ++i) {
+        to[counts[((from[i].start - low) >> shift) & (kDigits - 1)]++] = from[i];
+      }
+      s_.spans.swap(s_.spans_scratch);  // both keep their capacity
+    }
   }
 
   bool ok() const { return error_.ok(); }

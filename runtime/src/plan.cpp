@@ -477,7 +477,7 @@ class Planner {
   }
 
   // Appends `child`'s program at (wire, dst); false when `n` grows past the limits.
-  static bool append_copy(PlanNode& n, const PlanNode& child, std::uint64_t wire,
+  __attribute__((noinline)) static bool append_copy(PlanNode& n, const PlanNode& child, std::uint64_t wire,
                           std::uint64_t dst) {
     if (wire + child.copy_wire > kMaxCopyWire || dst + kMaxCopyWire > 0xFFFFFFFFu) return false;
     for (std::uint32_t offset : child.copy_bools) {
@@ -491,9 +491,9 @@ class Planner {
     return true;
   }
 
-  void compute_copy(PlanNode& n) {
-    if (copy_state_.count(&n)) return;
-    copy_state_[&n] = 1;  // in progress: a (malformed) cycle is not copy-only
+  __attribute__((noinline)) void compute_copy(PlanNode& n) {
+    if (n.copy_state) return;
+    n.copy_state = 1;  // from now on: a (malformed) cycle back to it is not copy-only
     n.copy_only = build_copy(n);
     if (!n.copy_only) {
       n.copy_wire = 0;
@@ -511,7 +511,7 @@ class Planner {
     return child->copy_only;
   }
 
-  bool build_copy(PlanNode& n) {
+  __attribute__((noinline)) bool build_copy(PlanNode& n) {
     if (n.reader == kNoType || n.writer >= w_.type_count) return false;
     const TypeInfo& wt = w_.types[n.writer];
     switch (n.action) {
@@ -660,7 +660,6 @@ class Planner {
   const Schema& w_;
   const Schema& r_;
   std::map<std::pair<std::uint32_t, std::uint32_t>, PlanNode*> memo_;
-  std::map<const PlanNode*, int> copy_state_;  // copy-only programs computed or under way
   std::vector<const PlanNode*> stack_;
   std::vector<const PlanNode*> pointees_;
   int depth_ = 0;

@@ -86,6 +86,7 @@ struct PlanNode {
   // kept, no conversion, range, bit-field or nested validator): restoring it is checking the
   // bools and copying `copy_runs`, over exactly `copy_wire` payload bytes.
   bool copy_only = false;
+  std::uint8_t copy_state = 0;  // planner: 0 not computed, 1 computed or under way
   std::uint32_t copy_wire = 0;
   std::vector<CopyRun> copy_runs;
   std::vector<std::uint32_t> copy_bools;  // wire offsets of bools, each must be 0 or 1

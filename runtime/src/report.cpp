@@ -76,6 +76,12 @@ void Report::add(std::string path, Decision decision, std::string detail, bool l
   entries_.push_back(ReportEntry{std::move(path), decision, std::move(detail), lossy});
 }
 
+Report::~Report() = default;
+Report::Report(const Report& other) = default;
+Report::Report(Report&& other) noexcept = default;
+Report& Report::operator=(const Report& other) = default;
+Report& Report::operator=(Report&& other) noexcept = default;
+
 void Report::set_shared_entries(std::shared_ptr<const std::vector<ReportEntry>> entries) {
   entries_.clear();
   shared_entries_ = std::move(entries);

@@ -196,6 +196,7 @@ class Restorer {
   }
 
   void summarise_rejections() {
+    if (value_rejections_ <= kMaxConcretePerField) return;  // no counter can exceed the cap
     for (std::size_t c = 0; c < rejection_counts_.size(); ++c) {
       if (rejection_counts_[c] <= kMaxConcretePerField) continue;
       report_.add(counter_path(static_cast<std::uint32_t>(c)), Decision::Rejected,
@@ -425,7 +426,7 @@ class Restorer {
   // A copy-only value in one step: check its bools (pass 1), copy its runs (writing passes).
   // False, consuming nothing, when the bytes are short or a bool is invalid: the general path
   // then finds and reports the same error at its place.
-  bool copy(const PlanNode* n, std::uint8_t* dst) {
+  __attribute__((noinline)) bool copy(const PlanNode* n, std::uint8_t* dst) {
     if (in_.remaining() < n->copy_wire) return false;
     const std::uint8_t* base = in_.position();
     if (mode_ == Mode::Check) {
@@ -440,7 +441,7 @@ class Restorer {
     return true;
   }
 
-  bool scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst, const FieldPlan* field) {
+  __attribute__((noinline)) bool scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst, const FieldPlan* field) {
     const std::uint8_t* bytes = nullptr;
     if (!in_.bytes(wt.size, bytes)) return truncated("scalar");
     if (wt.kind == Kind::Bool && bytes[0] > 1) return corrupt("bool value %u", bytes[0]).ok();
@@ -539,7 +540,7 @@ class Restorer {
     return true;
   }
 
-  bool string(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
+  __attribute__((noinline)) bool string(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
     std::uint32_t length = 0;
     if (!in_.read(length)) return truncated("string length");
     const std::uint32_t width = w_.types[wt.element].size;
@@ -588,6 +589,12 @@ class Restorer {
     const std::uint32_t ordinal = container_ordinal_++;
     const bool to_reader = n->action == Action::Container;
     const PlanNode* e = n->element;
+    if (to_reader && mode_ == Mode::Check && !allocation_justified(count, n->reader)) {
+      return corrupt("container of %u elements would need %" PRIu64
+                     " bytes in this build, more than the checkpoint can justify",
+                     count, std::uint64_t{count} * r_.types[r_.types[n->reader].element].size)
+          .ok();
+    }
     if (mode_ == Mode::Check) containers_.push_back(ContainerRecord{count, e, current_object_});
     std::vector<void*>* addresses = nullptr;
     if (mode_ == Mode::Apply && ordinal < element_slots_.size() && element_slots_[ordinal] != kNoType) {
@@ -614,8 +621,9 @@ class Restorer {
     }
     const TypeInfo& rt = r_.types[n->reader];
     const auto* ops = static_cast<const ContainerOps*>(rt.ops);
-    ops->clear(dst);
     if (packed && ops->resize_default && r_.types[rt.element].size == we.size) {
+      // Resized, not cleared first: the elements it keeps are overwritten below, so only
+      // the new ones are value-initialised.
       const std::uint8_t* bytes = nullptr;
       if (!in_.bytes(std::size_t{count} * we.size, bytes)) return truncated("scalar");
       auto* elements = static_cast<std::uint8_t*>(ops->resize_default(dst, count));
@@ -625,6 +633,7 @@ class Restorer {
       }
       return true;
     }
+    ops->clear(dst);
     if (ops->append) {
       ops->reserve(dst, count);  // vectors: element addresses stay valid while we append
       for (std::uint32_t i = 0; i < count; ++i) {
@@ -673,7 +682,19 @@ class Restorer {
     return true;
   }
 
-  bool pointer(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
+  // A hostile (or merely old) checkpoint must not make restore allocate more than its own size
+  // justifies: a 4-byte count of empty writer elements must not become 2^20 elements of a
+  // reader type that grew to 64 KiB. Allowed: a fixed 64 MiB, or 16 bytes of this build's
+  // memory per payload byte, whichever is larger (a 256 MiB vector<double> restores).
+  bool allocation_justified(std::uint32_t count, std::uint32_t reader_container) const {
+    constexpr std::uint64_t kAlwaysAllowed = std::uint64_t{64} << 20;
+    constexpr std::uint64_t kBytesPerPayloadByte = 16;
+    const std::uint64_t element_size = r_.types[r_.types[reader_container].element].size;
+    const std::uint64_t needed = std::uint64_t{count} * element_size;
+    return needed <= kAlwaysAllowed || needed / kBytesPerPayloadByte <= size_;
+  }
+
+  __attribute__((noinline)) bool pointer(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
     std::uint32_t code = 0;
     if (!in_.read(code)) return truncated("pointer");
     const bool shared = wt.kind == Kind::SharedPtr;

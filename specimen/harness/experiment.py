@@ -37,7 +37,8 @@ def parse_args():
     p.add_argument("--build-dir", default=os.path.join(ROOT, "build", "specimen"))
     p.add_argument("--out", default=os.path.join(ROOT, "out", "experiment"))
     p.add_argument("--missions", nargs="+", help="mission files (default: ISTAR and BusRoute)")
-    p.add_argument("--versions", nargs="+", default=["V1", "V2", "V3", "V4"])
+    # V0 -> V0 (the same build restored) is the control: every method must succeed there.
+    p.add_argument("--versions", nargs="+", default=["V0", "V1", "V2", "V3", "V4"])
     p.add_argument("--methods", nargs="+", default=["symcr", "raw-image", "criu"])
     p.add_argument("--no-redteam", action="store_true")
     p.add_argument("--seed", type=int, default=2020)

@@ -378,6 +378,12 @@ Result World::run() {
     result.reason = "mission ended before the checkpoint point";
   } else if (options_.exploit_at_s >= 0 && !exploit_sent) {
     result.reason = "mission ended before the exploit";
+  } else if (options_.exploit_at_s >= 0 && options_.method != "none" && !result.restarted) {
+    // A red-team flight with a checkpoint method measures the restore after the crash: an
+    // exploit that did not stop the autopilot tested nothing.
+    result.reason = "the exploit did not stop the autopilot: nothing was restored";
+  } else if (result.restarted && !result.restored) {
+    result.reason = "the restarted autopilot did not report a restore";
   } else {
     result.success = true;
     result.reason = "ok";

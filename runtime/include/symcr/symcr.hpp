@@ -97,6 +97,15 @@ struct ReportEntry {
 
 class Report {
  public:
+  // Out of line: the shared entries' control block is the runtime's (built without RTTI), so
+  // it is released in the runtime, never in code built with RTTI and -fsanitize=vptr.
+  Report() = default;
+  ~Report();
+  Report(const Report& other);
+  Report(Report&& other) noexcept;
+  Report& operator=(const Report& other);
+  Report& operator=(Report&& other) noexcept;
+
   // True when the restore was applied. A report can be ok() and still hold Rejected entries
   // in default mode; strict mode turns every lossy entry into a failure.
   bool ok() const { return status_.ok(); }
