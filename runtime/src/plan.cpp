@@ -55,6 +55,7 @@ class Planner {
     }
     build_report();
     for (PlanNode& n : plan_.nodes) compute_copy(n);
+    compute_copy_only_payload();
     if (too_deep_) {
       plan_.status = Status(Error::Corrupt, "invalid schema: types nest deeper than %d levels",
                             kMaxPlanDepth);
@@ -502,6 +503,18 @@ class Planner {
       n.copy_bools.clear();
       n.copy_bools.shrink_to_fit();
     }
+  }
+
+  // The whole payload is copy-only when every writer root is kept and copy-only: then it is
+  // the roots' copy programs back to back and two empty sections (heap objects, references).
+  void compute_copy_only_payload() {
+    std::uint64_t size = 2 * sizeof(std::uint32_t);
+    for (const RootPlan& root : plan_.roots) {
+      if (root.reader_root == kNoType || !child_copy_only(root.node)) return;
+      size += root.node->copy_wire;
+    }
+    plan_.copy_only_payload = true;
+    plan_.copy_only_payload_size = size;
   }
 
   bool child_copy_only(const PlanNode* child) {

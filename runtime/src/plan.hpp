@@ -110,6 +110,10 @@ struct Plan {
   std::vector<ReportEntry> entries;           // schema-level report
   std::vector<std::string> counter_paths;     // schema-level path per counter
   bool any_lossy = false;
+  // Every root kept and copy-only (see PlanNode::copy_only): restore checks the size and the
+  // bools and copies, without the general decoder.
+  bool copy_only_payload = false;
+  std::uint64_t copy_only_payload_size = 0;
   Status status;                              // Incompatible when nothing can be restored
 };
 

@@ -42,6 +42,14 @@ std::uint32_t record_checksum(const std::uint8_t* record, std::size_t size) {
                        size - kRecordChecksumOffset - 4);
 }
 
+// True when `bytes` are exactly `blob`'s and `hash` is its hash: then the hash need not be
+// recomputed to trust it.
+bool is_blob(const SchemaBlob* blob, const std::uint8_t* bytes, std::size_t size,
+             std::uint64_t hash) {
+  return blob != nullptr && hash == blob->hash && size == blob->bytes.size() &&
+         std::memcmp(bytes, blob->bytes.data(), size) == 0;
+}
+
 }  // namespace
 
 Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t sequence,
@@ -79,7 +87,8 @@ Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t seq
   return Status();
 }
 
-Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out) {
+Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
+                    const SchemaBlob* known) {
   out = RecordView();
   if (size == 0) return Status(Error::Truncated, "truncated: empty");
   const std::size_t magic_bytes = size < sizeof kRecordMagic ? size : sizeof kRecordMagic;
@@ -135,7 +144,8 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out)
   out.payload = data + h.header_size + h.schema_size;
   out.payload_size = h.payload_size;
   out.record_size = static_cast<std::size_t>(record_size);
-  if (inline_schema && fnv1a64(out.schema, h.schema_size) != h.schema_hash) {
+  if (inline_schema && !is_blob(known, out.schema, h.schema_size, h.schema_hash) &&
+      fnv1a64(out.schema, h.schema_size) != h.schema_hash) {
     return Status(Error::Corrupt, "inline schema does not match its hash %016llx",
                   static_cast<unsigned long long>(h.schema_hash));
   }
@@ -154,7 +164,8 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
                                  const Schema& reader, const RestoreOptions& options) {
   Report report;
   RecordView record;
-  Status status = parse_record(data, size, record);
+  const SchemaBlob& own = schema_blob(reader);
+  Status status = parse_record(data, size, record, &own);
   if (status.ok() && record.record_size != size) {
     status = Status(Error::Corrupt, "%zu unexpected bytes after the %zu-byte record",
                     size - record.record_size, record.record_size);
@@ -171,9 +182,7 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
   }
   // Written by this very build (the usual case): the inline schema is byte for byte the
   // reader's own, so the reader serves as the writer schema and nothing needs parsing.
-  const SchemaBlob& own = schema_blob(reader);
-  if (record.header.schema_hash == own.hash && record.header.schema_size == own.bytes.size() &&
-      std::memcmp(record.schema, own.bytes.data(), own.bytes.size()) == 0) {
+  if (is_blob(&own, record.schema, record.header.schema_size, record.header.schema_hash)) {
     return restore_record(record, reader, own.hash, reader, options);
   }
   ParsedSchema writer;

@@ -48,8 +48,12 @@ Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t seq
 
 // Checks magic, version, header size, flags, sizes against `size` and the checksum, and for an
 // inline schema that its bytes hash to `schema_hash`. Bytes after the record are not looked at
-// (a store slot has room to spare). Does not parse the schema.
-Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out);
+// (a store slot has room to spare). Does not parse the schema. When the inline schema is byte
+// for byte `known` (a blob whose hash is already computed, e.g. the reader's own schema), its
+// hash is taken from `known` instead of rehashing: the common case costs a memcmp.
+struct SchemaBlob;
+Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
+                    const SchemaBlob* known = nullptr);
 
 // Restores a record validated by parse_record whose writer schema is `writer`. The report
 // carries the record's sequence.

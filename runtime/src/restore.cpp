@@ -1174,6 +1174,35 @@ class Restorer {
 
 namespace {
 
+// The fast path for a copy-only plan (the same build, or changes that only move fields): true
+// when the payload is exactly the roots' copy programs and two empty sections, with every bool
+// 0 or 1, after copying (if `apply`). False for anything else, leaving the general decoder to
+// find and name the fault; nothing is written then.
+bool restore_copy_only(const Plan& plan, const std::uint8_t* payload, std::size_t size,
+                       bool apply) {
+  if (payload == nullptr || size != plan.copy_only_payload_size) return false;
+  const Schema& reader = *plan.reader;
+  const std::uint8_t* at = payload;
+  for (const RootPlan& root : plan.roots) {
+    for (std::uint32_t offset : root.node->copy_bools) {
+      if (at[offset] > 1) return false;
+    }
+    at += root.node->copy_wire;
+  }
+  std::uint32_t heap_count = 0, reference_count = 0;
+  std::memcpy(&heap_count, at, sizeof heap_count);  // zero in any byte order
+  std::memcpy(&reference_count, at + sizeof heap_count, sizeof reference_count);
+  if (heap_count != 0 || reference_count != 0) return false;
+  if (!apply) return true;
+  at = payload;
+  for (const RootPlan& root : plan.roots) {
+    auto* dst = static_cast<std::uint8_t*>(reader.roots[root.reader_root].address);
+    for (const CopyRun& run : root.node->copy_runs) std::memcpy(dst + run.dst, at + run.wire, run.length);
+    at += root.node->copy_wire;
+  }
+  return true;
+}
+
 Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,
                    std::size_t size, const Schema& reader, const RestoreOptions& options,
                    bool plan_only, bool apply) {
@@ -1194,6 +1223,11 @@ Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::u
   }
   if (!payload && size) {
     report.set_status(Status(Error::Corrupt, "invalid payload: no bytes"));
+    return report;
+  }
+  const bool strict_refusal = options.strict && plan->any_lossy;
+  if (!plan_only && !strict_refusal && plan->copy_only_payload &&
+      restore_copy_only(*plan, payload, size, apply)) {
     return report;
   }
   std::size_t value_rejections = 0;

@@ -1,7 +1,8 @@
 // The engine's fast paths behave exactly like the general ones: contiguous containers of
 // fixed-width scalars moved as one block (save and restore, with pointers into their
 // elements), copy-only structs (identical layouts: bools still checked, all-or-nothing kept),
-// and large arrays appended to the output without zero-fill.
+// and large arrays appended to the output without zero-fill, and whole copy-only payloads
+// (every root copy-only: restored without the general decoder, which still names every fault).
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -11,6 +12,7 @@
 
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
+#include "plan.hpp"
 #include "symcr/ops.hpp"
 
 namespace engine_tests {
@@ -164,6 +166,128 @@ TEST(FastPath, CopyOnlyStructStillRefusesInvalidBools) {
     EXPECT_EQ(flat.c[0], 7) << offset;
     flat = Flat{1, true, 1.0, {1, 2, 3}, {true, false}};
   }
+}
+
+// The same values in another build: fields reordered and one added, a second root.
+struct FlatMoved {
+  bool flags[2];
+  double b;
+  std::int64_t added;
+  std::int16_t c[3];
+  bool flag;
+  std::int32_t a;
+};
+FlatMoved flat_moved;
+std::int32_t counter_root;
+
+const symcr::Schema& flat_moved_schema() {
+  static const symcr::FieldInfo fields[] = {
+      field("flags", 5, offsetof(FlatMoved, flags)), field("b", 2, offsetof(FlatMoved, b)),
+      field("added", 7, offsetof(FlatMoved, added)), field("c", 4, offsetof(FlatMoved, c)),
+      field("flag", 1, offsetof(FlatMoved, flag)),   field("a", 0, offsetof(FlatMoved, a))};
+  static const symcr::TypeInfo types[] = {
+      scalar("int32", Kind::Int, 4),         scalar("bool", Kind::Bool, 1),
+      scalar("double", Kind::Float, 8),      scalar("int16", Kind::Int, 2),
+      array("int16[3]", 3, 3, 6, 2),         array("bool[2]", 1, 2, 2, 1),
+      record("Flat", sizeof(FlatMoved), alignof(FlatMoved), fields, 6),
+      scalar("int64", Kind::Int, 8),
+  };
+  static const symcr::RootInfo roots[] = {{"counter", 0, &counter_root, 0, nullptr},
+                                          {"flat", 6, &flat_moved, 0, nullptr}};
+  static const symcr::Schema schema{types, 8, roots, 2};
+  return schema;
+}
+
+std::shared_ptr<const symcr::detail::Plan> plan(const Saved& saved, const symcr::Schema& reader,
+                                                symcr::detail::ParsedSchema& writer) {
+  EXPECT_TRUE(symcr::detail::parse_schema(saved.schema.data(), saved.schema.size(), writer).ok());
+  symcr::Status status;
+  return symcr::detail::plan_for(writer.schema(), saved.hash, reader, status);
+}
+
+TEST(FastPath, PlansKnowWhenTheWholePayloadIsCopyOnly) {
+  flat = Flat{1, true, 1.0, {1, 2, 3}, {true, false}};
+  symcr::detail::ParsedSchema writer;
+  const Saved saved = save(flat_schema());
+  const auto same = plan(saved, flat_schema(), writer);
+  ASSERT_TRUE(same);
+  EXPECT_TRUE(same->copy_only_payload);
+  EXPECT_EQ(same->copy_only_payload_size, saved.payload.size());
+  EXPECT_TRUE(plan(saved, flat_moved_schema(), writer)->copy_only_payload);  // moves only
+
+  vroot.doubles = {1};
+  symcr::detail::ParsedSchema containers;
+  EXPECT_FALSE(plan(save(vroot_schema()), vroot_schema(), containers)->copy_only_payload);
+}
+
+TEST(FastPath, CopyOnlyPayloadRestoresIntoMovedFieldsAndKeepsAddedOnes) {
+  flat = Flat{-5, true, 2.25, {1, -2, 3}, {false, true}};
+  const Saved saved = save(flat_schema());
+  flat_moved = FlatMoved{{true, true}, 0, 77, {0, 0, 0}, false, 0};
+  counter_root = 41;
+  const symcr::Report report = load(saved, flat_moved_schema());
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(flat_moved.a, -5);
+  EXPECT_TRUE(flat_moved.flag);
+  EXPECT_EQ(flat_moved.b, 2.25);
+  EXPECT_EQ(flat_moved.c[0], 1);
+  EXPECT_EQ(flat_moved.c[1], -2);
+  EXPECT_EQ(flat_moved.c[2], 3);
+  EXPECT_FALSE(flat_moved.flags[0]);
+  EXPECT_TRUE(flat_moved.flags[1]);
+  EXPECT_EQ(flat_moved.added, 77);  // added field: the new build's value
+  EXPECT_EQ(counter_root, 41);      // added root: untouched
+  expect_entry(report, "flat.added", symcr::Decision::Kept);
+  expect_entry(report, "counter", symcr::Decision::Kept);
+}
+
+TEST(FastPath, CopyOnlyPayloadFaultsAreNamedAndWriteNothing) {
+  flat = Flat{1, true, 1.0, {1, 2, 3}, {true, false}};
+  const Saved good = save(flat_schema());
+  const std::size_t values = good.payload.size() - 8;
+  struct Case {
+    const char* what;
+    std::vector<std::uint8_t> payload;
+    const char* message;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"heap count", good.payload, "heap count"});
+  cases.back().payload[values] = 1;
+  cases.push_back({"reference count", good.payload, "reference count"});
+  cases.back().payload[values + 4] = 1;
+  cases.push_back({"extra byte", good.payload, "after the payload"});
+  cases.back().payload.push_back(0);
+  cases.push_back({"short", good.payload, "truncated"});
+  cases.back().payload.pop_back();
+  for (const Case& c : cases) {
+    Saved saved = good;
+    saved.payload = c.payload;
+    flat = Flat{7, false, 7.0, {7, 7, 7}, {false, false}};
+    const symcr::Report report = load(saved, flat_schema());
+    EXPECT_FALSE(report.ok()) << c.what;
+    EXPECT_NE(std::string(report.status().message()).find(c.message), std::string::npos)
+        << c.what << ": " << report.status().message();
+    EXPECT_EQ(flat.a, 7) << c.what;  // nothing written
+    EXPECT_EQ(flat.b, 7.0) << c.what;
+    EXPECT_FALSE(flat.flag) << c.what;
+  }
+}
+
+TEST(FastPath, CopyOnlyPayloadInStrictModeStillRefusesLossyPlans) {
+  // Writer has a root the reader lacks: a dropped root is lossy, and the plan is not copy-only.
+  flat_moved = FlatMoved{{true, false}, 3.5, 0, {4, 5, 6}, true, 9};
+  counter_root = 12;
+  const Saved saved = save(flat_moved_schema());
+  flat = Flat{7, false, 7.0, {7, 7, 7}, {false, false}};
+  const symcr::Report strict = load(saved, flat_schema(), true);
+  EXPECT_FALSE(strict.ok());
+  EXPECT_EQ(strict.status().error(), symcr::Error::Strict);
+  EXPECT_EQ(flat.a, 7);
+  const symcr::Report lenient = load(saved, flat_schema());
+  ASSERT_TRUE(lenient.ok()) << lenient.to_text();
+  EXPECT_EQ(flat.a, 9);
+  EXPECT_EQ(flat.c[2], 6);
+  expect_entry(lenient, "counter", symcr::Decision::Dropped);
 }
 
 TEST(FastPath, ReportsAreIndependentCopies) {
