@@ -685,7 +685,22 @@ struct CachedPlan {
   const TypeInfo* reader_types;
   const RootInfo* reader_roots;
   std::shared_ptr<const Plan> plan;
+
+  bool serves(std::uint64_t hash, const Schema& r) const {
+    return writer_hash == hash && reader == &r && reader_types == r.types &&
+           reader_roots == r.roots;
+  }
 };
+
+std::mutex& plan_cache_mutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+std::deque<CachedPlan>& plan_cache() {
+  static auto* cache = new std::deque<CachedPlan>();  // never freed
+  return *cache;
+}
 
 }  // namespace
 
@@ -695,15 +710,12 @@ bool names_match(const TypeInfo& writer, const TypeInfo& reader) {
 
 std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_hash,
                                      const Schema& reader, Status& status) {
-  static std::mutex mutex;
-  static std::deque<CachedPlan>* cache = new std::deque<CachedPlan>();  // never freed
   constexpr std::size_t kMaxPlans = 8;
   {
-    std::lock_guard<std::mutex> lock(mutex);
-    for (const CachedPlan& cached : *cache) {
+    std::lock_guard<std::mutex> lock(plan_cache_mutex());
+    for (const CachedPlan& cached : plan_cache()) {
       // The counts guard against a caller passing one hash for different schemas.
-      if (cached.writer_hash == writer_hash && cached.reader == &reader &&
-          cached.reader_types == reader.types && cached.reader_roots == reader.roots &&
+      if (cached.serves(writer_hash, reader) &&
           cached.plan->writer->type_count == writer.type_count &&
           cached.plan->writer->root_count == writer.root_count) {
         return cached.plan;
@@ -713,17 +725,26 @@ std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_
   auto plan = std::make_shared<Plan>();
   // The plan keeps its own copy of the writer schema (a round trip through the wire form) so
   // that cached plans never point into a caller's buffers.
-  std::vector<std::uint8_t> bytes;
-  serialise_schema(writer, bytes);
-  status = parse_schema(bytes.data(), bytes.size(), plan->writer_copy);
+  serialise_schema(writer, plan->writer_blob.bytes);
+  plan->writer_blob.hash = fnv1a64(plan->writer_blob.bytes.data(), plan->writer_blob.bytes.size());
+  status = parse_schema(plan->writer_blob.bytes.data(), plan->writer_blob.bytes.size(),
+                        plan->writer_copy);
   if (!status.ok()) return nullptr;
   plan->writer = &plan->writer_copy.schema();
   plan->reader = &reader;
   Planner(*plan).run();
-  std::lock_guard<std::mutex> lock(mutex);
-  cache->push_front(CachedPlan{writer_hash, &reader, reader.types, reader.roots, plan});
-  if (cache->size() > kMaxPlans) cache->pop_back();
+  std::lock_guard<std::mutex> lock(plan_cache_mutex());
+  plan_cache().push_front(CachedPlan{writer_hash, &reader, reader.types, reader.roots, plan});
+  if (plan_cache().size() > kMaxPlans) plan_cache().pop_back();
   return plan;
+}
+
+std::shared_ptr<const Plan> cached_plan(std::uint64_t writer_hash, const Schema& reader) {
+  std::lock_guard<std::mutex> lock(plan_cache_mutex());
+  for (const CachedPlan& cached : plan_cache()) {
+    if (cached.serves(writer_hash, reader)) return cached.plan;
+  }
+  return nullptr;
 }
 
 }  // namespace symcr::detail

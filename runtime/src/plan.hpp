@@ -100,6 +100,7 @@ struct RootPlan {
 
 struct Plan {
   ParsedSchema writer_copy;  // the plan's own copy: its names outlive the caller's schema
+  SchemaBlob writer_blob;    // writer_copy's serialised form and its hash
   const Schema* writer = nullptr;
   const Schema* reader = nullptr;
   std::deque<PlanNode> nodes;                 // stable addresses
@@ -121,6 +122,10 @@ struct Plan {
 // hashes to `writer_hash`) into `reader`.
 std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_hash,
                                      const Schema& reader, Status& status);
+
+// A cached plan for (writer_hash, reader), or nullptr; no plan is built. For callers holding
+// an inline schema: when its bytes are the plan's writer_blob, it need not be hashed or parsed.
+std::shared_ptr<const Plan> cached_plan(std::uint64_t writer_hash, const Schema& reader);
 
 bool names_match(const TypeInfo& writer, const TypeInfo& reader);
 

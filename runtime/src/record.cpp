@@ -8,6 +8,7 @@
 #include "crc32c.hpp"
 #include "engine.hpp"
 #include "little_endian.hpp"
+#include "plan.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -164,8 +165,15 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
                                  const Schema& reader, const RestoreOptions& options) {
   Report report;
   RecordView record;
+  // A known inline schema needs neither hashing nor parsing: the reader's own (written by this
+  // very build, the usual case), or one a cached plan was built from (restoring the checkpoint
+  // of an earlier build again). The header's hash only picks the candidate; the bytes decide.
   const SchemaBlob& own = schema_blob(reader);
-  Status status = parse_record(data, size, record, &own);
+  std::shared_ptr<const Plan> plan;
+  if (size >= kRecordHeaderSize && le::load64(data + 32) != own.hash) {
+    plan = cached_plan(le::load64(data + 32), reader);
+  }
+  Status status = parse_record(data, size, record, plan ? &plan->writer_blob : &own);
   if (status.ok() && record.record_size != size) {
     status = Status(Error::Corrupt, "%zu unexpected bytes after the %zu-byte record",
                     size - record.record_size, record.record_size);
@@ -184,6 +192,10 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
   // reader's own, so the reader serves as the writer schema and nothing needs parsing.
   if (is_blob(&own, record.schema, record.header.schema_size, record.header.schema_hash)) {
     return restore_record(record, reader, own.hash, reader, options);
+  }
+  if (plan && is_blob(&plan->writer_blob, record.schema, record.header.schema_size,
+                      record.header.schema_hash)) {
+    return restore_record(record, *plan->writer, record.header.schema_hash, reader, options);
   }
   ParsedSchema writer;
   status = parse_schema(record.schema, record.header.schema_size, writer);

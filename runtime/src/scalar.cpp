@@ -101,10 +101,24 @@ bool read_number(const Schema& schema, const TypeInfo& type, const std::uint8_t*
   }
 }
 
-bool convert_number(const Schema& schema, const TypeInfo& type, const Number& in, Number& out,
-                    char* why, std::size_t why_size) {
+namespace {
+
+// "<value> <problem> <type>" into `why`; false, for `return refuse(...)`. Only a refusal formats
+// the value: printing a number costs far more than converting it.
+__attribute__((noinline, cold)) bool refuse(const Number& in, const char* problem,
+                                            const char* type_name, char* why,
+                                            std::size_t why_size) {
   char text[64];
   format_number(in, text, sizeof text);
+  std::snprintf(why, why_size, "%s %s%s%s", text, problem, type_name ? " " : "",
+                type_name ? type_name : "");
+  return false;
+}
+
+}  // namespace
+
+bool convert_number(const Schema& schema, const TypeInfo& type, const Number& in, Number& out,
+                    char* why, std::size_t why_size) {
   if (type.kind == Kind::Float) {
     out.tag = Number::Tag::Floating;
     if (in.tag == Number::Tag::Floating) {
@@ -112,8 +126,7 @@ bool convert_number(const Schema& schema, const TypeInfo& type, const Number& in
       if (std::isfinite(value)) {
         const long double limit = type.size == 4 ? FLT_MAX : type.size == 8 ? DBL_MAX : LDBL_MAX;
         if (std::fabs(value) > limit) {
-          std::snprintf(why, why_size, "%s out of range of %s", text, type.name);
-          return false;
+          return refuse(in, "out of range of", type.name, why, why_size);
         }
       }
       out.f = type.size == 4 ? static_cast<float>(value)
@@ -129,8 +142,7 @@ bool convert_number(const Schema& schema, const TypeInfo& type, const Number& in
     if (round_trips && in.tag == Number::Tag::Signed && stored >= 0x1p63L) round_trips = false;
     if (round_trips && in.tag == Number::Tag::Unsigned && stored >= 0x1p64L) round_trips = false;
     if (!round_trips) {
-      std::snprintf(why, why_size, "%s not exactly representable as %s", text, type.name);
-      return false;
+      return refuse(in, "not exactly representable as", type.name, why, why_size);
     }
     out.f = stored;
     return true;
@@ -141,20 +153,17 @@ bool convert_number(const Schema& schema, const TypeInfo& type, const Number& in
   if (in.tag == Number::Tag::Floating) {
     const long double value = in.f;
     if (!std::isfinite(value) || std::trunc(value) != value) {
-      std::snprintf(why, why_size, "%s is not an integer for %s", text, type.name);
-      return false;
+      return refuse(in, "is not an integer for", type.name, why, why_size);
     }
     if (value < 0) {
       if (value < -0x1p63L) {
-        std::snprintf(why, why_size, "%s out of range of %s", text, type.name);
-        return false;
+        return refuse(in, "out of range of", type.name, why, why_size);
       }
       integer.tag = Number::Tag::Signed;
       integer.s = static_cast<std::int64_t>(value);
     } else {
       if (value >= 0x1p64L) {
-        std::snprintf(why, why_size, "%s out of range of %s", text, type.name);
-        return false;
+        return refuse(in, "out of range of", type.name, why, why_size);
       }
       integer.tag = Number::Tag::Unsigned;
       integer.u = static_cast<std::uint64_t>(value);
@@ -164,24 +173,21 @@ bool convert_number(const Schema& schema, const TypeInfo& type, const Number& in
     const bool zero_or_one = integer.tag == Number::Tag::Signed ? (integer.s == 0 || integer.s == 1)
                                                                : integer.u <= 1;
     if (!zero_or_one) {
-      std::snprintf(why, why_size, "%s is not a bool", text);
-      return false;
+      return refuse(in, "is not a bool", nullptr, why, why_size);
     }
     out.tag = Number::Tag::Unsigned;
     out.u = integer.tag == Number::Tag::Signed ? static_cast<std::uint64_t>(integer.s) : integer.u;
     return true;
   }
   if (!integer_fits(integer, bytes, to_signed, out)) {
-    std::snprintf(why, why_size, "%s out of range of %s", text, type.name);
-    return false;
+    return refuse(in, "out of range of", type.name, why, why_size);
   }
   if (type.kind == Kind::Enum) {
     const std::int64_t value = out.tag == Number::Tag::Signed ? out.s : static_cast<std::int64_t>(out.u);
     for (std::uint32_t e = 0; e < type.enumerator_count; ++e) {
       if (type.enumerators[e].value == value) return true;
     }
-    std::snprintf(why, why_size, "%s is not an enumerator of %s", text, type.name);
-    return false;
+    return refuse(in, "is not an enumerator of", type.name, why, why_size);
   }
   return true;
 }
