@@ -4,6 +4,7 @@
 #ifndef SYMCR_SRC_ENGINE_HPP
 #define SYMCR_SRC_ENGINE_HPP
 
+#include <cstdarg>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -13,6 +14,12 @@
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {
+
+// For the payload decoders: sets `error`, unless it already holds one, to Corrupt "invalid
+// payload: <format...>", and returns it. Out of line and cold, so that its message buffer is
+// not in the frames of the recursive decoders (their depth is bounded, their frames not).
+__attribute__((format(printf, 2, 0), noinline, cold)) const Status& set_corrupt_payload(
+    Status& error, const char* format, va_list args);
 
 // The serialised form (docs/format.md §2) of a running build's schema and its FNV-1a 64 hash.
 // Computed once per Schema object and cached; thread-compatible (compute before sharing).

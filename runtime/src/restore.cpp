@@ -142,16 +142,14 @@ class Restorer {
 
  private:
   // ---- errors and report ---------------------------------------------------------------
-  __attribute__((format(printf, 2, 3))) Status corrupt(const char* format, ...) {
-    char buffer[200];
+  __attribute__((format(printf, 2, 3))) const Status& corrupt(const char* format, ...) {
     va_list args;
     va_start(args, format);
-    std::vsnprintf(buffer, sizeof buffer, format, args);
+    set_corrupt_payload(error_, format, args);
     va_end(args);
-    if (error_.ok()) error_ = Status(Error::Corrupt, "invalid payload: %s", buffer);
     return error_;
   }
-  bool truncated(const char* what) {
+  __attribute__((noinline, cold)) bool truncated(const char* what) {
     corrupt("truncated in %s", what);
     return false;
   }
@@ -182,8 +180,8 @@ class Restorer {
   }
 
   // A value-level rejection: the reader keeps its value. Concrete paths are capped per field.
-  void reject_value(std::uint32_t counter, const char* format, ...)
-      __attribute__((format(printf, 3, 4))) {
+  __attribute__((format(printf, 3, 4), noinline)) void reject_value(std::uint32_t counter,
+                                                                    const char* format, ...) {
     if (mode_ != Mode::Check) return;
     ++value_rejections_;
     if (++rejection_counts_[counter] > kMaxConcretePerField) return;

@@ -3,6 +3,7 @@
 #include <cstdarg>
 #include <cstdio>
 
+#include "engine.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr {
@@ -16,6 +17,17 @@ Status::Status(Error error, const char* format, ...) : error_(error) {
   va_end(args);
   if (written < 0) message_[0] = '\0';
 }
+
+namespace detail {
+
+const Status& set_corrupt_payload(Status& error, const char* format, va_list args) {
+  char buffer[200];
+  std::vsnprintf(buffer, sizeof buffer, format, args);
+  if (error.ok()) error = Status(Error::Corrupt, "invalid payload: %s", buffer);
+  return error;
+}
+
+}  // namespace detail
 
 const char* error_name(Error error) {
   switch (error) {

@@ -33,16 +33,14 @@ class Walker {
   }
 
  private:
-  __attribute__((format(printf, 2, 3))) Status fail(const char* format, ...) {
-    char buffer[200];
+  __attribute__((format(printf, 2, 3))) const Status& fail(const char* format, ...) {
     va_list args;
     va_start(args, format);
-    std::vsnprintf(buffer, sizeof buffer, format, args);
+    set_corrupt_payload(error_, format, args);
     va_end(args);
-    if (error_.ok()) error_ = Status(Error::Corrupt, "invalid payload: %s", buffer);
     return error_;
   }
-  bool truncated() { return fail("truncated at %s", path_.c_str()).ok(); }
+  __attribute__((noinline, cold)) bool truncated() { return fail("truncated at %s", path_.c_str()).ok(); }
 
   bool walk_all() {
     in_ = WireReader(payload_, size_);

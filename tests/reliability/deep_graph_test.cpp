@@ -4,8 +4,12 @@
 //   - a container chain nested 10^5 deep is refused at save, cleanly, at the format's nesting
 //     limit (docs/format.md §3: 1000), and one within the limit round-trips;
 //   - a crafted payload nesting 10^6 levels is refused by restore and by the reader-less
-//     decoder (symcr inspect), with the live state untouched.
+//     decoder (symcr inspect), with the live state untouched;
+//   - at the deepest nesting the format allows, save, restore and the decoder fit in a 1 MiB
+//     thread stack (optimised, uninstrumented builds), as an embedded task's might be.
 // The 10^6-node *cyclic* graph with sharing is EnginePerformance.MillionNodeCyclicGraph.
+#include <pthread.h>
+
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -69,6 +73,64 @@ TEST(DeepGraph, ContainerChainWithinTheNestingLimitRoundTrips) {
   }
   EXPECT_EQ(depth, 900u);
   dismantle_chain(chain);
+}
+
+// Sanitizers and -O0 make frames several times larger: the bound is for optimised builds.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__) || !defined(__OPTIMIZE__)
+constexpr std::size_t kSmallStack = std::size_t{64} << 20;
+#else
+constexpr std::size_t kSmallStack = std::size_t{1} << 20;
+#endif
+
+struct DeepestChainRun {
+  std::size_t depth = 0;           // the deepest chain that saved
+  std::vector<std::uint8_t> buffer;
+  bool restored = false;
+  std::size_t restored_depth = 0;
+  bool decoded = false;
+};
+
+void* save_and_restore_deepest_chain(void* argument) {
+  auto& run = *static_cast<DeepestChainRun*>(argument);
+  for (std::size_t depth = 1001; depth > 990 && run.depth == 0; --depth) {
+    build_chain(chain, depth);
+    if (symcr::checkpoint_to_buffer(chain_schema(), run.buffer).ok()) run.depth = depth;
+    dismantle_chain(chain);
+  }
+  if (run.depth == 0) return nullptr;
+  const symcr::Report report =
+      symcr::restore_from_buffer(chain_schema(), run.buffer.data(), run.buffer.size());
+  run.restored = report.ok();
+  for (const Chain* at = &chain; !at->inner.empty(); at = &at->inner[0]) ++run.restored_depth;
+  dismantle_chain(chain);
+  struct LeafCounter : symcr::detail::ValueVisitor {
+    void leaf(const char*, const symcr::TypeInfo&, const std::uint8_t*, std::size_t,
+              const char*) override {
+      ++leaves;
+    }
+    std::size_t leaves = 0;
+  } visitor;
+  std::vector<std::uint8_t> payload(run.buffer.begin() + 56 + symcr::detail::le::load32(run.buffer.data() + 40),
+                                    run.buffer.end());
+  run.decoded = symcr::detail::visit_payload(chain_schema(), payload.data(), payload.size(),
+                                             visitor).ok() &&
+                visitor.leaves == run.depth + 1;  // one value per level
+  return nullptr;
+}
+
+TEST(DeepGraph, DeepestAllowedNestingFitsInASmallThreadStack) {
+  pthread_attr_t attributes;
+  ASSERT_EQ(pthread_attr_init(&attributes), 0);
+  ASSERT_EQ(pthread_attr_setstacksize(&attributes, kSmallStack), 0);
+  DeepestChainRun run;
+  pthread_t thread;
+  ASSERT_EQ(pthread_create(&thread, &attributes, save_and_restore_deepest_chain, &run), 0);
+  ASSERT_EQ(pthread_join(thread, nullptr), 0);
+  pthread_attr_destroy(&attributes);
+  ASSERT_GE(run.depth, 999u) << "no chain near the nesting limit (1000) saved";
+  EXPECT_TRUE(run.restored);
+  EXPECT_EQ(run.restored_depth, run.depth);
+  EXPECT_TRUE(run.decoded);
 }
 
 TEST(DeepGraph, ContainerChainHundredThousandDeepIsRefusedAtSaveWithoutRecursing) {
