@@ -489,6 +489,29 @@ class Planner {
       add_run(n, wire + run.wire, dst + run.dst, run.length);
       if (n.copy_runs.size() > kMaxCopyRuns) return false;
     }
+    for (CopyBits bits : child.copy_bits) {
+      if (n.copy_bits.size() >= kMaxCopyBools) return false;
+      bits.wire += static_cast<std::uint32_t>(wire);
+      bits.dst += static_cast<std::uint32_t>(dst);
+      n.copy_bits.push_back(bits);
+    }
+    return true;
+  }
+
+  // An integer or bool bit-field whose writer and reader types are identical, at `wire`.
+  bool add_bit_field(PlanNode& n, const FieldPlan& field, std::uint64_t wire) {
+    const PlanNode* child = field.node;
+    if (!child || child->validated || child->action != Action::Scalar || !child->identical ||
+        n.copy_bits.size() >= kMaxCopyBools || wire + 8 > kMaxCopyWire) {
+      return false;
+    }
+    const TypeInfo& wt = w_.types[child->writer];
+    const bool integer = wt.kind == Kind::Int || wt.kind == Kind::UInt || wt.kind == Kind::Bool;
+    if (!integer || (wt.size != 1 && wt.size != 2 && wt.size != 4 && wt.size != 8)) return false;
+    if (wt.kind == Kind::Bool) n.copy_bools.push_back(static_cast<std::uint32_t>(wire));
+    n.copy_bits.push_back(CopyBits{static_cast<std::uint32_t>(wire), field.reader_offset,
+                                   field.bit_offset, field.bit_width,
+                                   static_cast<std::uint8_t>(wt.size), wt.kind == Kind::Int});
     return true;
   }
 
@@ -502,6 +525,8 @@ class Planner {
       n.copy_runs.shrink_to_fit();
       n.copy_bools.clear();
       n.copy_bools.shrink_to_fit();
+      n.copy_bits.clear();
+      n.copy_bits.shrink_to_fit();
     }
   }
 
@@ -541,7 +566,12 @@ class Planner {
       case Action::Struct: {
         std::uint64_t wire = 0;
         for (const FieldPlan& field : n.fields) {
-          if (field.reader_field == kNoType || field.bit_width || field.has_range) return false;
+          if (field.reader_field == kNoType || field.has_range) return false;
+          if (field.bit_width) {
+            if (!add_bit_field(n, field, wire)) return false;
+            wire += w_.types[field.node->writer].size;
+            continue;
+          }
           if (!child_copy_only(field.node)) return false;
           if (!append_copy(n, *field.node, wire, field.reader_offset)) return false;
           wire += field.node->copy_wire;

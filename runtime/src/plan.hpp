@@ -60,6 +60,17 @@ struct CopyRun {
   std::uint32_t length;
 };
 
+// A bit-field of a copy-only value: the integer in `size` wire bytes at `wire` goes into the
+// `width` bits from `bit_offset` of the storage unit at `dst` in the reader, if it fits.
+struct CopyBits {
+  std::uint32_t wire;
+  std::uint32_t dst;
+  std::uint16_t bit_offset;
+  std::uint16_t width;
+  std::uint8_t size;
+  bool is_signed;
+};
+
 struct PlanNode {
   std::uint32_t writer = kNoType;
   std::uint32_t reader = kNoType;
@@ -83,13 +94,15 @@ struct PlanNode {
   bool flat_reader = false;  // reader type is plain bytes (staged by copy)
 
   // Copy-only (structs, arrays, identical scalars and unions all the way down: every field
-  // kept, no conversion, range, bit-field or nested validator): restoring it is checking the
-  // bools and copying `copy_runs`, over exactly `copy_wire` payload bytes.
+  // kept, no conversion, range or nested validator; integer bit-fields allowed): restoring it
+  // is checking the bools and bit-field values and copying `copy_runs` and `copy_bits`, over
+  // exactly `copy_wire` payload bytes.
   bool copy_only = false;
   std::uint8_t copy_state = 0;  // planner: 0 not computed, 1 computed or under way
   std::uint32_t copy_wire = 0;
   std::vector<CopyRun> copy_runs;
   std::vector<std::uint32_t> copy_bools;  // wire offsets of bools, each must be 0 or 1
+  std::vector<CopyBits> copy_bits;
 };
 
 struct RootPlan {

@@ -28,6 +28,46 @@
 namespace symcr::detail {
 namespace {
 
+// ---- copy-only values (PlanNode::copy_only) ------------------------------------------------
+std::uint64_t bit_field_raw(const CopyBits& bits, const std::uint8_t* wire) {
+  std::uint64_t raw = 0;
+  std::memcpy(&raw, wire + bits.wire, bits.size);  // little-endian, as the copy runs assume
+  return raw;
+}
+
+Number bit_field_value(const CopyBits& bits, const std::uint8_t* wire) {
+  Number value;
+  const std::uint64_t raw = bit_field_raw(bits, wire);
+  if (bits.is_signed) {
+    const unsigned unused = 64 - 8 * bits.size;
+    value.tag = Number::Tag::Signed;
+    value.s = static_cast<std::int64_t>(raw << unused) >> unused;
+  } else {
+    value.tag = Number::Tag::Unsigned;
+    value.u = raw;
+  }
+  return value;
+}
+
+// The first pass's checks of a copy-only value at `wire`: bools are 0 or 1, bit-field values
+// fit their widths. False sends the value to the general path, which names the fault.
+bool copy_only_valid(const PlanNode& n, const std::uint8_t* wire) {
+  for (std::uint32_t offset : n.copy_bools) {
+    if (wire[offset] > 1) return false;
+  }
+  for (const CopyBits& bits : n.copy_bits) {
+    if (!fits_bits(bit_field_value(bits, wire), bits.width, bits.is_signed)) return false;
+  }
+  return true;
+}
+
+void copy_only_write(const PlanNode& n, const std::uint8_t* wire, std::uint8_t* dst) {
+  for (const CopyRun& run : n.copy_runs) std::memcpy(dst + run.dst, wire + run.wire, run.length);
+  for (const CopyBits& bits : n.copy_bits) {
+    store_bits(dst + bits.dst, bits.bit_offset, bits.width, bit_field_value(bits, wire));
+  }
+}
+
 enum class Mode : std::uint8_t {
   Check,  // pass 1: read and record, never write
   Stage,  // pass 1, inside a validated value: write into a staged copy, record nothing
@@ -421,20 +461,16 @@ class Restorer {
     return corrupt("unknown kind").ok();
   }
 
-  // A copy-only value in one step: check its bools (pass 1), copy its runs (writing passes).
-  // False, consuming nothing, when the bytes are short or a bool is invalid: the general path
-  // then finds and reports the same error at its place.
+  // A copy-only value in one step: check it (pass 1), copy it (writing passes). False,
+  // consuming nothing, when the bytes are short or a bool or bit-field value is invalid: the
+  // general path then finds and reports the same error at its place.
   __attribute__((noinline)) bool copy(const PlanNode* n, std::uint8_t* dst) {
     if (in_.remaining() < n->copy_wire) return false;
     const std::uint8_t* base = in_.position();
-    if (mode_ == Mode::Check) {
-      for (std::uint32_t offset : n->copy_bools) {
-        if (base[offset] > 1) return false;
-      }
-    }
-    if (dst && writing()) {
-      for (const CopyRun& run : n->copy_runs) std::memcpy(dst + run.dst, base + run.wire, run.length);
-    }
+    // Checked in every pass: a value the first pass sent to the general path (a rejected
+    // bit-field value) must take it in the second too.
+    if (!copy_only_valid(*n, base)) return false;
+    if (dst && writing()) copy_only_write(*n, base, dst);
     in_.seek(base + n->copy_wire);
     return true;
   }
@@ -1182,9 +1218,7 @@ bool restore_copy_only(const Plan& plan, const std::uint8_t* payload, std::size_
   const Schema& reader = *plan.reader;
   const std::uint8_t* at = payload;
   for (const RootPlan& root : plan.roots) {
-    for (std::uint32_t offset : root.node->copy_bools) {
-      if (at[offset] > 1) return false;
-    }
+    if (!copy_only_valid(*root.node, at)) return false;
     at += root.node->copy_wire;
   }
   std::uint32_t heap_count = 0, reference_count = 0;
@@ -1194,8 +1228,7 @@ bool restore_copy_only(const Plan& plan, const std::uint8_t* payload, std::size_
   if (!apply) return true;
   at = payload;
   for (const RootPlan& root : plan.roots) {
-    auto* dst = static_cast<std::uint8_t*>(reader.roots[root.reader_root].address);
-    for (const CopyRun& run : root.node->copy_runs) std::memcpy(dst + run.dst, at + run.wire, run.length);
+    copy_only_write(*root.node, at, static_cast<std::uint8_t*>(reader.roots[root.reader_root].address));
     at += root.node->copy_wire;
   }
   return true;

@@ -290,6 +290,120 @@ TEST(FastPath, CopyOnlyPayloadInStrictModeStillRefusesLossyPlans) {
   expect_entry(lenient, "counter", symcr::Decision::Dropped);
 }
 
+// Integer bit-fields keep a struct copy-only: their values are checked against the widths and
+// inserted bit by bit.
+struct Bits {
+  std::uint8_t flag : 1;
+  std::uint8_t mode : 3;
+  std::int16_t delta : 5;
+  bool on : 1;
+  std::int32_t whole;
+};
+Bits bits;
+
+// The first bit `set` turns on in a zeroed Bits: the bit-field's position from the struct's
+// start (the schema's storage unit is then offset 0).
+template <class Set>
+std::uint16_t bit_position(Set set) {
+  Bits probe;
+  std::memset(&probe, 0, sizeof probe);
+  set(probe);
+  unsigned char bytes[sizeof probe];
+  std::memcpy(bytes, &probe, sizeof probe);
+  for (std::uint16_t bit = 0; bit < 8 * sizeof probe; ++bit) {
+    if (bytes[bit / 8] & (1u << (bit % 8))) return bit;
+  }
+  return 0xFFFF;
+}
+
+const symcr::Schema& bits_schema() {
+  static const std::uint16_t flag_at = bit_position([](Bits& b) { b.flag = 1; });
+  static const std::uint16_t mode_at = bit_position([](Bits& b) { b.mode = 1; });
+  static const std::uint16_t delta_at = bit_position([](Bits& b) { b.delta = 1; });
+  static const std::uint16_t on_at = bit_position([](Bits& b) { b.on = true; });
+  static const symcr::FieldInfo fields[] = {
+      bit_field("flag", 0, flag_at, 1), bit_field("mode", 0, mode_at, 3),
+      bit_field("delta", 1, delta_at, 5), bit_field("on", 2, on_at, 1),
+      field("whole", 3, offsetof(Bits, whole))};
+  static const symcr::TypeInfo types[] = {
+      scalar("uint8", Kind::UInt, 1), scalar("int16", Kind::Int, 2),
+      scalar("bool", Kind::Bool, 1),  scalar("int32", Kind::Int, 4),
+      record("Bits", sizeof(Bits), alignof(Bits), fields, 5),
+  };
+  static const symcr::RootInfo roots[] = {{"bits", 4, &bits, 0, nullptr}};
+  static const symcr::Schema schema{types, 5, roots, 1};
+  return schema;
+}
+
+TEST(FastPath, BitFieldsKeepAStructCopyOnlyAndRoundTrip) {
+  bits.flag = 1;
+  bits.mode = 5;
+  bits.delta = -9;
+  bits.on = true;
+  bits.whole = -123456;
+  const Saved saved = save(bits_schema());
+  ASSERT_EQ(saved.payload.size(), 1 + 1 + 2 + 1 + 4 + 4 + 4u);  // wire: each value at full width
+  symcr::detail::ParsedSchema writer;
+  EXPECT_TRUE(plan(saved, bits_schema(), writer)->copy_only_payload);
+  std::memset(&bits, 0xFF, sizeof bits);  // every bit set: restore must clear the zero bits
+  const symcr::Report report = load(saved, bits_schema(), true);
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(bits.flag, 1);
+  EXPECT_EQ(bits.mode, 5);
+  EXPECT_EQ(bits.delta, -9);
+  EXPECT_TRUE(bits.on);
+  EXPECT_EQ(bits.whole, -123456);
+
+  bits.flag = 0;
+  bits.mode = 0;
+  bits.delta = 15;
+  bits.on = false;
+  const Saved other = save(bits_schema());
+  std::memset(&bits, 0xFF, sizeof bits);
+  ASSERT_TRUE(load(other, bits_schema()).ok());
+  EXPECT_EQ(bits.flag, 0);
+  EXPECT_EQ(bits.mode, 0);
+  EXPECT_EQ(bits.delta, 15);
+  EXPECT_FALSE(bits.on);
+}
+
+TEST(FastPath, BitFieldValuesBeyondTheirWidthsAreRejectedLikeTheGeneralPath) {
+  bits.flag = 1;
+  bits.mode = 2;
+  bits.delta = 3;
+  bits.on = false;
+  bits.whole = 4;
+  const Saved good = save(bits_schema());
+  struct Case {
+    const char* path;
+    std::size_t offset;  // wire byte to overwrite
+    std::uint8_t value;
+  };
+  const Case cases[] = {{"bits.flag", 0, 2}, {"bits.mode", 1, 8}, {"bits.delta", 2, 16}};
+  for (const Case& c : cases) {
+    Saved saved = good;
+    saved.payload[c.offset] = c.value;
+    bits.flag = 0;
+    bits.mode = 7;
+    bits.delta = -1;
+    bits.whole = 0;
+    const symcr::Report report = load(saved, bits_schema());
+    ASSERT_TRUE(report.ok()) << c.path << ": " << report.to_text();
+    expect_entry(report, c.path, symcr::Decision::Rejected, "does not fit in");
+    EXPECT_EQ(bits.whole, 4) << c.path;  // the rest is restored
+    // The rejected field kept the reader's value, the others were restored.
+    EXPECT_EQ(bits.flag, c.offset == 0 ? 0 : 1) << c.path;
+    EXPECT_EQ(bits.mode, c.offset == 1 ? 7 : 2) << c.path;
+    EXPECT_EQ(bits.delta, c.offset == 2 ? -1 : 3) << c.path;
+  }
+  Saved bad_bool = good;
+  bad_bool.payload[4] = 3;  // the bool bit-field's wire byte
+  bits.whole = 0;
+  const symcr::Report refused = load(bad_bool, bits_schema());
+  EXPECT_FALSE(refused.ok());
+  EXPECT_EQ(bits.whole, 0);  // nothing written
+}
+
 TEST(FastPath, ReportsAreIndependentCopies) {
   flat = Flat{1, true, 1.0, {1, 2, 3}, {true, false}};
   const Saved saved = save(flat_schema());
