@@ -124,6 +124,12 @@ bool hasValidate(const ProgramModel &Program, const TypeModel &Type) {
          !Program.TranslationUnits[Type.HomeTU].IsC;
 }
 
+/// The type has a user's symcr_migrate and a C++ home TU to call it from.
+bool hasMigrate(const ProgramModel &Program, const TypeModel &Type) {
+  return Type.HasMigrate && !Type.Spelling.empty() &&
+         !Program.TranslationUnits[Type.HomeTU].IsC;
+}
+
 std::string renamedList(const std::vector<std::string> &Names) {
   std::string Out = "{";
   for (const std::string &N : Names)
@@ -149,6 +155,9 @@ std::string emitSchemaSource(const ProgramModel &Program) {
       OS << "extern const symcr::Lifecycle lifecycle_" << I << ";\n";
     if (hasValidate(Program, T))
       OS << "bool validate_" << I << "(const void* object);\n";
+    if (hasMigrate(Program, T))
+      OS << "void migrate_" << I
+         << "(void* object, const symcr::OldValues& old);\n";
   }
   OS << "}  // namespace symcr_gen\n\n";
   // C types' lifecycles are C functions in their C wrappers (calloc/free).
@@ -238,7 +247,10 @@ std::string emitSchemaSource(const ProgramModel &Program) {
          << ", "
          << (hasValidate(Program, T) ? "&symcr_gen::validate_" + Index
                                      : std::string("nullptr"))
-         << ", " << TypeRenamed[I] << "},  // " << Index << "\n";
+         << ", " << TypeRenamed[I] << ", "
+         << (hasMigrate(Program, T) ? "&symcr_gen::migrate_" + Index
+                                    : std::string("nullptr"))
+         << "},  // " << Index << "\n";
     }
     OS << "};\n";
   }
@@ -400,6 +412,12 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
          << "bool validate_" << I << "(const void* object) {\n"
          << "  return symcr_validate(*static_cast<const " << Type
          << "*>(object));\n}\n";
+    if (hasMigrate(Program, T))
+      OS << "void migrate_" << I
+         << "(void* object, const symcr::OldValues& old);\n"
+         << "void migrate_" << I
+         << "(void* object, const symcr::OldValues& old) {\n"
+         << "  symcr_migrate(*static_cast<" << Type << "*>(object), old);\n}\n";
   }
   OS << "}  // namespace symcr_gen\n\n";
   for (std::uint32_t I : Roots)

@@ -92,6 +92,10 @@ struct TypeModel {
   /// The program declares `bool symcr_validate(const T&)`: the home TU's
   /// wrapper defines a thunk calling it for TypeInfo::validate.
   bool HasValidate = false;
+  /// The program declares `void symcr_migrate(T&, const symcr::OldValues&)`:
+  /// the home TU's wrapper defines a thunk calling it for TypeInfo::migrate,
+  /// and the type is flagged kTypeMigrated (so schema files record it).
+  bool HasMigrate = false;
   /// Index of the TU whose wrapper defines this type's ops and layout checks.
   unsigned HomeTU = 0;
   /// Describes the layout and selection; two TUs producing the same name with a

@@ -110,6 +110,8 @@ public:
   bool VisitFunctionDecl(FunctionDecl *FD) {
     if (FD->getIdentifier() && FD->getName() == "symcr_validate")
       Validators.push_back(FD);
+    if (FD->getIdentifier() && FD->getName() == "symcr_migrate")
+      Migrators.push_back(FD);
     return true;
   }
   bool VisitTypedefNameDecl(TypedefNameDecl *TD) {
@@ -172,6 +174,8 @@ public:
   std::map<std::string, std::vector<TypedefNameDecl *>> Typedefs;
   /// Every function named symcr_validate (templates' patterns included).
   std::vector<FunctionDecl *> Validators;
+  /// Every function named symcr_migrate (templates' patterns included).
+  std::vector<FunctionDecl *> Migrators;
 };
 
 /// Selections resolved from directives, keyed by record names (either the
@@ -191,6 +195,9 @@ struct Selections {
   /// Record types (canonical) that have a usable `bool symcr_validate(const
   /// T&)` in this TU.
   std::set<const Type *> Validated;
+  /// Record types (canonical) that have a usable `void symcr_migrate(T&, const
+  /// symcr::OldValues&)` in this TU.
+  std::set<const Type *> Migrated;
   struct RootRequest {
     bool Shallow = false;
     Location Where;
@@ -548,6 +555,8 @@ std::string TypeWalker::fingerprint(const TypeModel &Model) const {
   F += NameOf(Model.Element);
   if (Model.HasValidate)
     F += "|validate";
+  if (Model.HasMigrate)
+    F += "|migrate";
   for (const FieldModel &Field : Model.Fields) {
     F += "|" + Field.Name + ":" + NameOf(Field.Type) + "@" +
          std::to_string(Field.Offset) + "." + std::to_string(Field.BitOffset) +
@@ -1339,6 +1348,12 @@ std::uint32_t TypeWalker::record(QualType Type, const RecordDecl *Decl,
     if (CRD->hasDefaultConstructor())
       Model.NeedsLifecycle = true;
   }
+  if (CRD && !Model.Spelling.empty() &&
+      Select.Migrated.count(
+          Type.getCanonicalType().getUnqualifiedType().getTypePtr())) {
+    Model.HasMigrate = true;
+    Model.Flags |= symcr::kTypeMigrated;
+  }
   store(Index, std::move(Model), C);
   return Index;
 }
@@ -1478,6 +1493,64 @@ void findValidators(ASTContext &Context,
   }
 }
 
+/// Migration hooks: a non-template `void symcr_migrate(T&, const
+/// symcr::OldValues&)` for a class T, found like validation hooks (T's
+/// namespace, a hidden friend, or the global namespace). Any other declaration
+/// of that name whose first parameter is a class is an error rather than a
+/// silently unused hook.
+void findMigrators(ASTContext &Context,
+                   const std::vector<FunctionDecl *> &Candidates,
+                   std::set<const Type *> &Migrated, Diagnostics &Diags) {
+  for (const FunctionDecl *FD : Candidates) {
+    if (FD->getTemplatedKind() != FunctionDecl::TK_NonTemplate ||
+        FD->isDependentContext() || FD->getNumParams() == 0 ||
+        isa<CXXMethodDecl>(FD))
+      continue;
+    QualType Param = FD->getParamDecl(0)->getType().getCanonicalType();
+    const RecordDecl *RD = Param.getNonReferenceType()->getAsRecordDecl();
+    if (!RD)
+      continue;
+    Location Where = locationOf(Context, FD->getLocation());
+    PrintingPolicy Policy = Context.getPrintingPolicy();
+    Policy.SuppressTagKeyword = true;
+    std::string Wanted =
+        "'void symcr_migrate(" +
+        Param.getNonReferenceType().getUnqualifiedType().getAsString(Policy) +
+        "&, const symcr::OldValues&)'";
+    auto IsOldValuesReference = [](QualType T) {
+      T = T.getCanonicalType();
+      if (!T->isLValueReferenceType())
+        return false;
+      QualType Pointee = T.getNonReferenceType();
+      const RecordDecl *Old = Pointee->getAsRecordDecl();
+      return Pointee.isConstQualified() && !Pointee.isVolatileQualified() &&
+             Old && Old->getQualifiedNameAsString() == "symcr::OldValues";
+    };
+    if (FD->getNumParams() != 2 || !Param->isLValueReferenceType() ||
+        Param.getNonReferenceType().isConstQualified() ||
+        Param.getNonReferenceType().isVolatileQualified() ||
+        !IsOldValuesReference(FD->getParamDecl(1)->getType()) ||
+        !FD->getReturnType().getCanonicalType()->isVoidType()) {
+      Diags.error(Where, "a migration hook must be declared " + Wanted);
+      continue;
+    }
+    const DeclContext *Home = FD->getDeclContext()->getRedeclContext();
+    const DeclContext *Enclosing =
+        RD->getEnclosingNamespaceContext()->getRedeclContext();
+    if (!Home->isTranslationUnit() && !Home->Equals(Enclosing)) {
+      Diags.error(Where, "migration hook " + Wanted +
+                             " must be declared in the namespace of its "
+                             "class (or as its friend, or globally), where "
+                             "argument-dependent lookup finds it");
+      continue;
+    }
+    Migrated.insert(Param.getNonReferenceType()
+                        .getUnqualifiedType()
+                        .getCanonicalType()
+                        .getTypePtr());
+  }
+}
+
 bool recordHasMember(const RecordDecl *RD, const std::string &Member) {
   const RecordDecl *Def = RD->getDefinition();
   if (!Def)
@@ -1504,8 +1577,10 @@ void SchemaBuilder::addTranslationUnit(
   Index.TraverseDecl(Context.getTranslationUnitDecl());
   Selections Select;
 
-  if (Context.getLangOpts().CPlusPlus)
+  if (Context.getLangOpts().CPlusPlus) {
     findValidators(Context, Index.Validators, Select.Validated, Diags);
+    findMigrators(Context, Index.Migrators, Select.Migrated, Diags);
+  }
 
   TypeWalker Namer(Context, S, TUIndex, Program, Diags, Select);
   auto CanonicalName = [&](const RecordDecl *RD) {

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <map>
 #include <mutex>
+#include <set>
 #include <utility>
 
 #include "plan.hpp"
@@ -53,6 +54,7 @@ class Planner {
         plan_.heap_nodes[type.element] = node(type.element, find_reader_type(w_.types[type.element]));
       }
     }
+    decide_migrations();
     build_report();
     for (PlanNode& n : plan_.nodes) compute_copy(n);
     compute_copy_only_payload();
@@ -417,6 +419,102 @@ class Planner {
     return kNoType;
   }
 
+  // ---- migration hooks ------------------------------------------------------------------
+  // A node "differs" when restoring it changes values beyond a plain restore: a field removed,
+  // added, renamed or converted, an array length, a container's or optional's elements, a
+  // variant's alternatives, at any depth. Layout (offsets, field order, bit-field widths) and
+  // type names do not count: the values a hook would see are then the reader's own. Pointers do
+  // not either: their pointees are objects of their own, migrated by their own hooks.
+  // Computed as a least fixed point, since a recursive type's answer depends on itself.
+  void decide_migrations() {
+    bool any_hook = false;
+    for (std::uint32_t t = 0; t < r_.type_count; ++t) {
+      any_hook = any_hook || r_.types[t].migrate || (r_.types[t].flags & kTypeMigrated);
+    }
+    if (!any_hook) return;
+    for (bool grew = true; grew;) {
+      grew = false;
+      // Children are created after their parents: backwards, most answers settle in one pass.
+      for (auto it = plan_.nodes.rbegin(); it != plan_.nodes.rend(); ++it) {
+        if (!differs_.count(&*it) && changes_values(*it)) {
+          differs_.insert(&*it);
+          grew = true;
+        }
+      }
+    }
+    for (PlanNode& n : plan_.nodes) {
+      if (n.reader == kNoType || n.action != Action::Struct) continue;
+      const TypeInfo& rt = r_.types[n.reader];
+      n.migrates = (rt.migrate || (rt.flags & kTypeMigrated)) && differs_.count(&n);
+      n.migrate = n.migrates ? rt.migrate : nullptr;
+    }
+  }
+
+  bool differs(const PlanNode* n) const { return differs_.count(n) != 0; }
+
+  // Whether `n` itself changes values, or a part already known to differ.
+  bool changes_values(const PlanNode& n) const {
+    if (n.reader == kNoType) return true;
+    const TypeInfo& wt = w_.types[n.writer];
+    const TypeInfo& rt = r_.types[n.reader];
+    switch (n.action) {
+      case Action::Skip: case Action::Reject: return true;
+      case Action::Scalar: return !n.identical;
+      case Action::Union: case Action::Pointer: case Action::SharedPtr: return false;
+      case Action::String: return n.decision != Decision::Restored;
+      case Action::Struct: {
+        if (wt.field_count != rt.field_count) return true;
+        for (const FieldPlan& field : n.fields) {
+          if (field.reader_field == kNoType ||
+              !same_name(field.name, rt.fields[field.reader_field].name) || differs(field.node)) {
+            return true;
+          }
+        }
+        return false;
+      }
+      case Action::Array:
+        return wt.count != n.reader_count || differs(n.element);
+      case Action::Container: case Action::Optional: case Action::UniquePtr:
+        return differs(n.element);
+      case Action::Variant:
+        if (wt.alternative_count != rt.alternative_count) return true;
+        for (std::size_t a = 0; a < n.alternatives.size(); ++a) {
+          if (n.alternative_map[a] != a || differs(n.alternatives[a])) return true;
+        }
+        return false;
+    }
+    return true;
+  }
+
+  // The node whose hook runs for a value: the value's own, or its optional's/unique_ptr's.
+  static const PlanNode* migration_of(const PlanNode* n) {
+    for (int i = 0; n && i < kMaxPlanDepth; ++i) {
+      if (n->migrates) return n;
+      if (n->action != Action::Optional && n->action != Action::UniquePtr) return nullptr;
+      n = n->element;
+    }
+    return nullptr;
+  }
+
+  std::string migrated_by(const PlanNode& n) const {
+    return std::string("migrated by symcr_migrate(") + r_.types[n.reader].name + ")";
+  }
+
+  // A root's or field's entry also says that its value is migrated.
+  void note_migration(const PlanNode* n, Decision& decision, std::string& detail) const {
+    const PlanNode* migrated = migration_of(n);
+    if (!migrated) return;
+    if (decision == Decision::Restored) decision = Decision::Converted;
+    detail += (detail.empty() ? "" : "; ") + migrated_by(*migrated);
+  }
+
+  // An element (or pointee, or variant alternative) has no entry of its own unless migrated.
+  void add_migration_entry(const PlanNode* n, const std::string& path) {
+    if (const PlanNode* migrated = migration_of(n)) {
+      add(path, Decision::Converted, migrated_by(*migrated), false);
+    }
+  }
+
   // ---- writer minimum sizes (bounds container counts in hostile payloads) ---------------
   void compute_min_wire() {
     plan_.min_wire.assign(w_.type_count, ~std::uint64_t{0});
@@ -543,7 +641,7 @@ class Planner {
   }
 
   bool child_copy_only(const PlanNode* child) {
-    if (!child || child->validated) return false;
+    if (!child || child->validated || child->migrates) return false;
     auto& mutable_child = const_cast<PlanNode&>(*child);  // a node of plan_.nodes
     compute_copy(mutable_child);
     return child->copy_only;
@@ -564,6 +662,7 @@ class Planner {
         add_run(n, 0, 0, wt.size);
         return true;
       case Action::Struct: {
+        if (n.migrates) return false;  // the hook runs after the fields are written
         std::uint64_t wire = 0;
         for (const FieldPlan& field : n.fields) {
           if (field.reader_field == kNoType || field.has_range) return false;
@@ -609,6 +708,7 @@ class Planner {
         decision = decision == Decision::Rejected ? decision : Decision::Converted;
         detail = std::string("renamed from ") + writer.name + (detail.empty() ? "" : "; ") + detail;
       }
+      note_migration(root.node, decision, detail);
       add(reader.name, decision, detail, root.node->lossy && root.node->action != Action::Struct);
       expand(root.node, reader.name);
     }
@@ -620,7 +720,9 @@ class Planner {
     // Pointees once each, named by type: their fields are reached through any pointer.
     for (std::size_t i = 0; i < pointees_.size(); ++i) {
       const PlanNode* pointee = pointees_[i];
-      expand(pointee, std::string("(") + w_.types[pointee->writer].name + ")");
+      const std::string path = std::string("(") + w_.types[pointee->writer].name + ")";
+      add_migration_entry(pointee, path);
+      expand(pointee, path);
     }
     for (const ReportEntry& entry : plan_.entries) plan_.any_lossy = plan_.any_lossy || entry.lossy;
   }
@@ -650,7 +752,16 @@ class Planner {
           const FieldPlan& field = n->fields[f];
           const FieldInfo& writer = wt.fields[f];
           if (field.reader_field == kNoType) {
-            add(path + "." + writer.name, Decision::Dropped, "field removed in this build", true);
+            // Under a migration hook a removed field's value is handed to the hook by name:
+            // a decision of the new build's code, not a loss.
+            if (n->migrates) {
+              add(path + "." + writer.name, Decision::Dropped,
+                  "field removed in this build; its value goes to symcr_migrate(" +
+                      std::string(rt.name) + ")",
+                  false);
+            } else {
+              add(path + "." + writer.name, Decision::Dropped, "field removed in this build", true);
+            }
             continue;
           }
           const FieldInfo& reader = rt.fields[field.reader_field];
@@ -662,6 +773,7 @@ class Planner {
             detail = std::string("renamed from ") + writer.name + (detail.empty() ? "" : "; ") + detail;
           }
           const bool own_lossy = field.node->lossy && field.node->action != Action::Struct;
+          note_migration(field.node, decision, detail);
           add(child, decision, detail, own_lossy);
           expand(field.node, child);
         }
@@ -676,6 +788,7 @@ class Planner {
       }
       case Action::Array:
       case Action::Container:
+        add_migration_entry(n->element, path + "[]");
         expand(n->element, path + "[]");
         break;
       case Action::Optional:
@@ -686,7 +799,9 @@ class Planner {
         for (std::size_t a = 0; a < n->alternatives.size(); ++a) {
           const PlanNode* alternative = n->alternatives[a];
           if (alternative->action == Action::Skip) continue;
-          expand(alternative, path + "<" + w_.types[alternative->writer].name + ">");
+          const std::string child = path + "<" + w_.types[alternative->writer].name + ">";
+          add_migration_entry(alternative, child);
+          expand(alternative, child);
         }
         break;
       case Action::Pointer:
@@ -705,6 +820,7 @@ class Planner {
   std::map<std::pair<std::uint32_t, std::uint32_t>, PlanNode*> memo_;
   std::vector<const PlanNode*> stack_;
   std::vector<const PlanNode*> pointees_;
+  std::set<const PlanNode*> differs_;  // nodes whose restore changes values (migration hooks)
   int depth_ = 0;
   bool too_deep_ = false;
 };

@@ -91,6 +91,12 @@ struct PlanNode {
   std::vector<std::uint32_t> alternative_map;    // Variant: reader index or kNoType
 
   bool validated = false;    // reader type has a symcr_validate
+  // Struct: the writer's type differs from the reader's in its values (a field added, removed,
+  // renamed or converted, at any depth; see docs/resolution.md), and the reader type has a
+  // symcr_migrate hook (or, in a schema file, kTypeMigrated): restore calls `migrate`, which
+  // is null when the reader is a schema without code (the CLI's plan).
+  bool migrates = false;
+  void (*migrate)(void* object, const OldValues& old) = nullptr;
   bool flat_reader = false;  // reader type is plain bytes (staged by copy)
 
   // Copy-only (structs, arrays, identical scalars and unions all the way down: every field

@@ -373,6 +373,7 @@ class Restorer {
         return scalar(n, wt, dst, field);
       case Kind::Struct: {
         const std::uint32_t saved = counter_;
+        const std::uint8_t* start = in_.position();
         // One path frame for all the fields, renamed per field.
         const std::size_t frame = frames_.size();
         frames_.push_back({PathFrame::Kind::Name, "", 0});
@@ -384,6 +385,13 @@ class Restorer {
         }
         frames_.pop_back();
         counter_ = saved;
+        // The migration hook, once the mechanical rules wrote the object and everything in it
+        // (so nested objects' hooks ran first). Also on a validator's staged copy, so that
+        // symcr_validate judges the migrated value. Pointers are fixed up after all objects.
+        if (n->migrate && dst && writing()) {
+          n->migrate(dst, OldValues(w_, n->writer, start,
+                                    static_cast<std::size_t>(in_.position() - start)));
+        }
         return true;
       }
       case Kind::Union: {

@@ -20,19 +20,19 @@ using symcr::kNoType;
 
 constexpr TypeInfo scalar(const char* name, Kind kind, std::uint32_t size) {
   return {name, kind, 0, size, size, nullptr, 0, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr};
+          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
 }
 constexpr TypeInfo record(const char* name, std::uint32_t size, std::uint32_t align,
                           const FieldInfo* fields, std::uint32_t count,
                           const symcr::Lifecycle* lifecycle = nullptr,
                           bool (*validate)(const void*) = nullptr) {
   return {name, Kind::Struct, 0, size, align, fields, count, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, lifecycle, validate, nullptr};
+          nullptr, 0, 0, nullptr, lifecycle, validate, nullptr, nullptr};
 }
 constexpr TypeInfo array(const char* name, std::uint32_t element, std::uint64_t count,
                          std::uint32_t size, std::uint32_t align) {
   return {name, Kind::Array, 0, size, align, nullptr, 0, nullptr, 0, element, count,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr};
+          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
 }
 constexpr TypeInfo holder(const char* name, Kind kind, std::uint32_t size, std::uint32_t align,
                           std::uint32_t element, const void* ops,
@@ -40,7 +40,7 @@ constexpr TypeInfo holder(const char* name, Kind kind, std::uint32_t size, std::
   return {name, kind, 0, size, align, nullptr, 0, nullptr, 0, element, 0, nullptr, 0,
           kind == Kind::Container ? static_cast<std::uint8_t>(symcr::ContainerKind::Vector)
                                   : std::uint8_t{0},
-          ops, lifecycle, nullptr, nullptr};
+          ops, lifecycle, nullptr, nullptr, nullptr};
 }
 inline FieldInfo field(const char* name, std::uint32_t type, std::size_t offset) {
   return {name, type, static_cast<std::uint32_t>(offset), 0, 0, 0, nullptr, 0.0, 0.0};

@@ -16,23 +16,23 @@ namespace file_tests {
 
 constexpr symcr::TypeInfo scalar_type(const char* name, symcr::Kind kind, std::uint32_t size) {
   return {name, kind, 0, size, size, nullptr, 0, nullptr, 0, symcr::kNoType, 0,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr};
+          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
 }
 constexpr symcr::TypeInfo struct_type(const char* name, std::uint32_t size, std::uint32_t align,
                                       const symcr::FieldInfo* fields, std::uint32_t count) {
   return {name, symcr::Kind::Struct, 0, size, align, fields, count, nullptr, 0,
-          symcr::kNoType, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr};
+          symcr::kNoType, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
 }
 constexpr symcr::TypeInfo enum_type(const char* name, std::uint32_t size, std::uint32_t underlying,
                                     const symcr::EnumeratorInfo* enumerators,
                                     std::uint32_t count) {
   return {name, symcr::Kind::Enum, symcr::kTypeScopedEnum, size, size, nullptr, 0, enumerators,
-          count, underlying, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr};
+          count, underlying, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
 }
 constexpr symcr::TypeInfo array_type(const char* name, std::uint32_t element, std::uint64_t count,
                                      std::uint32_t size, std::uint32_t align) {
   return {name, symcr::Kind::Array, 0, size, align, nullptr, 0, nullptr, 0, element, count,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr};
+          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
 }
 constexpr symcr::FieldInfo field(const char* name, std::uint32_t type, std::size_t offset) {
   return {name, type, static_cast<std::uint32_t>(offset), 0, 0, 0, nullptr, 0.0, 0.0};

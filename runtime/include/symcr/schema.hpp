@@ -15,6 +15,8 @@
 
 namespace symcr {
 
+class OldValues;  // <symcr/old_values.hpp>: a migration hook's view of the checkpoint's value
+
 // The kind of a type. The numeric values are part of the checkpoint format.
 enum class Kind : std::uint8_t {
   Bool = 1,      // bool; 1 byte on the wire (0 or 1)
@@ -47,6 +49,8 @@ inline constexpr std::uint32_t kNoType = 0xFFFFFFFFu;
 enum : std::uint32_t {
   kTypeScopedEnum = 1u << 0,  // enum class
   kTypeShallow = 1u << 1,     // a shallow root's restricted view of its class (§3)
+  kTypeMigrated = 1u << 2,    // the build has a symcr_migrate hook for the type; recorded in
+                              // schema files so that `symcr plan` reports the migration
 };
 
 // FieldInfo::flags
@@ -165,6 +169,9 @@ struct TypeInfo {
   const Lifecycle* lifecycle;        // for pointee/element types that restore must create
   bool (*validate)(const void* object);  // user's symcr_validate(const T&), or nullptr
   const char* const* renamed_from;   // SYMCR_RENAMED_FROM on the type; nullptr-terminated
+  // User's symcr_migrate(T&, const OldValues&), or nullptr. Restore calls it on each restored
+  // instance whose checkpointed type differs from this one, after the mechanical rules.
+  void (*migrate)(void* object, const OldValues& old);
 };
 
 struct RootInfo {

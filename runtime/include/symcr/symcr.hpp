@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "symcr/old_values.hpp"
 #include "symcr/schema.hpp"
 
 // ---------------------------------------------------------------------------------------------
