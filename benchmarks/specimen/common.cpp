@@ -1,0 +1,54 @@
+#include "common.hpp"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include <benchmark/benchmark.h>
+
+#include "symcr/symcr.hpp"
+
+namespace specimen_bench {
+
+void die(const char* what, const std::string& message) {
+  std::fprintf(stderr, "specimen benchmark: %s: %s\n", what, message.c_str());
+  std::exit(1);
+}
+
+const symcr::Schema& program_schema() {
+  const symcr::Schema* schema = symcr_program_schema ? symcr_program_schema() : nullptr;
+  if (schema == nullptr) die("schema", "this program has no generated schema (symcr-gen)");
+  return *schema;
+}
+
+std::uint32_t schema_size(const std::vector<std::uint8_t>& record) {
+  std::uint32_t size = 0;
+  if (record.size() >= 48) std::memcpy(&size, record.data() + 40, sizeof size);  // LE host
+  return size;
+}
+
+std::uint32_t payload_size(const std::vector<std::uint8_t>& record) {
+  std::uint32_t size = 0;
+  if (record.size() >= 48) std::memcpy(&size, record.data() + 44, sizeof size);
+  return size;
+}
+
+std::uint32_t value_bytes(const std::vector<std::uint8_t>& record) {
+  const std::uint32_t payload = payload_size(record);
+  return payload >= 8 ? payload - 8 : 0;
+}
+
+std::string scratch_path(const char* name) {
+  const char* base = std::getenv("TMPDIR");
+  return std::string(base && *base ? base : "/tmp") + "/symcr-bench-specimen-" +
+         std::to_string(::getpid()) + "-" + name;
+}
+
+void fail(benchmark::State& state, const char* what, const char* message) {
+  const std::string text = std::string(what) + ": " + message;
+  state.SkipWithError(text.c_str());
+}
+
+}  // namespace specimen_bench

@@ -1,0 +1,39 @@
+// Helpers of both specimen benchmark programs (symcr_bench_specimen and the schema-change
+// program built from a patched autopilot): the generated schema, checkpoint header fields,
+// scratch files, failures.
+#ifndef SYMCR_BENCHMARKS_SPECIMEN_COMMON_HPP
+#define SYMCR_BENCHMARKS_SPECIMEN_COMMON_HPP
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "symcr/schema.hpp"
+
+namespace benchmark {
+class State;
+}
+
+namespace specimen_bench {
+
+// The schema symcr-gen generated for this build's `copter` (symcr_program_schema()).
+const symcr::Schema& program_schema();
+
+// Header fields of a single-file checkpoint (docs/format.md §1).
+std::uint32_t schema_size(const std::vector<std::uint8_t>& record);
+std::uint32_t payload_size(const std::vector<std::uint8_t>& record);
+// The values alone: the payload less its two u32 counts of heap objects and references
+// (docs/format.md §3; `copter` holds no pointers, so both are 0 and nothing else follows).
+std::uint32_t value_bytes(const std::vector<std::uint8_t>& record);
+// A file name under $TMPDIR (else /tmp), unique to this process.
+std::string scratch_path(const char* name);
+
+// Prints "specimen benchmark: what: message" and exits with 1 (setup that must not fail).
+[[noreturn]] void die(const char* what, const std::string& message);
+
+// Marks the benchmark as failed with "what: message".
+void fail(benchmark::State& state, const char* what, const char* message);
+
+}  // namespace specimen_bench
+
+#endif  // SYMCR_BENCHMARKS_SPECIMEN_COMMON_HPP
