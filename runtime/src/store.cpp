@@ -35,8 +35,8 @@ constexpr std::uint32_t kMinSchemaAreaSize = 64 * 1024;
 constexpr std::uint32_t kMaxSlots = 1u << 20;
 constexpr std::uint32_t kMinSlotSize = 2 * detail::kRecordHeaderSize;
 constexpr std::uint32_t kMaxSlotSize = 1u << 30;
-// First read of a slot when scanning: one pread covers the header and a small record.
-constexpr std::size_t kSlotFirstRead = 1024;
+// First read of a slot when scanning: one pread covers the header and a record of up to a page.
+constexpr std::size_t kSlotFirstRead = 4096;
 
 std::uint64_t round_up_to_page(std::uint64_t n) { return (n + kPageSize - 1) / kPageSize * kPageSize; }
 
