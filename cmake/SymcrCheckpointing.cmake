@@ -19,6 +19,13 @@
 # custom commands may depend on it), and copied after each link next to the program, to
 # `$<TARGET_FILE_DIR:target>/<target>.symcr-schema`.
 #
+# Code size: when the runtime was built with SYMCR_OPTIMIZE_SIZE (recorded on symcr::runtime,
+# also in the installed package), or when the variable SYMCR_OPTIMIZE_SIZE is set true where the
+# function is called, the target is linked with section garbage collection (-Wl,--gc-sections;
+# -Wl,-dead_strip on Apple). The runtime is compiled one section per function, so the program
+# keeps only the runtime functions it reaches. Setting the variable false turns it off. The
+# generated tables stay: they are reached from symcr_program_schema, which the runtime calls.
+#
 # `#pragma symcr` lines are unknown to g++, which warns under -Wall (-Wunknown-pragmas): the
 # function adds -Wno-unknown-pragmas to the annotated target (only there).
 include_guard(GLOBAL)
@@ -112,6 +119,18 @@ function(symcr_add_checkpointing target)
             "$<TARGET_FILE_DIR:${target}>/${target}.symcr-schema"
     VERBATIM)
   target_link_libraries(${target} PRIVATE ${runtime})
+  if(DEFINED SYMCR_OPTIMIZE_SIZE)
+    set(optimize_size ${SYMCR_OPTIMIZE_SIZE})
+  else()
+    get_target_property(optimize_size ${runtime} SYMCR_OPTIMIZE_SIZE)
+  endif()
+  if(optimize_size)
+    if(APPLE)
+      target_link_options(${target} PRIVATE -Wl,-dead_strip)
+    else()
+      target_link_options(${target} PRIVATE -Wl,--gc-sections)
+    endif()
+  endif()
   target_compile_options(${target} PRIVATE
     $<$<COMPILE_LANG_AND_ID:CXX,GNU,Clang,AppleClang>:-Wno-unknown-pragmas>
     $<$<COMPILE_LANG_AND_ID:C,GNU,Clang,AppleClang>:-Wno-unknown-pragmas>)

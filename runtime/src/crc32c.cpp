@@ -5,6 +5,7 @@
 #include <cstring>
 
 #if defined(__x86_64__)
+#include <cpuid.h>
 #include <nmmintrin.h>
 #endif
 
@@ -61,8 +62,13 @@ std::uint32_t crc32c_extend_portable(std::uint32_t crc, const void* data, std::s
 
 #if defined(__x86_64__)
 
+// CPUID leaf 1, ECX bit 20, read directly: __builtin_cpu_supports would link libgcc's CPU
+// model detection (__cpu_indicator_init, about 4.5 KB of .text) into every program.
 bool crc32c_hardware_available() {
-  static const bool available = __builtin_cpu_supports("sse4.2");
+  static const bool available = [] {
+    unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+    return __get_cpuid(1, &eax, &ebx, &ecx, &edx) != 0 && (ecx & bit_SSE4_2) != 0;
+  }();
   return available;
 }
 

@@ -43,7 +43,7 @@ int open_retrying(const char* path, int flags, mode_t mode = 0) {
 
 }  // namespace
 
-Status io_error(const char* what, const char* path, int error_number) {
+__attribute__((cold)) Status io_error(const char* what, const char* path, int error_number) {
   char text[96];
   // GNU strerror_r: returns the message, which may or may not live in `text`.
   const char* message = strerror_r(error_number, text, sizeof text);

@@ -12,7 +12,7 @@ namespace {
 
 // Appends `text` as a JSON string. Names come from checkpoint files, which may hold any bytes:
 // control characters are escaped and invalid UTF-8 becomes U+FFFD, so the output always parses.
-void append_json_string(std::string& out, const std::string& text) {
+__attribute__((cold)) void append_json_string(std::string& out, const std::string& text) {
   out += '"';
   const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
   const std::size_t size = text.size();
@@ -94,7 +94,7 @@ std::size_t Report::count(Decision decision) const {
                     [decision](const ReportEntry& entry) { return entry.decision == decision; }));
 }
 
-std::string Report::to_text() const {
+__attribute__((cold)) std::string Report::to_text() const {
   // Column widths from the content, with the path column capped so one deep path does not
   // push every line off the screen (longer paths simply overflow their column).
   constexpr std::size_t kMaxPathWidth = 60;
@@ -137,7 +137,7 @@ std::string Report::to_text() const {
   return out;
 }
 
-std::string Report::to_json() const {
+__attribute__((cold)) std::string Report::to_json() const {
   std::string out = "{\"ok\":";
   out += ok() ? "true" : "false";
   out += ",\"error\":";

@@ -5,6 +5,9 @@
 #include "schema_facts.hpp"
 #include "wire.hpp"
 
+// compute_schema_facts runs once per schema and process (the result is cached, see
+// schema_cache.cpp): marked cold, so compiled for size even at -O3. serialise_schema is not:
+// building a restore plan serialises the writer schema too.
 namespace symcr::detail {
 namespace {
 
@@ -118,8 +121,9 @@ namespace {
 constexpr std::size_t kMaxFlatRuns = 64;  // beyond this a type is cheaper to walk
 
 // Appends the runs of `type` placed at `base` to `runs`; false if it is not plain.
-bool flat_runs_of(const Schema& schema, std::uint32_t type_index, std::uint32_t base,
-                  std::vector<FlatRun>& runs, int depth) {
+__attribute__((cold)) bool flat_runs_of(const Schema& schema, std::uint32_t type_index,
+                                        std::uint32_t base, std::vector<FlatRun>& runs,
+                                        int depth) {
   if (depth > 64 || type_index >= schema.type_count) return false;
   const TypeInfo& type = schema.types[type_index];
   auto append = [&runs](std::uint32_t offset, std::uint32_t length) {
@@ -165,7 +169,7 @@ bool flat_runs_of(const Schema& schema, std::uint32_t type_index, std::uint32_t 
 
 }  // namespace
 
-SchemaFacts compute_schema_facts(const Schema& schema) {
+__attribute__((cold)) SchemaFacts compute_schema_facts(const Schema& schema) {
   SchemaFacts facts;
   facts.flat_first.assign(schema.type_count, kNotFlat);
   facts.flat_count.assign(schema.type_count, 0);

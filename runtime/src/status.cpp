@@ -8,7 +8,7 @@
 
 namespace symcr {
 
-Status::Status(Error error, const char* format, ...) : error_(error) {
+__attribute__((cold)) Status::Status(Error error, const char* format, ...) : error_(error) {
   va_list args;
   va_start(args, format);
   // vsnprintf always NUL-terminates within the buffer and reports, but never writes, the
