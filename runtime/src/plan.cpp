@@ -35,7 +35,9 @@ class Planner {
  public:
   Planner(Plan& plan) : plan_(plan), w_(*plan.writer), r_(*plan.reader) {}
 
-  void run() {
+  // Once per (writer, reader) pair, then cached: cold, so that it and what only it calls are
+  // optimised for size (tens of KB of .text) and kept off the hot pages.
+  __attribute__((cold, noinline)) void run() {
     compute_min_wire();
     plan_.shared_types.assign(r_.type_count, kNoType);
     for (std::uint32_t t = 0; t < r_.type_count; ++t) {
@@ -76,7 +78,7 @@ class Planner {
     return kNoType;
   }
 
-  void plan_roots() {
+  __attribute__((cold)) void plan_roots() {
     plan_.roots.resize(w_.root_count);
     bool any_restorable = false;
     // Each reader root takes at most one writer root: exact names first, then old names.
@@ -115,7 +117,7 @@ class Planner {
   }
 
   // ---- nodes ---------------------------------------------------------------------------
-  const PlanNode* node(std::uint32_t writer, std::uint32_t reader) {
+  __attribute__((cold)) const PlanNode* node(std::uint32_t writer, std::uint32_t reader) {
     auto key = std::make_pair(writer, reader);
     auto found = memo_.find(key);
     if (found != memo_.end()) return found->second;
@@ -166,7 +168,7 @@ class Planner {
     }
   }
 
-  void fill_skip(PlanNode& n) {
+  __attribute__((cold)) void fill_skip(PlanNode& n) {
     const TypeInfo& type = w_.types[n.writer];
     n.action = Action::Skip;
     n.decision = Decision::Dropped;
@@ -207,7 +209,7 @@ class Planner {
     return std::string(writer.name) + " -> " + reader.name;
   }
 
-  void fill(PlanNode& n) {
+  __attribute__((cold)) void fill(PlanNode& n) {
     const TypeInfo& wt = w_.types[n.writer];
     const TypeInfo& rt = r_.types[n.reader];
     if (is_scalar_kind(wt.kind) && is_scalar_kind(rt.kind)) return fill_scalar(n, wt, rt);
@@ -330,7 +332,7 @@ class Planner {
     if (e->action == Action::Scalar || e->action == Action::Reject) n.lossy = n.lossy || e->lossy;
   }
 
-  void fill_scalar(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
+  __attribute__((cold)) void fill_scalar(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
     n.action = Action::Scalar;
     n.identical = wt.kind == rt.kind && wt.size == rt.size;
     if (wt.kind == Kind::Enum) {
@@ -375,7 +377,7 @@ class Planner {
     }
   }
 
-  void fill_struct(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
+  __attribute__((cold)) void fill_struct(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
     n.action = Action::Struct;
     std::vector<bool> reader_used(rt.field_count, false);
     n.fields.resize(wt.field_count);
@@ -426,7 +428,7 @@ class Planner {
   // type names do not count: the values a hook would see are then the reader's own. Pointers do
   // not either: their pointees are objects of their own, migrated by their own hooks.
   // Computed as a least fixed point, since a recursive type's answer depends on itself.
-  void decide_migrations() {
+  __attribute__((cold)) void decide_migrations() {
     bool any_hook = false;
     for (std::uint32_t t = 0; t < r_.type_count; ++t) {
       any_hook = any_hook || r_.types[t].migrate || (r_.types[t].flags & kTypeMigrated);
@@ -516,7 +518,7 @@ class Planner {
   }
 
   // ---- writer minimum sizes (bounds container counts in hostile payloads) ---------------
-  void compute_min_wire() {
+  __attribute__((cold)) void compute_min_wire() {
     plan_.min_wire.assign(w_.type_count, ~std::uint64_t{0});
     for (std::uint32_t t = 0; t < w_.type_count; ++t) min_wire(t);
   }
@@ -576,7 +578,7 @@ class Planner {
   }
 
   // Appends `child`'s program at (wire, dst); false when `n` grows past the limits.
-  __attribute__((noinline)) static bool append_copy(PlanNode& n, const PlanNode& child, std::uint64_t wire,
+  __attribute__((noinline, cold)) static bool append_copy(PlanNode& n, const PlanNode& child, std::uint64_t wire,
                           std::uint64_t dst) {
     if (wire + child.copy_wire > kMaxCopyWire || dst + kMaxCopyWire > 0xFFFFFFFFu) return false;
     for (std::uint32_t offset : child.copy_bools) {
@@ -613,7 +615,7 @@ class Planner {
     return true;
   }
 
-  __attribute__((noinline)) void compute_copy(PlanNode& n) {
+  __attribute__((noinline, cold)) void compute_copy(PlanNode& n) {
     if (n.copy_state) return;
     n.copy_state = 1;  // from now on: a (malformed) cycle back to it is not copy-only
     n.copy_only = build_copy(n);
@@ -647,7 +649,7 @@ class Planner {
     return child->copy_only;
   }
 
-  __attribute__((noinline)) bool build_copy(PlanNode& n) {
+  __attribute__((noinline, cold)) bool build_copy(PlanNode& n) {
     if (n.reader == kNoType || n.writer >= w_.type_count) return false;
     const TypeInfo& wt = w_.types[n.writer];
     switch (n.action) {
@@ -693,7 +695,7 @@ class Planner {
     }
   }
 
-  void build_report() {
+  __attribute__((cold)) void build_report() {
     for (std::uint32_t wr = 0; wr < w_.root_count; ++wr) {
       const RootPlan& root = plan_.roots[wr];
       const RootInfo& writer = w_.roots[wr];
@@ -739,7 +741,7 @@ class Planner {
     pointees_.push_back(n);
   }
 
-  void expand(const PlanNode* n, const std::string& path) {
+  __attribute__((cold)) void expand(const PlanNode* n, const std::string& path) {
     for (const PlanNode* open : stack_) {
       if (open == n) return;  // recursion: listed once, where first met
     }
