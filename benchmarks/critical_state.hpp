@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "schema_tables.hpp"
 #include "symcr/schema.hpp"
 
 namespace critical {
@@ -85,29 +86,7 @@ inline Mission mission;
 inline Telemetry telemetry;
 
 // ---- its schema --------------------------------------------------------------------------------
-constexpr symcr::TypeInfo scalar(const char* name, symcr::Kind kind, std::uint32_t size) {
-  return {name, kind, 0, size, size, nullptr, 0, nullptr, 0, symcr::kNoType, 0,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr symcr::TypeInfo record(const char* name, std::uint32_t size, std::uint32_t align,
-                                 const symcr::FieldInfo* fields, std::uint32_t count) {
-  return {name, symcr::Kind::Struct, 0, size, align, fields, count, nullptr, 0,
-          symcr::kNoType, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr symcr::TypeInfo array(const char* name, std::uint32_t element, std::uint64_t count,
-                                std::uint32_t size, std::uint32_t align) {
-  return {name, symcr::Kind::Array, 0, size, align, nullptr, 0, nullptr, 0, element, count,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr symcr::TypeInfo enumeration(const char* name, std::uint32_t underlying,
-                                      const symcr::EnumeratorInfo* values, std::uint32_t count) {
-  return {name, symcr::Kind::Enum, symcr::kTypeScopedEnum, 1, 1, nullptr, 0, values, count,
-          underlying, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr symcr::FieldInfo field(const char* name, std::uint32_t type, std::size_t offset,
-                                 const char* const* renamed_from = nullptr) {
-  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, 0, renamed_from, 0.0, 0.0};
-}
+using namespace schema_tables;  // scalar(), record(), field(), ...: tests/support
 
 enum : std::uint32_t {
   kBool, kInt8, kInt16, kInt32, kUInt8, kUInt16, kUInt32, kUInt64, kFloat32, kFloat64,
@@ -180,8 +159,8 @@ inline const symcr::TypeInfo types[] = {
     scalar("uint64", symcr::Kind::UInt, 8),
     scalar("float32", symcr::Kind::Float, 4),
     scalar("float64", symcr::Kind::Float, 8),
-    enumeration("FlightMode", kUInt8, flight_modes, 6),
-    enumeration("MissionState", kUInt8, mission_states, 4),
+    enumeration("FlightMode", 1, kUInt8, flight_modes, 6),
+    enumeration("MissionState", 1, kUInt8, mission_states, 4),
     record("Vec3", sizeof(Vec3), alignof(Vec3), vec3_fields, 3),
     array("float32[4]", kFloat32, 4, sizeof(float[4]), alignof(float)),
     array("float32[3]", kFloat32, 3, sizeof(float[3]), alignof(float)),
@@ -391,7 +370,7 @@ inline const symcr::TypeInfo types[] = {
     scalar("float64", symcr::Kind::Float, 8),
     {"FlightMode", symcr::Kind::Enum, symcr::kTypeScopedEnum, 4, 4, nullptr, 0, flight_modes, 7,
      kInt32, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr},
-    enumeration("MissionState", kUInt8, mission_states, 4),
+    enumeration("MissionState", 1, kUInt8, mission_states, 4),
     record("Vec3", sizeof(Vec3), alignof(Vec3), vec3_fields, 3),
     array("float32[4]", kFloat32, 4, sizeof(float[4]), alignof(float)),
     array("float32[3]", kFloat32, 3, sizeof(float[3]), alignof(float)),

@@ -35,44 +35,14 @@
 
 #include <benchmark/benchmark.h>
 
+#include "schema_tables.hpp"
 #include "symcr/ops.hpp"
 #include "symcr/schema.hpp"
 #include "symcr/symcr.hpp"
 
 namespace {
 
-using symcr::FieldInfo;
-using symcr::Kind;
-using symcr::TypeInfo;
-using symcr::kNoType;
-
-// Shorthands for the aggregate initialisers the generator writes out in full.
-constexpr TypeInfo scalar(const char* name, Kind kind, std::uint32_t size) {
-  return {name, kind, 0, size, size, nullptr, 0, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr TypeInfo record(const char* name, std::uint32_t size, std::uint32_t align,
-                          const FieldInfo* fields, std::uint32_t count,
-                          const symcr::Lifecycle* lifecycle = nullptr) {
-  return {name, Kind::Struct, 0, size, align, fields, count, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, lifecycle, nullptr, nullptr, nullptr};
-}
-constexpr TypeInfo array(const char* name, std::uint32_t element, std::uint64_t count,
-                         std::uint32_t size, std::uint32_t align) {
-  return {name, Kind::Array, 0, size, align, nullptr, 0, nullptr, 0, element, count,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr TypeInfo holder(const char* name, Kind kind, std::uint32_t size, std::uint32_t align,
-                          std::uint32_t element, const void* ops,
-                          symcr::ContainerKind container = symcr::ContainerKind::Vector,
-                          const symcr::Lifecycle* lifecycle = nullptr) {
-  return {name, kind, 0, size, align, nullptr, 0, nullptr, 0, element, 0, nullptr, 0,
-          kind == Kind::Container ? static_cast<std::uint8_t>(container) : std::uint8_t{0},
-          ops, lifecycle, nullptr, nullptr, nullptr};
-}
-constexpr FieldInfo field(const char* name, std::uint32_t type, std::size_t offset) {
-  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, 0, nullptr, 0.0, 0.0};
-}
+using namespace schema_tables;  // scalar(), record(), field(), ...: tests/support
 
 void fail(benchmark::State& state, const char* what, const symcr::Status& status) {
   const std::string text = std::string(what) + ": " + status.message();

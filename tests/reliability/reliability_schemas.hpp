@@ -8,48 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "schema_tables.hpp"
 #include "symcr/ops.hpp"
 #include "symcr/schema.hpp"
 
 namespace reliability {
 
-using symcr::FieldInfo;
-using symcr::Kind;
-using symcr::TypeInfo;
-using symcr::kNoType;
-
-constexpr TypeInfo scalar(const char* name, Kind kind, std::uint32_t size) {
-  return {name, kind, 0, size, size, nullptr, 0, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr TypeInfo record(const char* name, std::uint32_t size, std::uint32_t align,
-                          const FieldInfo* fields, std::uint32_t count,
-                          const symcr::Lifecycle* lifecycle = nullptr,
-                          bool (*validate)(const void*) = nullptr) {
-  return {name, Kind::Struct, 0, size, align, fields, count, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, lifecycle, validate, nullptr, nullptr};
-}
-constexpr TypeInfo array(const char* name, std::uint32_t element, std::uint64_t count,
-                         std::uint32_t size, std::uint32_t align) {
-  return {name, Kind::Array, 0, size, align, nullptr, 0, nullptr, 0, element, count,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr TypeInfo holder(const char* name, Kind kind, std::uint32_t size, std::uint32_t align,
-                          std::uint32_t element, const void* ops,
-                          const symcr::Lifecycle* lifecycle = nullptr) {
-  return {name, kind, 0, size, align, nullptr, 0, nullptr, 0, element, 0, nullptr, 0,
-          kind == Kind::Container ? static_cast<std::uint8_t>(symcr::ContainerKind::Vector)
-                                  : std::uint8_t{0},
-          ops, lifecycle, nullptr, nullptr, nullptr};
-}
-inline FieldInfo field(const char* name, std::uint32_t type, std::size_t offset) {
-  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, 0, nullptr, 0.0, 0.0};
-}
-inline FieldInfo ranged(const char* name, std::uint32_t type, std::size_t offset, double lo,
-                        double hi) {
-  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, symcr::kFieldHasRange, nullptr,
-          lo, hi};
-}
+using namespace schema_tables;  // scalar(), record(), field(), ...: tests/support
 
 // ---- A frame large enough that a write of it spans several pages: a torn write shows up as a
 // mix of two sequences, which the checks below would see.

@@ -10,33 +10,12 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "schema_tables.hpp"
 #include "symcr/schema.hpp"
 
 namespace file_tests {
 
-constexpr symcr::TypeInfo scalar_type(const char* name, symcr::Kind kind, std::uint32_t size) {
-  return {name, kind, 0, size, size, nullptr, 0, nullptr, 0, symcr::kNoType, 0,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr symcr::TypeInfo struct_type(const char* name, std::uint32_t size, std::uint32_t align,
-                                      const symcr::FieldInfo* fields, std::uint32_t count) {
-  return {name, symcr::Kind::Struct, 0, size, align, fields, count, nullptr, 0,
-          symcr::kNoType, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr symcr::TypeInfo enum_type(const char* name, std::uint32_t size, std::uint32_t underlying,
-                                    const symcr::EnumeratorInfo* enumerators,
-                                    std::uint32_t count) {
-  return {name, symcr::Kind::Enum, symcr::kTypeScopedEnum, size, size, nullptr, 0, enumerators,
-          count, underlying, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr symcr::TypeInfo array_type(const char* name, std::uint32_t element, std::uint64_t count,
-                                     std::uint32_t size, std::uint32_t align) {
-  return {name, symcr::Kind::Array, 0, size, align, nullptr, 0, nullptr, 0, element, count,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr symcr::FieldInfo field(const char* name, std::uint32_t type, std::size_t offset) {
-  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, 0, nullptr, 0.0, 0.0};
-}
+using namespace schema_tables;  // scalar(), record(), field(), ...: tests/support
 
 // ---- shared types ----------------------------------------------------------------------------
 enum class FlightMode : std::int32_t { Stabilize = 0, Auto = 3, Land = 9 };
@@ -130,28 +109,28 @@ inline const symcr::FieldInfo copter_b_fields[] = {
 };
 
 #define FILE_TESTS_COMMON_TYPES                                                             \
-  scalar_type("bool", symcr::Kind::Bool, 1), scalar_type("int16", symcr::Kind::Int, 2),     \
-      scalar_type("int32", symcr::Kind::Int, 4), scalar_type("int64", symcr::Kind::Int, 8), \
-      scalar_type("uint8", symcr::Kind::UInt, 1), scalar_type("uint32", symcr::Kind::UInt, 4), \
-      scalar_type("uint64", symcr::Kind::UInt, 8),                                          \
-      scalar_type("float32", symcr::Kind::Float, 4),                                        \
-      scalar_type("float64", symcr::Kind::Float, 8),                                        \
-      enum_type("file_tests::FlightMode", sizeof(FlightMode), kInt32, flight_modes, 3),     \
-      struct_type("file_tests::Waypoint", sizeof(Waypoint), alignof(Waypoint),              \
+  scalar("bool", symcr::Kind::Bool, 1), scalar("int16", symcr::Kind::Int, 2),     \
+      scalar("int32", symcr::Kind::Int, 4), scalar("int64", symcr::Kind::Int, 8), \
+      scalar("uint8", symcr::Kind::UInt, 1), scalar("uint32", symcr::Kind::UInt, 4), \
+      scalar("uint64", symcr::Kind::UInt, 8),                                          \
+      scalar("float32", symcr::Kind::Float, 4),                                        \
+      scalar("float64", symcr::Kind::Float, 8),                                        \
+      enumeration("file_tests::FlightMode", sizeof(FlightMode), kInt32, flight_modes, 3),     \
+      record("file_tests::Waypoint", sizeof(Waypoint), alignof(Waypoint),              \
                   waypoint_fields, 4),                                                      \
-      array_type("file_tests::Waypoint[4]", kWaypoint, 4, sizeof(Waypoint[4]),              \
+      array("file_tests::Waypoint[4]", kWaypoint, 4, sizeof(Waypoint[4]),              \
                  alignof(Waypoint)),                                                        \
-      struct_type("file_tests::Mission", sizeof(Mission), alignof(Mission), mission_fields, 3), \
-      struct_type("file_tests::Telemetry", sizeof(Telemetry), alignof(Telemetry),           \
+      record("file_tests::Mission", sizeof(Mission), alignof(Mission), mission_fields, 3), \
+      record("file_tests::Telemetry", sizeof(Telemetry), alignof(Telemetry),           \
                   telemetry_fields, 2)
 
 inline const symcr::TypeInfo types_a[] = {
     FILE_TESTS_COMMON_TYPES,
-    struct_type("file_tests::Copter", sizeof(CopterA), alignof(CopterA), copter_a_fields, 5),
+    record("file_tests::Copter", sizeof(CopterA), alignof(CopterA), copter_a_fields, 5),
 };
 inline const symcr::TypeInfo types_b[] = {
     FILE_TESTS_COMMON_TYPES,
-    struct_type("file_tests::Copter", sizeof(CopterB), alignof(CopterB), copter_b_fields, 5),
+    record("file_tests::Copter", sizeof(CopterB), alignof(CopterB), copter_b_fields, 5),
 };
 #undef FILE_TESTS_COMMON_TYPES
 static_assert(sizeof(types_a) / sizeof(types_a[0]) == kTypeCount, "one entry per index");
@@ -166,8 +145,8 @@ inline const symcr::RootInfo roots_b[] = {
 };
 
 inline const symcr::TypeInfo blob_types[] = {
-    scalar_type("uint8", symcr::Kind::UInt, 1),
-    array_type("uint8[8192]", 0, sizeof(Blob::bytes), sizeof(Blob::bytes), 1),
+    scalar("uint8", symcr::Kind::UInt, 1),
+    array("uint8[8192]", 0, sizeof(Blob::bytes), sizeof(Blob::bytes), 1),
 };
 inline const symcr::RootInfo blob_roots[] = {{"blob", 1, &big_blob, 0, nullptr}};
 

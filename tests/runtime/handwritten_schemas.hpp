@@ -20,75 +20,14 @@
 #include <variant>
 #include <vector>
 
+#include "schema_tables.hpp"
 #include "symcr/ops.hpp"
 #include "symcr/schema.hpp"
 
 namespace engine_tests {
 
-using symcr::FieldInfo;
-using symcr::Kind;
-using symcr::TypeInfo;
-using symcr::kNoType;
+using namespace schema_tables;  // scalar(), record(), field(), ...: tests/support
 
-// Shorthands for the aggregate initialisers the generator writes out in full.
-constexpr TypeInfo scalar(const char* name, Kind kind, std::uint32_t size) {
-  return {name, kind, 0, size, size, nullptr, 0, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr TypeInfo record(const char* name, std::uint32_t size, std::uint32_t align,
-                          const FieldInfo* fields, std::uint32_t count,
-                          const symcr::Lifecycle* lifecycle = nullptr,
-                          bool (*validate)(const void*) = nullptr,
-                          const char* const* renamed_from = nullptr,
-                          void (*migrate)(void*, const symcr::OldValues&) = nullptr) {
-  return {name, Kind::Struct, 0, size, align, fields, count, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, lifecycle, validate, renamed_from, migrate};
-}
-constexpr TypeInfo union_of(const char* name, std::uint32_t size, std::uint32_t align) {
-  return {name, Kind::Union, 0, size, align, nullptr, 0, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr TypeInfo enumeration(const char* name, std::uint32_t size, std::uint32_t underlying,
-                               const symcr::EnumeratorInfo* enumerators, std::uint32_t count) {
-  return {name, Kind::Enum, symcr::kTypeScopedEnum, size, size, nullptr, 0, enumerators, count,
-          underlying, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr TypeInfo array(const char* name, std::uint32_t element, std::uint64_t count,
-                         std::uint32_t size, std::uint32_t align) {
-  return {name, Kind::Array, 0, size, align, nullptr, 0, nullptr, 0, element, count,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr};
-}
-constexpr TypeInfo holder(const char* name, Kind kind, std::uint32_t size, std::uint32_t align,
-                          std::uint32_t element, const void* ops,
-                          symcr::ContainerKind container = symcr::ContainerKind::Vector,
-                          const symcr::Lifecycle* lifecycle = nullptr) {
-  return {name, kind, 0, size, align, nullptr, 0, nullptr, 0, element, 0, nullptr, 0,
-          kind == Kind::Container ? static_cast<std::uint8_t>(container) : std::uint8_t{0},
-          ops, lifecycle, nullptr, nullptr, nullptr};
-}
-constexpr TypeInfo variant_of(const char* name, std::uint32_t size, std::uint32_t align,
-                              const std::uint32_t* alternatives, std::uint32_t count,
-                              const void* ops) {
-  return {name, Kind::Variant, 0, size, align, nullptr, 0, nullptr, 0, kNoType, 0,
-          alternatives, count, 0, ops, nullptr, nullptr, nullptr, nullptr};
-}
-inline FieldInfo field(const char* name, std::uint32_t type, std::size_t offset,
-                       const char* const* renamed_from = nullptr) {
-  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, 0, renamed_from, 0.0, 0.0};
-}
-inline FieldInfo bit_field(const char* name, std::uint32_t type, std::uint16_t bit_offset,
-                           std::uint16_t width) {
-  return {name, type, 0, bit_offset, width, 0, nullptr, 0.0, 0.0};
-}
-inline FieldInfo base(const char* name, std::uint32_t type, std::size_t offset) {
-  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, symcr::kFieldBase, nullptr,
-          0.0, 0.0};
-}
-inline FieldInfo ranged(const char* name, std::uint32_t type, std::size_t offset, double lo,
-                        double hi) {
-  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, symcr::kFieldHasRange, nullptr,
-          lo, hi};
-}
 template <typename Derived, typename Base>
 std::size_t base_offset() {
   alignas(Derived) static unsigned char storage[sizeof(Derived)];
