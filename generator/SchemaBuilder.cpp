@@ -1444,12 +1444,34 @@ bool resolveTypeName(
   return Found;
 }
 
+/// The class a hook's first parameter names, spelt as in its wanted signature.
+std::string hookClassName(ASTContext &Context, QualType Param) {
+  PrintingPolicy Policy = Context.getPrintingPolicy();
+  Policy.SuppressTagKeyword = true;
+  return Param.getNonReferenceType().getUnqualifiedType().getAsString(Policy);
+}
+
+/// A hook is called unqualified from namespace symcr_gen: it must be declared
+/// in its class's innermost enclosing namespace (a hidden friend counts), where
+/// argument-dependent lookup finds it, or globally, where ordinary lookup does.
+bool hookIsFoundByLookup(const FunctionDecl *FD, const RecordDecl *RD) {
+  const DeclContext *Home = FD->getDeclContext()->getRedeclContext();
+  const DeclContext *Enclosing =
+      RD->getEnclosingNamespaceContext()->getRedeclContext();
+  return Home->isTranslationUnit() || Home->Equals(Enclosing);
+}
+
+/// The class type a hook is for, as the key of the hooked-type sets.
+const Type *hookedType(QualType Param) {
+  return Param.getNonReferenceType()
+      .getUnqualifiedType()
+      .getCanonicalType()
+      .getTypePtr();
+}
+
 /// Validation hooks: a non-template `bool symcr_validate(const T&)` for a
-/// class T, declared in T's innermost enclosing namespace (a hidden friend
-/// counts) or in the global namespace: the generated thunk calls it
-/// unqualified from namespace symcr_gen, so argument-dependent lookup finds the
-/// first kind and ordinary lookup the second. Any other declaration of that
-/// name with a class parameter is an error rather than a silently unused hook.
+/// class T, where hookIsFoundByLookup. Any other declaration of that name with
+/// a class parameter is an error rather than a silently unused hook.
 void findValidators(ASTContext &Context,
                     const std::vector<FunctionDecl *> &Candidates,
                     std::set<const Type *> &Validated, Diagnostics &Diags) {
@@ -1463,12 +1485,8 @@ void findValidators(ASTContext &Context,
     if (!RD)
       continue;
     Location Where = locationOf(Context, FD->getLocation());
-    PrintingPolicy Policy = Context.getPrintingPolicy();
-    Policy.SuppressTagKeyword = true;
     std::string Wanted =
-        "'bool symcr_validate(const " +
-        Param.getNonReferenceType().getUnqualifiedType().getAsString(Policy) +
-        "&)'";
+        "'bool symcr_validate(const " + hookClassName(Context, Param) + "&)'";
     if (!Param->isLValueReferenceType() ||
         !Param.getNonReferenceType().isConstQualified() ||
         Param.getNonReferenceType().isVolatileQualified() ||
@@ -1476,20 +1494,14 @@ void findValidators(ASTContext &Context,
       Diags.error(Where, "a validation hook must be declared " + Wanted);
       continue;
     }
-    const DeclContext *Home = FD->getDeclContext()->getRedeclContext();
-    const DeclContext *Enclosing =
-        RD->getEnclosingNamespaceContext()->getRedeclContext();
-    if (!Home->isTranslationUnit() && !Home->Equals(Enclosing)) {
+    if (!hookIsFoundByLookup(FD, RD)) {
       Diags.error(Where, "validation hook " + Wanted +
                              " must be declared in the namespace of its "
                              "class (or as its friend, or globally), where "
                              "argument-dependent lookup finds it");
       continue;
     }
-    Validated.insert(Param.getNonReferenceType()
-                         .getUnqualifiedType()
-                         .getCanonicalType()
-                         .getTypePtr());
+    Validated.insert(hookedType(Param));
   }
 }
 
@@ -1511,12 +1523,8 @@ void findMigrators(ASTContext &Context,
     if (!RD)
       continue;
     Location Where = locationOf(Context, FD->getLocation());
-    PrintingPolicy Policy = Context.getPrintingPolicy();
-    Policy.SuppressTagKeyword = true;
-    std::string Wanted =
-        "'void symcr_migrate(" +
-        Param.getNonReferenceType().getUnqualifiedType().getAsString(Policy) +
-        "&, const symcr::OldValues&)'";
+    std::string Wanted = "'void symcr_migrate(" + hookClassName(Context, Param) +
+                         "&, const symcr::OldValues&)'";
     auto IsOldValuesReference = [](QualType T) {
       T = T.getCanonicalType();
       if (!T->isLValueReferenceType())
@@ -1534,20 +1542,14 @@ void findMigrators(ASTContext &Context,
       Diags.error(Where, "a migration hook must be declared " + Wanted);
       continue;
     }
-    const DeclContext *Home = FD->getDeclContext()->getRedeclContext();
-    const DeclContext *Enclosing =
-        RD->getEnclosingNamespaceContext()->getRedeclContext();
-    if (!Home->isTranslationUnit() && !Home->Equals(Enclosing)) {
+    if (!hookIsFoundByLookup(FD, RD)) {
       Diags.error(Where, "migration hook " + Wanted +
                              " must be declared in the namespace of its "
                              "class (or as its friend, or globally), where "
                              "argument-dependent lookup finds it");
       continue;
     }
-    Migrated.insert(Param.getNonReferenceType()
-                        .getUnqualifiedType()
-                        .getCanonicalType()
-                        .getTypePtr());
+    Migrated.insert(hookedType(Param));
   }
 }
 

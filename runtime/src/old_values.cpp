@@ -217,6 +217,13 @@ bool convert(const Number& in, Kind kind, std::uint32_t size, Number& out) {
   return detail::convert_number(none, target, in, out, why, sizeof why);
 }
 
+// A number read from the payload and converted to a scalar of `kind`/`size`.
+bool read_converted(const Schema& writer, std::uint32_t type, const std::uint8_t* bytes,
+                    std::size_t size, Kind kind, std::uint32_t kind_size, Number& out) {
+  Number in;
+  return read_value(writer, type, bytes, size, in) && convert(in, kind, kind_size, out);
+}
+
 }  // namespace
 
 OldValues::OldValues(const Schema& writer, std::uint32_t type, const std::uint8_t* bytes,
@@ -248,9 +255,9 @@ bool OldValues::has(const char* field) const {
 
 bool OldValues::get(const char* field, bool& out) const {
   Span span{};
-  Number in, converted;
-  if (!locate(field, span) || !read_value(*writer_, span.type, span.bytes, span.size, in) ||
-      !convert(in, Kind::Bool, 1, converted)) {
+  Number converted;
+  if (!locate(field, span) ||
+      !read_converted(*writer_, span.type, span.bytes, span.size, Kind::Bool, 1, converted)) {
     return false;
   }
   out = converted.u != 0;
@@ -259,9 +266,9 @@ bool OldValues::get(const char* field, bool& out) const {
 
 bool OldValues::get(const char* field, std::int64_t& out) const {
   Span span{};
-  Number in, converted;
-  if (!locate(field, span) || !read_value(*writer_, span.type, span.bytes, span.size, in) ||
-      !convert(in, Kind::Int, 8, converted)) {
+  Number converted;
+  if (!locate(field, span) ||
+      !read_converted(*writer_, span.type, span.bytes, span.size, Kind::Int, 8, converted)) {
     return false;
   }
   out = converted.s;
@@ -270,9 +277,9 @@ bool OldValues::get(const char* field, std::int64_t& out) const {
 
 bool OldValues::get(const char* field, std::uint64_t& out) const {
   Span span{};
-  Number in, converted;
-  if (!locate(field, span) || !read_value(*writer_, span.type, span.bytes, span.size, in) ||
-      !convert(in, Kind::UInt, 8, converted)) {
+  Number converted;
+  if (!locate(field, span) ||
+      !read_converted(*writer_, span.type, span.bytes, span.size, Kind::UInt, 8, converted)) {
     return false;
   }
   out = converted.u;
