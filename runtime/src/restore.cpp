@@ -1217,8 +1217,8 @@ class Restorer {
 namespace {
 
 // The fast path for a copy-only plan (the same build, or changes that only move fields): true
-// when the payload is exactly the roots' copy programs and two empty sections, with every bool
-// 0 or 1, after copying (if `apply`). False for anything else, leaving the general decoder to
+// when the payload is exactly the roots' copy programs and two empty sections, every bool 0 or
+// 1 and every bit-field value within its width, after copying (if `apply`). False for anything else, leaving the general decoder to
 // find and name the fault; nothing is written then.
 bool restore_copy_only(const Plan& plan, const std::uint8_t* payload, std::size_t size,
                        bool apply) {
