@@ -35,6 +35,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "engine.hpp"  // thread_scratch_bytes: the memo tables' size
 #include "schema_tables.hpp"
 #include "symcr/ops.hpp"
 #include "symcr/schema.hpp"
@@ -234,6 +235,8 @@ void BM_GraphCheckpoint(benchmark::State& state) {
   }
   state.counters["checkpoint_bytes"] = static_cast<double>(out.size());
   state.counters["bytes_per_node"] = static_cast<double>(out.size()) / static_cast<double>(count);
+  state.counters["scratch_bytes"] =
+      static_cast<double>(symcr::detail::thread_scratch_bytes().checkpoint);
   graph = Graph{nullptr, 0};
   free_nodes(nodes);
 }
@@ -263,6 +266,8 @@ void BM_GraphRestore(benchmark::State& state) {
     state.SkipWithError("restore did not rebuild the whole cycle");
   }
   state.counters["checkpoint_bytes"] = static_cast<double>(in.size());
+  state.counters["scratch_bytes"] =
+      static_cast<double>(symcr::detail::thread_scratch_bytes().restore);
 }
 BENCHMARK(BM_GraphRestore)->Apply(graph_sizes);
 

@@ -22,6 +22,11 @@ class AddressTable {
     used_.clear();
   }
 
+  // Bytes held (slots and the used-slot list), for scratch statistics.
+  std::size_t capacity_bytes() const {
+    return slots_.capacity() * sizeof(Slot) + used_.capacity() * sizeof(std::uint32_t);
+  }
+
   // Starts loading the key's first slot: the save path calls this for a struct's pointer
   // fields before encoding them, so their cache misses overlap instead of queueing.
   void prefetch(std::uintptr_t address, std::uint32_t type) const {

@@ -812,11 +812,29 @@ class Encoder {
   Status error_;
 };
 
+EncodeScratch& thread_encode_scratch() {
+  thread_local EncodeScratch scratch;
+  return scratch;
+}
+
+template <typename T>
+std::size_t capacity_bytes(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+
 }  // namespace
+
+std::size_t encode_scratch_bytes() {
+  const EncodeScratch& s = thread_encode_scratch();
+  return s.memo.capacity_bytes() + s.buckets.capacity_bytes() + capacity_bytes(s.chain) +
+         capacity_bytes(s.regions) + capacity_bytes(s.large_regions) +
+         capacity_bytes(s.references) + capacity_bytes(s.heap) + capacity_bytes(s.steps) +
+         capacity_bytes(s.spans) + capacity_bytes(s.spans_scratch);
+}
 
 Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out) {
   const SchemaCacheEntry& cached = schema_cache_entry(schema);
-  thread_local EncodeScratch scratch;
+  EncodeScratch& scratch = thread_encode_scratch();
   const std::size_t start = out.size();
   Encoder encoder(schema, out, scratch, cached.facts);
   encoder.start_ = start;

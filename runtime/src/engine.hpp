@@ -15,6 +15,18 @@
 
 namespace symcr::detail {
 
+// The scratch memory of the calling thread's engine, in bytes of capacity: what its last
+// checkpoint's memo tables, region index and reference and heap lists hold (kept between
+// checkpoints for reuse), and what the decoding tables of its last restore that got as far as
+// writing held (freed on return; 0 after the copy-only fast path).
+// Rebuilt objects and the output buffer are not scratch. For benchmarks and tools.
+struct ScratchBytes {
+  std::size_t checkpoint = 0;
+  std::size_t restore = 0;
+};
+ScratchBytes thread_scratch_bytes();
+std::size_t encode_scratch_bytes();  // its checkpoint part (encode.cpp)
+
 // For the payload decoders: sets `error`, unless it already holds one, to Corrupt "invalid
 // payload: <format...>", and returns it. Out of line and cold, so that its message buffer is
 // not in the frames of the recursive decoders (their depth is bounded, their frames not).

@@ -68,6 +68,14 @@ void copy_only_write(const PlanNode& n, const std::uint8_t* wire, std::uint8_t* 
   }
 }
 
+template <typename T>
+std::size_t bytes_of(const std::vector<T>& v) {
+  return v.capacity() * sizeof(T);
+}
+
+// The last restore's scratch on this thread (thread_scratch_bytes).
+thread_local std::size_t last_restore_scratch = 0;
+
 enum class Mode : std::uint8_t {
   Check,  // pass 1: read and record, never write
   Stage,  // pass 1, inside a validated value: write into a staged copy, record nothing
@@ -161,6 +169,22 @@ class Restorer {
   }
 
   std::size_t value_rejections() const { return value_rejections_; }
+
+  // Capacity of the decoding tables (thread_scratch_bytes).
+  std::size_t scratch_bytes() const {
+    std::size_t bytes = bytes_of(frames_) + bytes_of(rejection_counts_) + bytes_of(verdicts_) +
+                        bytes_of(slots_) + bytes_of(containers_) + bytes_of(heap_) +
+                        bytes_of(refs_) + bytes_of(steps_) + bytes_of(mapped_) +
+                        bytes_of(claimed_) + materialisable_.capacity() / 8 +
+                        bytes_of(element_needed_) + bytes_of(heap_live_) + bytes_of(holders_) +
+                        bytes_of(applied_slots_) + bytes_of(element_slots_) +
+                        bytes_of(element_addresses_) + bytes_of(string_scratch_) +
+                        explained_.bucket_count() * sizeof(void*) +
+                        explained_.size() * (sizeof(std::pair<std::uint32_t, std::string>) +
+                                             2 * sizeof(void*));
+    for (const std::vector<void*>& addresses : element_addresses_) bytes += bytes_of(addresses);
+    return bytes;
+  }
 
   void apply() {
     mode_ = Mode::Apply;
@@ -1267,6 +1291,7 @@ Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::u
   const bool strict_refusal = options.strict && plan->any_lossy;
   if (!plan_only && !strict_refusal && plan->copy_only_payload &&
       restore_copy_only(*plan, payload, size, apply)) {
+    last_restore_scratch = 0;  // no decoding tables
     return report;
   }
   std::size_t value_rejections = 0;
@@ -1294,10 +1319,18 @@ Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::u
     return report;
   }
   if (apply) restorer.apply();
+  last_restore_scratch = restorer.scratch_bytes();
   return report;
 }
 
 }  // namespace
+
+ScratchBytes thread_scratch_bytes() {
+  ScratchBytes bytes;
+  bytes.checkpoint = encode_scratch_bytes();
+  bytes.restore = last_restore_scratch;
+  return bytes;
+}
 
 Report restore_payload(const Schema& writer, std::uint64_t writer_hash,
                        const std::uint8_t* payload, std::size_t size, const Schema& reader,

@@ -404,6 +404,26 @@ TEST(FastPath, BitFieldValuesBeyondTheirWidthsAreRejectedLikeTheGeneralPath) {
   EXPECT_EQ(bits.whole, 0);  // nothing written
 }
 
+TEST(FastPath, ScratchStatisticsSeeTheTablesOfTheGeneralPathOnly) {
+  vroot.doubles = {1, 2, 3};
+  vroot.ints = {4, 5, 6, 7};
+  vroot.into = &vroot.ints[2];
+  vroot.bits = {8};
+  const Saved with_pointer = save(vroot_schema());
+  const std::size_t checkpoint_scratch = symcr::detail::thread_scratch_bytes().checkpoint;
+  EXPECT_GT(checkpoint_scratch, 0u);  // the memo table for `into` and the region index
+  ASSERT_TRUE(load(with_pointer, vroot_schema()).ok());
+  const std::size_t general = symcr::detail::thread_scratch_bytes().restore;
+  EXPECT_GT(general, 0u);
+  EXPECT_EQ(vroot.into, &vroot.ints[2]);
+
+  flat = Flat{1, true, 1.0, {1, 2, 3}, {true, false}};
+  ASSERT_TRUE(load(save(flat_schema()), flat_schema()).ok());
+  EXPECT_EQ(symcr::detail::thread_scratch_bytes().restore, 0u);  // copy-only: no tables
+  // Kept between checkpoints for reuse: a smaller checkpoint does not shrink it.
+  EXPECT_GE(symcr::detail::thread_scratch_bytes().checkpoint, checkpoint_scratch);
+}
+
 TEST(FastPath, ReportsAreIndependentCopies) {
   flat = Flat{1, true, 1.0, {1, 2, 3}, {true, false}};
   const Saved saved = save(flat_schema());
