@@ -1469,89 +1469,89 @@ const Type *hookedType(QualType Param) {
       .getTypePtr();
 }
 
-/// Validation hooks: a non-template `bool symcr_validate(const T&)` for a
-/// class T, where hookIsFoundByLookup. Any other declaration of that name with
-/// a class parameter is an error rather than a silently unused hook.
-void findValidators(ASTContext &Context,
-                    const std::vector<FunctionDecl *> &Candidates,
-                    std::set<const Type *> &Validated, Diagnostics &Diags) {
+/// A user hook found by its function name (symcr_validate, symcr_migrate).
+struct HookForm {
+  const char *Noun; ///< "validation hook", for diagnostics
+  /// Which declarations of the name are meant as the hook (by parameter
+  /// count); the others are ignored.
+  bool (*IsCandidate)(const FunctionDecl *FD);
+  /// The exact signature, given the first parameter (canonical).
+  bool (*HasSignature)(const FunctionDecl *FD, QualType Param);
+  /// The wanted declaration for the class spelt `Class`.
+  std::string (*Wanted)(const std::string &Class);
+};
+
+/// Finds the hooks of `Form` among `Candidates`: non-template, non-member
+/// functions whose first parameter names a class T, declared where
+/// hookIsFoundByLookup. A candidate of the wrong signature or place is an
+/// error rather than a silently unused hook.
+void findHooks(ASTContext &Context,
+               const std::vector<FunctionDecl *> &Candidates,
+               const HookForm &Form, std::set<const Type *> &Hooked,
+               Diagnostics &Diags) {
   for (const FunctionDecl *FD : Candidates) {
     if (FD->getTemplatedKind() != FunctionDecl::TK_NonTemplate ||
-        FD->isDependentContext() || FD->getNumParams() != 1 ||
-        isa<CXXMethodDecl>(FD))
+        FD->isDependentContext() || isa<CXXMethodDecl>(FD) ||
+        !Form.IsCandidate(FD))
       continue;
     QualType Param = FD->getParamDecl(0)->getType().getCanonicalType();
     const RecordDecl *RD = Param.getNonReferenceType()->getAsRecordDecl();
     if (!RD)
       continue;
     Location Where = locationOf(Context, FD->getLocation());
-    std::string Wanted =
-        "'bool symcr_validate(const " + hookClassName(Context, Param) + "&)'";
-    if (!Param->isLValueReferenceType() ||
-        !Param.getNonReferenceType().isConstQualified() ||
-        Param.getNonReferenceType().isVolatileQualified() ||
-        !FD->getReturnType().getCanonicalType()->isBooleanType()) {
-      Diags.error(Where, "a validation hook must be declared " + Wanted);
+    std::string Wanted = "'" + Form.Wanted(hookClassName(Context, Param)) + "'";
+    if (!Form.HasSignature(FD, Param)) {
+      Diags.error(Where, std::string("a ") + Form.Noun + " must be declared " +
+                             Wanted);
       continue;
     }
     if (!hookIsFoundByLookup(FD, RD)) {
-      Diags.error(Where, "validation hook " + Wanted +
+      Diags.error(Where, std::string(Form.Noun) + " " + Wanted +
                              " must be declared in the namespace of its "
                              "class (or as its friend, or globally), where "
                              "argument-dependent lookup finds it");
       continue;
     }
-    Validated.insert(hookedType(Param));
+    Hooked.insert(hookedType(Param));
   }
 }
 
-/// Migration hooks: a non-template `void symcr_migrate(T&, const
-/// symcr::OldValues&)` for a class T, found like validation hooks (T's
-/// namespace, a hidden friend, or the global namespace). Any other declaration
-/// of that name whose first parameter is a class is an error rather than a
-/// silently unused hook.
-void findMigrators(ASTContext &Context,
-                   const std::vector<FunctionDecl *> &Candidates,
-                   std::set<const Type *> &Migrated, Diagnostics &Diags) {
-  for (const FunctionDecl *FD : Candidates) {
-    if (FD->getTemplatedKind() != FunctionDecl::TK_NonTemplate ||
-        FD->isDependentContext() || FD->getNumParams() == 0 ||
-        isa<CXXMethodDecl>(FD))
-      continue;
-    QualType Param = FD->getParamDecl(0)->getType().getCanonicalType();
-    const RecordDecl *RD = Param.getNonReferenceType()->getAsRecordDecl();
-    if (!RD)
-      continue;
-    Location Where = locationOf(Context, FD->getLocation());
-    std::string Wanted = "'void symcr_migrate(" + hookClassName(Context, Param) +
-                         "&, const symcr::OldValues&)'";
-    auto IsOldValuesReference = [](QualType T) {
-      T = T.getCanonicalType();
-      if (!T->isLValueReferenceType())
+/// `bool symcr_validate(const T&)`.
+const HookForm ValidationHook = {
+    "validation hook",
+    [](const FunctionDecl *FD) { return FD->getNumParams() == 1; },
+    [](const FunctionDecl *FD, QualType Param) {
+      return Param->isLValueReferenceType() &&
+             Param.getNonReferenceType().isConstQualified() &&
+             !Param.getNonReferenceType().isVolatileQualified() &&
+             FD->getReturnType().getCanonicalType()->isBooleanType();
+    },
+    [](const std::string &Class) {
+      return "bool symcr_validate(const " + Class + "&)";
+    }};
+
+/// `void symcr_migrate(T&, const symcr::OldValues&)`.
+const HookForm MigrationHook = {
+    "migration hook",
+    [](const FunctionDecl *FD) { return FD->getNumParams() != 0; },
+    [](const FunctionDecl *FD, QualType Param) {
+      if (FD->getNumParams() != 2 || !Param->isLValueReferenceType() ||
+          Param.getNonReferenceType().isConstQualified() ||
+          Param.getNonReferenceType().isVolatileQualified() ||
+          !FD->getReturnType().getCanonicalType()->isVoidType())
         return false;
-      QualType Pointee = T.getNonReferenceType();
-      const RecordDecl *Old = Pointee->getAsRecordDecl();
+      QualType Old = FD->getParamDecl(1)->getType().getCanonicalType();
+      if (!Old->isLValueReferenceType())
+        return false;
+      QualType Pointee = Old.getNonReferenceType();
+      const RecordDecl *OldRecord = Pointee->getAsRecordDecl();
       return Pointee.isConstQualified() && !Pointee.isVolatileQualified() &&
-             Old && Old->getQualifiedNameAsString() == "symcr::OldValues";
-    };
-    if (FD->getNumParams() != 2 || !Param->isLValueReferenceType() ||
-        Param.getNonReferenceType().isConstQualified() ||
-        Param.getNonReferenceType().isVolatileQualified() ||
-        !IsOldValuesReference(FD->getParamDecl(1)->getType()) ||
-        !FD->getReturnType().getCanonicalType()->isVoidType()) {
-      Diags.error(Where, "a migration hook must be declared " + Wanted);
-      continue;
-    }
-    if (!hookIsFoundByLookup(FD, RD)) {
-      Diags.error(Where, "migration hook " + Wanted +
-                             " must be declared in the namespace of its "
-                             "class (or as its friend, or globally), where "
-                             "argument-dependent lookup finds it");
-      continue;
-    }
-    Migrated.insert(hookedType(Param));
-  }
-}
+             OldRecord &&
+             OldRecord->getQualifiedNameAsString() == "symcr::OldValues";
+    },
+    [](const std::string &Class) {
+      return "void symcr_migrate(" + Class + "&, const symcr::OldValues&)";
+    }};
 
 bool recordHasMember(const RecordDecl *RD, const std::string &Member) {
   const RecordDecl *Def = RD->getDefinition();
@@ -1580,8 +1580,9 @@ void SchemaBuilder::addTranslationUnit(
   Selections Select;
 
   if (Context.getLangOpts().CPlusPlus) {
-    findValidators(Context, Index.Validators, Select.Validated, Diags);
-    findMigrators(Context, Index.Migrators, Select.Migrated, Diags);
+    findHooks(Context, Index.Validators, ValidationHook, Select.Validated,
+              Diags);
+    findHooks(Context, Index.Migrators, MigrationHook, Select.Migrated, Diags);
   }
 
   TypeWalker Namer(Context, S, TUIndex, Program, Diags, Select);

@@ -4,7 +4,9 @@
 // one of those fields.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
+#include <initializer_list>
 #include <map>
 #include <string>
 
@@ -225,26 +227,33 @@ TEST(WorldC, VisitNamesLeavesAndPointerTargets) {
 namespace engine_tests {
 namespace {
 
-// The reader of world C with Nav::lon no longer described (as if the field were removed).
-const symcr::Schema& reader_without_lon() {
-  static symcr::TypeInfo types[14];
-  static symcr::FieldInfo nav_fields[3];
-  static symcr::Schema schema;
-  static bool built = false;
-  if (!built) {
+// World C's reader with some fields of one type no longer described (as if removed).
+struct ReaderWithoutFields {
+  symcr::TypeInfo types[14];
+  symcr::FieldInfo fields[16];
+  symcr::Schema schema;
+
+  ReaderWithoutFields(std::uint32_t type, std::initializer_list<std::string> removed) {
     const symcr::Schema& base = c1::schema();
-    if (base.type_count > 14) std::abort();
+    if (base.type_count > 14 || base.types[type].field_count > 16) std::abort();
     for (std::uint32_t t = 0; t < base.type_count; ++t) types[t] = base.types[t];
-    const symcr::TypeInfo& nav = base.types[3];
-    nav_fields[0] = nav.fields[0];  // target
-    nav_fields[1] = nav.fields[2];  // fresh
-    nav_fields[2] = nav.fields[3];  // lat
-    types[3].fields = nav_fields;
-    types[3].field_count = 3;
+    std::uint32_t kept = 0;
+    for (std::uint32_t f = 0; f < base.types[type].field_count; ++f) {
+      const symcr::FieldInfo& field = base.types[type].fields[f];
+      if (std::find(removed.begin(), removed.end(), field.name) == removed.end()) {
+        fields[kept++] = field;
+      }
+    }
+    types[type].fields = fields;
+    types[type].field_count = kept;
     schema = symcr::Schema{types, base.type_count, base.roots, base.root_count};
-    built = true;
   }
-  return schema;
+};
+
+// The reader of world C without Nav::lon.
+const symcr::Schema& reader_without_lon() {
+  static const ReaderWithoutFields reader(3, {"lon"});
+  return reader.schema;
 }
 
 TEST(WorldC, PointerToARemovedFieldKeepsTheNewBuildsValue) {
@@ -422,27 +431,8 @@ namespace {
 
 // World C's reader without the fields that pointed to the heap nodes: nothing may be created.
 const symcr::Schema& reader_without_node_pointers() {
-  static symcr::TypeInfo types[14];
-  static symcr::FieldInfo world_fields[12];
-  static symcr::Schema schema;
-  static bool built = false;
-  if (!built) {
-    const symcr::Schema& base = c1::schema();
-    if (base.type_count > 14) std::abort();
-    for (std::uint32_t t = 0; t < base.type_count; ++t) types[t] = base.types[t];
-    const symcr::TypeInfo& world = base.types[12];
-    std::uint32_t kept = 0;
-    for (std::uint32_t f = 0; f < world.field_count; ++f) {
-      const std::string name = world.fields[f].name;
-      if (name == "head" || name == "again" || name == "into_node") continue;
-      world_fields[kept++] = world.fields[f];
-    }
-    types[12].fields = world_fields;
-    types[12].field_count = kept;
-    schema = symcr::Schema{types, base.type_count, base.roots, base.root_count};
-    built = true;
-  }
-  return schema;
+  static const ReaderWithoutFields reader(12, {"head", "again", "into_node"});
+  return reader.schema;
 }
 
 TEST(WorldC, HeapObjectsReachedOnlyThroughDroppedFieldsAreNotCreated) {

@@ -98,6 +98,9 @@ class StoreTest : public ::testing::Test {
     open(store, schema);
     return store.restore_latest();
   }
+  // Scrambles the live state, reopens the store and restores: the checkpoint of `sequence`,
+  // which saved seed `sequence`, must come back.
+  void expect_restores_sequence(int sequence);
 };
 
 void expect_a(int seed) {
@@ -105,6 +108,14 @@ void expect_a(int seed) {
   EXPECT_EQ(copter_a.mission.items[2].speed, seed * 10 + 2);
   EXPECT_EQ(copter_a.armed_ms, 5000000000ull + static_cast<std::uint64_t>(seed));
   EXPECT_EQ(telemetry_a.frames, static_cast<std::uint32_t>(7 * seed));
+}
+
+void StoreTest::expect_restores_sequence(int sequence) {
+  scramble_a();
+  const symcr::Report report = restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), static_cast<std::uint64_t>(sequence));
+  expect_a(sequence);
 }
 
 TEST_F(StoreTest, CreatesAPreallocatedFileWithMode0600) {
@@ -180,11 +191,7 @@ TEST_F(StoreTest, FallsBackPastABitFlipInTheNewestSlot) {
   const std::uint32_t newest = file.slot_with_sequence(6);
   file.slot(newest)[60] ^= 0x04;
   file.write();
-  scramble_a();
-  const symcr::Report report = restore_latest();
-  ASSERT_TRUE(report.ok()) << report.status().message();
-  EXPECT_EQ(report.sequence(), 5u);
-  expect_a(5);
+  expect_restores_sequence(5);
 }
 
 TEST_F(StoreTest, FallsBackPastATornNewestSlot) {
@@ -197,11 +204,7 @@ TEST_F(StoreTest, FallsBackPastATornNewestSlot) {
     std::memset(file.slot(newest) + half, 0, file.slot_size() - half);
     file.write();
   }
-  scramble_a();
-  symcr::Report report = restore_latest();
-  ASSERT_TRUE(report.ok()) << report.status().message();
-  EXPECT_EQ(report.sequence(), 5u);
-  expect_a(5);
+  expect_restores_sequence(5);
   {
     // Torn the other way: the first half of the slot zeroed, header included.
     StoreFile file(path);
@@ -209,11 +212,7 @@ TEST_F(StoreTest, FallsBackPastATornNewestSlot) {
     std::memset(file.slot(slot5), 0, file.slot_size() / 2);
     file.write();
   }
-  scramble_a();
-  report = restore_latest();
-  ASSERT_TRUE(report.ok()) << report.status().message();
-  EXPECT_EQ(report.sequence(), 4u);
-  expect_a(4);
+  expect_restores_sequence(4);
 }
 
 TEST_F(StoreTest, SaveAfterFallbackContinuesPastTheHighestValidSequence) {
@@ -260,11 +259,7 @@ TEST_F(StoreTest, AValidSlotThatRestoreRejectsFallsBackToTheNextOne) {
   file.slot(newest)[56 + kPayloadOffsetOfActiveA] = 7;
   file.reseal(newest);
   file.write();
-  scramble_a();
-  const symcr::Report report = restore_latest();
-  ASSERT_TRUE(report.ok()) << report.status().message();
-  EXPECT_EQ(report.sequence(), 2u);
-  expect_a(2);
+  expect_restores_sequence(2);
 }
 
 TEST_F(StoreTest, AFutureVersionSlotIsSkipped) {
