@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <limits.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -30,8 +31,19 @@ std::string resolve_links(const std::string& path) {
 }
 
 Status detect_file_kind(const std::string& path, FileKind& out) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  // O_NONBLOCK: a FIFO must be refused, not waited on for a writer.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) return detail::io_error("cannot open", path.c_str(), errno);
+  struct stat info {};
+  if (::fstat(fd, &info) != 0) {
+    const int error_number = errno;
+    ::close(fd);
+    return detail::io_error("cannot stat", path.c_str(), error_number);
+  }
+  if (!S_ISREG(info.st_mode)) {
+    ::close(fd);
+    return Status(Error::Io, "%s is not a regular file", path.c_str());
+  }
   std::uint8_t magic[8] = {};
   std::size_t got = 0;
   const Status status = detail::pread_full(fd, magic, sizeof magic, 0, got, path.c_str());

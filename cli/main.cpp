@@ -4,6 +4,9 @@
 #include <llvm/Support/CommandLine.h>
 #include <llvm/Support/raw_ostream.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <optional>
 #include <string>
 
@@ -70,6 +73,23 @@ std::optional<std::uint32_t> given(const cl::opt<unsigned>& option) {
 
 void print_version(llvm::raw_ostream& out) { out << "symcr " SYMCR_VERSION "\n"; }
 
+int run_subcommand() {
+  if (inspect_command) {
+    return symcr::cli::run_inspect({inspect_path, given(slot), json_output});
+  }
+  if (verify_command) return symcr::cli::run_verify({verify_path, json_output});
+  if (diff_command) {
+    return symcr::cli::run_diff({diff_a, diff_b, given(slot_a), given(slot_b), json_output});
+  }
+  if (plan_command) {
+    return symcr::cli::run_plan(
+        {plan_checkpoint, given(slot), plan_schema, plan_strict, json_output});
+  }
+  llvm::errs() << "symcr: a subcommand is needed: inspect, verify, diff or plan (see "
+                  "'symcr --help')\n";
+  return symcr::cli::kExitError;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -88,18 +108,19 @@ int main(int argc, char** argv) {
           &llvm::errs())) {
     return symcr::cli::kExitError;
   }
-  if (inspect_command) {
-    return symcr::cli::run_inspect({inspect_path, given(slot), json_output});
+  const int code = run_subcommand();
+  // Output that could not be written (a full disk, a closed stdout) is a failure, whatever the
+  // subcommand found.
+  llvm::outs().flush();
+  std::string failure;
+  if (llvm::outs().has_error()) {
+    failure = llvm::outs().error().message();
+    llvm::outs().clear_error();  // else LLVM aborts at exit
   }
-  if (verify_command) return symcr::cli::run_verify({verify_path, json_output});
-  if (diff_command) {
-    return symcr::cli::run_diff({diff_a, diff_b, given(slot_a), given(slot_b), json_output});
+  if (std::fflush(stdout) != 0 || std::ferror(stdout)) failure = std::strerror(errno);
+  if (!failure.empty()) {
+    std::fprintf(stderr, "symcr: error: cannot write the output: %s\n", failure.c_str());
+    return symcr::cli::kExitError;
   }
-  if (plan_command) {
-    return symcr::cli::run_plan(
-        {plan_checkpoint, given(slot), plan_schema, plan_strict, json_output});
-  }
-  llvm::errs() << "symcr: a subcommand is needed: inspect, verify, diff or plan (see "
-                  "'symcr --help')\n";
-  return symcr::cli::kExitError;
+  return code;
 }

@@ -4,18 +4,24 @@
 // A store file is mostly zeros (two schema areas of at least 4 KiB, preallocated slots), so the
 // input describes it compactly and the harness writes the file:
 //   control byte: bits 0-3 reader world; bit 4 recompute every CRC/hash after mutation;
-//                 bit 5 strict mode; bit 6 also list the store with the CLI's StoreReader
+//                 bit 5 strict mode; bit 6 also list the store with the CLI's StoreReader;
+//                 bit 7 open with another geometry than the header's (one slot more)
 //   sections, each u16 length + bytes, in order:
-//     0: the store header (bytes 0..35 of the file, zero-padded to 4096)
+//     0: the store header (bytes 0..35 of the file, zero-padded to 4096); bytes 36..39, when
+//        present and not zero, a length to truncate the file to
+//        (a damaged header, when not fixed, takes the recovery path that scans the slots)
 //     1: schema area 0 (at 4096): u64 hash, u32 size, u32 crc32c, schema bytes
 //     2: schema area 1 (at 4096 + schema_area_size)
 //     3...: slot i's bytes (a record), at slots_offset + i * slot_size, cut at slot_size
-// The file gets the size its header implies (sparse), capped at 4 MiB; the store is opened
-// with the geometry its header claims, so the open never reinitialises a file with slots.
+// The file gets the size its header implies (sparse), capped at 4 MiB. Checked: a read-only
+// open and restore write nothing; whatever a writable open decides (recover the header, keep a
+// foreign geometry, grow a truncated file back), it restores what the read-only one restores
+// and, when that was a checkpoint, changes no byte of the file past its header.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -47,6 +53,17 @@ const std::string& store_path() {
   std::fprintf(stderr, "symcr fuzz: %s (reader %s)\n%s\n", what, fuzz::world_name(world),
                report.to_text().c_str());
   std::abort();
+}
+
+std::vector<std::uint8_t> read_whole(const std::string& path) {
+  std::vector<std::uint8_t> bytes;
+  FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) return bytes;
+  std::uint8_t buffer[65536];
+  std::size_t n;
+  while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) bytes.insert(bytes.end(), buffer, buffer + n);
+  std::fclose(file);
+  return bytes;
 }
 
 void fix_area(std::vector<std::uint8_t>& area) {
@@ -114,29 +131,67 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (fix) fuzz::fix_record_integrity(record.data(), record.size());
     put(record, slots_offset + slot * slot_size, slot_size);
   }
-  if (::ftruncate(fd, static_cast<off_t>(file_size < 4096 ? 4096 : file_size)) != 0) {
-    std::perror("symcr fuzz: ftruncate");
+  std::uint64_t length = file_size < 4096 ? 4096 : file_size;
+  if (sections[0].size() >= 40 && le::load32(sections[0].data() + 36) != 0) {
+    length = std::min<std::uint64_t>(length, le::load32(sections[0].data() + 36));
   }
+  if (::ftruncate(fd, static_cast<off_t>(length)) != 0) std::perror("symcr fuzz: ftruncate");
   ::close(fd);
+  const std::vector<std::uint8_t> file_before = read_whole(path);
+
+  symcr::RestoreOptions restore_options;
+  restore_options.strict = (control & 0x20) != 0;
+  // What a read-only open restores, which must write nothing at all.
+  fuzz::reset_world(world);
+  bool restorable = false;
+  {
+    symcr::Store store;
+    if (symcr::Store::open_readonly(path.c_str(), fuzz::world_schema(world), store).ok()) {
+      restorable = store.restore_latest(restore_options).ok();
+    }
+  }
+  if (read_whole(path) != file_before) {
+    std::fprintf(stderr, "symcr fuzz: a read-only open or restore wrote into the store\n");
+    std::abort();
+  }
 
   fuzz::reset_world(world);
   const std::vector<std::uint8_t> before = fuzz::world_snapshot(world);
+  bool restored = false;
+  symcr::StoreOptions options;
+  options.slots = (control & 0x80) ? slot_count + 1 : slot_count;
+  options.slot_size = slot_size;
+  const bool options_valid = symcr::detail::check_store_dimensions(options.slots, slot_size).ok();
   {
-    symcr::StoreOptions options;
-    options.slots = slot_count;
-    options.slot_size = slot_size;
     symcr::Store store;
     const symcr::Status opened = symcr::Store::open(path.c_str(), fuzz::world_schema(world), options, store);
     if (opened.ok()) {
-      symcr::RestoreOptions restore_options;
-      restore_options.strict = (control & 0x20) != 0;
       const symcr::Report report = store.restore_latest(restore_options);
+      restored = report.ok();
       (void)report.to_json();
       if (!report.ok() && fuzz::world_snapshot(world) != before) {
         fail("a refused restore modified the live state", world, report);
       }
       if (!fuzz::world_rules_hold(world)) fail("a restored value breaks the reader's rules", world, report);
     }
+  }
+  if (restorable && options_valid && !restored) {
+    std::fprintf(stderr, "symcr fuzz: open() lost a checkpoint that open_readonly() restores\n");
+    std::abort();
+  }
+  // A store holding a restorable checkpoint is never reinitialised: past its header, opening
+  // and restoring change nothing that was there (a truncated file only grows back).
+  const std::vector<std::uint8_t> file_after = read_whole(path);
+  if (restorable && file_after.size() < file_before.size()) {
+    std::fprintf(stderr, "symcr fuzz: opening shrank a store holding checkpoints\n");
+    std::abort();
+  }
+  if (restorable &&
+      !std::equal(file_before.begin() + std::min<std::size_t>(36, file_before.size()),
+                  file_before.end(),
+                  file_after.begin() + std::min<std::size_t>(36, file_before.size()))) {
+    std::fprintf(stderr, "symcr fuzz: opening or restoring changed the store's bytes\n");
+    std::abort();
   }
   fuzz::reset_world(world);
 

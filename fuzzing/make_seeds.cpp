@@ -5,6 +5,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -230,14 +231,23 @@ std::vector<std::uint8_t> read_file(const std::string& path) {
 }
 
 // The store file at `path` in the fuzzer's compact form (fuzz_store.cpp).
-std::vector<std::uint8_t> compact_store(const std::string& path, std::uint8_t control) {
+// With `cut_in_slot`, the header section also asks the fuzzer to truncate the file 100 bytes
+// into that slot.
+std::vector<std::uint8_t> compact_store(const std::string& path, std::uint8_t control,
+                                        int cut_in_slot = -1) {
   const std::vector<std::uint8_t> file = read_file(path);
   std::vector<std::uint8_t> out{control};
-  put_section(out, file.data(), 36);
   const std::uint32_t slot_count = le::load32(file.data() + 12);
   const std::uint32_t slot_size = le::load32(file.data() + 16);
   const std::uint32_t area_size = le::load32(file.data() + 20);
   const std::uint64_t slots_offset = le::load64(file.data() + 24);
+  std::vector<std::uint8_t> header(file.begin(), file.begin() + 36);
+  if (cut_in_slot >= 0) {
+    header.resize(40);
+    le::store32(header.data() + 36, static_cast<std::uint32_t>(
+                                        slots_offset + std::uint64_t(cut_in_slot) * slot_size + 100));
+  }
+  put_section(out, header.data(), header.size());
   for (int a = 0; a < 2; ++a) {
     const std::uint8_t* area = file.data() + 4096 + std::uint64_t(a) * area_size;
     const std::uint32_t size = le::load32(area + 8);
@@ -337,6 +347,16 @@ int main(int argc, char** argv) {
     write_seed(stores, std::string(world_name(world)) + "-store-raw",
                compact_store(path, static_cast<std::uint8_t>(partner(world) | 0x40)));
     written += 2;
+    // The recovery paths: a zeroed header (found again by scanning the slots), another
+    // geometry asked for, and a file cut inside its second slot.
+    std::vector<std::uint8_t> zeroed = compact_store(path, static_cast<std::uint8_t>(world));
+    std::fill(zeroed.begin() + 3, zeroed.begin() + 3 + 36, std::uint8_t{0});
+    write_seed(stores, std::string(world_name(world)) + "-zeroed-header", zeroed);
+    write_seed(stores, std::string(world_name(world)) + "-foreign-geometry",
+               compact_store(path, static_cast<std::uint8_t>(world | 0x10 | 0x80)));
+    write_seed(stores, std::string(world_name(world)) + "-truncated",
+               compact_store(path, static_cast<std::uint8_t>(world | 0x10), /*cut_in_slot=*/1));
+    written += 3;
     if (partner(world) != world) {
       symcr::Store store;
       symcr::Status status = symcr::Store::open(path.c_str(), world_schema(partner(world)), options, store);

@@ -3,11 +3,14 @@
 
 #include <fcntl.h>
 #include <limits.h>
+#include <dirent.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 namespace symcr::detail {
@@ -39,6 +42,71 @@ int open_retrying(const char* path, int flags, mode_t mode = 0) {
     fd = ::open(path, flags, mode);
   } while (fd < 0 && errno == EINTR);
   return fd;
+}
+
+// Writes the directory holding `path` into `directory` ("." or "/" where that is it) and
+// returns the final component of `path`; nullptr when the directory does not fit.
+const char* split_directory(const char* path, char* directory, std::size_t size) {
+  const char* slash = std::strrchr(path, '/');
+  if (slash == nullptr) {
+    std::strcpy(directory, ".");
+    return path;
+  }
+  const std::size_t length = slash == path ? 1 : static_cast<std::size_t>(slash - path);
+  if (length >= size) return nullptr;
+  std::memcpy(directory, path, length);
+  directory[length] = '\0';
+  return slash + 1;
+}
+
+// "<base>.tmp.<pid>.<n>" for `base`: the pid, or -1 when `name` is not of that form.
+long temp_file_pid(const char* name, const char* base, std::size_t base_length) {
+  static constexpr char kTag[] = ".tmp.";
+  if (std::strncmp(name, base, base_length) != 0) return -1;
+  const char* p = name + base_length;
+  if (std::strncmp(p, kTag, sizeof kTag - 1) != 0) return -1;
+  p += sizeof kTag - 1;
+  char* end = nullptr;
+  errno = 0;
+  const long pid = std::strtol(p, &end, 10);
+  if (end == p || *end != '.' || errno != 0 || pid <= 0) return -1;
+  p = end + 1;
+  if (*p == '\0') return -1;
+  for (; *p != '\0'; ++p) {
+    if (*p < '0' || *p > '9') return -1;
+  }
+  return pid;
+}
+
+// Removes temp files that an earlier checkpoint() of `path` left behind when its process was
+// killed between creating and renaming them: files of exactly our naming, owned by this user,
+// whose process no longer exists. Done once per path and thread (the last path cleaned is
+// remembered), so a steady stream of checkpoints reads the directory once.
+void remove_stale_temp_files(const char* path) {
+  thread_local char last_cleaned[PATH_MAX] = {};
+  if (std::strcmp(last_cleaned, path) == 0) return;
+  const std::size_t length = std::strlen(path);
+  if (length >= sizeof last_cleaned) return;
+  std::memcpy(last_cleaned, path, length + 1);
+
+  char directory[PATH_MAX];
+  const char* base = split_directory(path, directory, sizeof directory);
+  if (base == nullptr) return;
+  DIR* listing = ::opendir(directory);
+  if (listing == nullptr) return;
+  const std::size_t base_length = std::strlen(base);
+  const long own_pid = static_cast<long>(::getpid());
+  while (const dirent* entry = ::readdir(listing)) {
+    const long pid = temp_file_pid(entry->d_name, base, base_length);
+    // Our own pid: another thread of this process may be writing that file right now.
+    if (pid <= 0 || pid == own_pid) continue;
+    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // still alive
+    struct stat info {};
+    if (::fstatat(::dirfd(listing), entry->d_name, &info, AT_SYMLINK_NOFOLLOW) != 0) continue;
+    if (!S_ISREG(info.st_mode) || info.st_uid != ::geteuid()) continue;
+    ::unlinkat(::dirfd(listing), entry->d_name, 0);
+  }
+  ::closedir(listing);
 }
 
 }  // namespace
@@ -130,27 +198,42 @@ bool temp_path_for(const char* path, unsigned attempt, char* out, std::size_t ou
   return n > 0 && static_cast<std::size_t>(n) < out_size;
 }
 
-Status write_file_atomically(const char* path, const std::uint8_t* data, std::size_t size,
-                             Durability durability) {
-  struct stat existing {};
-  if (::lstat(path, &existing) == 0 && S_ISLNK(existing.st_mode)) {
-    return Status(Error::Io, "refusing to replace %s: it is a symbolic link", path);
-  }
-
-  char temp[PATH_MAX];
+Status create_temp_file(const char* path, int access, char* temp, std::size_t temp_size,
+                        int& fd) {
   constexpr unsigned kAttempts = 100;
-  int fd = -1;
+  fd = -1;
   for (unsigned attempt = 0; attempt < kAttempts && fd < 0; ++attempt) {
-    if (!temp_path_for(path, attempt, temp, sizeof temp)) {
+    if (!temp_path_for(path, attempt, temp, temp_size)) {
       return io_error("cannot create a temp file for", path, ENAMETOOLONG);
     }
-    fd = open_retrying(temp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    fd = open_retrying(temp, access | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
     if (fd < 0 && errno != EEXIST) return io_error("cannot create", temp, errno);
   }
   if (fd < 0) return io_error("cannot create a temp file for", path, EEXIST);
+  return Status();
+}
+
+Status write_file_atomically(const char* path, const std::uint8_t* data, std::size_t size,
+                             Durability durability) {
+  struct stat existing {};
+  if (::lstat(path, &existing) == 0) {
+    if (S_ISLNK(existing.st_mode)) {
+      return Status(Error::Io, "refusing to replace %s: it is a symbolic link", path);
+    }
+    // A FIFO, a device node (/dev/null) or a socket is never replaced by a checkpoint.
+    if (!S_ISREG(existing.st_mode)) {
+      return Status(Error::Io, "refusing to replace %s: it is not a regular file", path);
+    }
+  }
+  remove_stale_temp_files(path);
+
+  char temp[PATH_MAX];
+  int fd = -1;
+  Status status = create_temp_file(path, O_WRONLY, temp, sizeof temp, fd);
+  if (!status.ok()) return status;
 
   FdGuard guard(fd);
-  Status status = pwrite_all(fd, data, size, 0, temp);
+  status = pwrite_all(fd, data, size, 0, temp);
   if (status.ok() && durability == Durability::Fdatasync && ::fdatasync(fd) != 0) {
     status = io_error("cannot fdatasync", temp, errno);
   }
@@ -169,17 +252,8 @@ Status write_file_atomically(const char* path, const std::uint8_t* data, std::si
 
 Status sync_parent_directory(const char* path) {
   char directory[PATH_MAX];
-  const char* slash = std::strrchr(path, '/');
-  if (slash == nullptr) {
-    std::strcpy(directory, ".");
-  } else if (slash == path) {
-    std::strcpy(directory, "/");
-  } else {
-    const auto length = static_cast<std::size_t>(slash - path);
-    if (length >= sizeof directory) return io_error("cannot sync the directory of", path,
-                                                    ENAMETOOLONG);
-    std::memcpy(directory, path, length);
-    directory[length] = '\0';
+  if (split_directory(path, directory, sizeof directory) == nullptr) {
+    return io_error("cannot sync the directory of", path, ENAMETOOLONG);
   }
   FdGuard fd(open_retrying(directory, O_RDONLY | O_DIRECTORY | O_CLOEXEC));
   if (fd.get() < 0) return io_error("cannot open directory", directory, errno);

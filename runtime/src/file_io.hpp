@@ -32,6 +32,12 @@ Status read_regular_file(const char* path, std::uint64_t max_size,
 // Returns false if it does not fit in `out`.
 bool temp_path_for(const char* path, unsigned attempt, char* out, std::size_t out_size);
 
+// Creates "<path>.tmp.<pid>.<n>" for the first free n, exclusively (O_CREAT|O_EXCL|O_NOFOLLOW,
+// mode 0600, `access` being O_WRONLY or O_RDWR): its name goes into `temp`, its descriptor
+// into `fd`. An existing file or symlink of that name is never reused or followed.
+Status create_temp_file(const char* path, int access, char* temp, std::size_t temp_size,
+                        int& fd);
+
 // Replaces `path` with `data` atomically: writes a new temp file in the same directory,
 // created exclusively (O_CREAT|O_EXCL|O_NOFOLLOW, mode 0600; an existing temp name is never
 // reused or followed), optionally fdatasyncs it, renames it over `path`, and with Fdatasync

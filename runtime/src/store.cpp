@@ -1,14 +1,17 @@
 // The checkpoint store (docs/format.md §4): one preallocated file, a header page, two schema
 // areas and a ring of fixed-size slots, each holding one record that references its schema by
 // hash. save() is one pwrite of a whole record into the oldest slot; restore_latest() takes the
-// newest slot that validates and falls back past torn or corrupt ones.
+// newest slot that validates and falls back past torn or corrupt ones. The file's layout is
+// store_layout.hpp's; this file decides when to create, recover, rewrite or refuse.
 #include <fcntl.h>
+#include <limits.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -20,132 +23,68 @@
 #include "little_endian.hpp"
 #include "program_schema.hpp"
 #include "record.hpp"
+#include "store_layout.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr {
 namespace {
 
-constexpr std::uint8_t kStoreMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'S', 'T', 'O'};
-constexpr std::uint16_t kStoreFormatVersion = 1;
-constexpr std::size_t kStoreHeaderSize = 36;      // 32 bytes of fields + their CRC
-constexpr std::uint64_t kPageSize = 4096;
-constexpr std::uint64_t kSchemaAreasOffset = kPageSize;
-constexpr std::size_t kAreaHeaderSize = 16;       // u64 hash, u32 size, u32 crc
-constexpr std::uint32_t kMinSchemaAreaSize = 64 * 1024;
-constexpr std::uint32_t kMaxSlots = 1u << 20;
-constexpr std::uint32_t kMinSlotSize = 2 * detail::kRecordHeaderSize;
-constexpr std::uint32_t kMaxSlotSize = 1u << 30;
-// First read of a slot when scanning: one pread covers the header and a record of up to a page.
-constexpr std::size_t kSlotFirstRead = 4096;
-
-std::uint64_t round_up_to_page(std::uint64_t n) { return (n + kPageSize - 1) / kPageSize * kPageSize; }
-
-struct Geometry {
-  std::uint32_t slot_count = 0;
-  std::uint32_t slot_size = 0;
-  std::uint32_t schema_area_size = 0;
-  std::uint64_t slots_offset = 0;
-
-  std::uint64_t area_offset(int area) const {
-    return kSchemaAreasOffset + static_cast<std::uint64_t>(area) * schema_area_size;
-  }
-  std::uint64_t slot_offset(std::uint32_t slot) const {
-    return slots_offset + static_cast<std::uint64_t>(slot) * slot_size;
-  }
-  std::uint64_t file_size() const { return slot_offset(slot_count); }
-};
-
-// A new store leaves room for a later build's larger schema: four times this build's, and at
-// least 64 KiB.
-Geometry geometry_for(const StoreOptions& options, std::size_t schema_bytes) {
-  Geometry g;
-  g.slot_count = options.slots;
-  g.slot_size = options.slot_size;
-  const std::uint64_t wanted = 4 * (kAreaHeaderSize + std::uint64_t{schema_bytes});
-  g.schema_area_size = static_cast<std::uint32_t>(
-      round_up_to_page(std::max<std::uint64_t>(kMinSchemaAreaSize, wanted)));
-  g.slots_offset = kSchemaAreasOffset + 2 * std::uint64_t{g.schema_area_size};
-  return g;
-}
-
-void encode_store_header(const Geometry& g, std::uint8_t* p) {
-  std::memset(p, 0, kStoreHeaderSize);
-  std::memcpy(p, kStoreMagic, sizeof kStoreMagic);
-  detail::le::store16(p + 8, kStoreFormatVersion);
-  detail::le::store32(p + 12, g.slot_count);
-  detail::le::store32(p + 16, g.slot_size);
-  detail::le::store32(p + 20, g.schema_area_size);
-  detail::le::store64(p + 24, g.slots_offset);
-  detail::le::store32(p + 32, detail::crc32c(p, 32));
-}
-
-Status decode_store_header(const std::uint8_t* p, const char* path, Geometry& g) {
-  if (std::memcmp(p, kStoreMagic, sizeof kStoreMagic) != 0) {
-    return Status(Error::NotACheckpoint, "%s is not a symcr store (bad magic)", path);
-  }
-  const std::uint16_t version = detail::le::load16(p + 8);
-  if (version > kStoreFormatVersion) {
-    return Status(Error::FutureVersion,
-                  "%s was written by store format version %u; this build reads up to %u", path,
-                  unsigned{version}, unsigned{kStoreFormatVersion});
-  }
-  if (detail::le::load32(p + 32) != detail::crc32c(p, 32)) {
-    return Status(Error::Checksum, "%s: store header checksum mismatch", path);
-  }
-  g.slot_count = detail::le::load32(p + 12);
-  g.slot_size = detail::le::load32(p + 16);
-  g.schema_area_size = detail::le::load32(p + 20);
-  g.slots_offset = detail::le::load64(p + 24);
-  if (version == 0 || g.slot_count < 2 || g.slot_count > kMaxSlots ||
-      g.slot_size < kMinSlotSize || g.slot_size > kMaxSlotSize ||
-      g.schema_area_size <= kAreaHeaderSize || g.schema_area_size % kPageSize != 0 ||
-      g.slots_offset != kSchemaAreasOffset + 2 * std::uint64_t{g.schema_area_size}) {
-    return Status(Error::Corrupt, "%s: invalid store header", path);
-  }
-  return Status();
-}
-
-Status validate_options(const StoreOptions& options) {
-  if (options.slots < 2 || options.slots > kMaxSlots) {
-    return Status(Error::TooLarge, "a store needs 2 to %u slots, not %u", kMaxSlots,
-                  options.slots);
-  }
-  if (options.slot_size < kMinSlotSize || options.slot_size > kMaxSlotSize) {
-    return Status(Error::TooLarge, "a store slot must have %u to %u bytes, not %u",
-                  kMinSlotSize, kMaxSlotSize, options.slot_size);
-  }
-  return Status();
-}
+using detail::StoreGeometry;
+using detail::StoreSchemaArea;
+using detail::StoreSlotState;
 
 bool all_zero(const std::uint8_t* p, std::size_t n) {
   return std::all_of(p, p + n, [](std::uint8_t b) { return b == 0; });
 }
 
-// Why a slot does not hold a restorable checkpoint.
-enum class SlotState : std::uint8_t { Valid, Empty, Corrupt, UnknownSchema, FutureVersion };
+bool same_dimensions(const StoreGeometry& a, const StoreGeometry& b) {
+  return a.slot_count == b.slot_count && a.slot_size == b.slot_size;
+}
+
+// The geometry `options` asks for with the area size the file's bytes imply, if any: how a
+// damaged header is rebuilt.
+bool geometry_from_file_size(const StoreOptions& options, std::uint64_t file_size,
+                             StoreGeometry& out) {
+  const std::uint64_t slots_bytes = std::uint64_t{options.slots} * options.slot_size;
+  if (file_size < detail::kStorePageSize + slots_bytes) return false;
+  const std::uint64_t areas = file_size - detail::kStorePageSize - slots_bytes;
+  if (areas % (2 * detail::kStorePageSize) != 0 || areas / 2 < detail::kStoreMinSchemaAreaSize ||
+      areas / 2 > 0xFFFFFFFFull) {
+    return false;
+  }
+  out.slot_count = options.slots;
+  out.slot_size = options.slot_size;
+  out.schema_area_size = static_cast<std::uint32_t>(areas / 2);
+  out.slots_offset = detail::kStorePageSize + areas;
+  return true;
+}
 
 }  // namespace
 
 struct Store::Impl {
-  struct Area {
-    bool valid = false;
-    std::uint64_t hash = 0;
-    detail::ParsedSchema schema;
-  };
   struct Slot {
-    SlotState state = SlotState::Empty;
+    StoreSlotState state = StoreSlotState::Empty;
     std::uint64_t sequence = 0;
     int area = -1;
+    std::uint64_t offset = 0;    // of the slot in the file
+    std::uint32_t capacity = 0;  // bytes a record there may have
   };
 
   std::string path;
-  Geometry geometry;
-  Area areas[2];
-  int own_area = -1;       // the area holding this build's schema, once written or found
+  StoreGeometry geometry;  // the file's; unknown (zero) for a salvaged store
+  StoreSchemaArea areas[2];
+  std::uint64_t area_offsets[2] = {0, 0};
+  int own_area = -1;  // the area holding this build's schema, once written or found
   std::vector<Slot> slots;
-  std::vector<std::uint8_t> record;    // save(): the encoded record
+  // Why save() refuses; empty when it may write.
+  std::string read_only_reason;
+  // A geometry other than the file's that the caller asked for: applied at the next save().
+  bool geometry_pending = false;
+  StoreGeometry requested;
+
+  std::vector<std::uint8_t> record;      // save(): the encoded record
   std::vector<std::uint8_t> slot_bytes;  // restore: one slot as read
-  detail::RecordView view;                // of slot_bytes, when its slot is valid
+  detail::RecordView view;               // of slot_bytes, when its slot is valid
   // The newest valid slot of the last scan, kept so restoring it needs no second read.
   std::vector<std::uint8_t> newest_bytes;
   detail::RecordView newest_view;
@@ -163,7 +102,7 @@ struct Store::Impl {
   int newest_valid_slot() const {
     int newest = -1;
     for (std::uint32_t i = 0; i < slots.size(); ++i) {
-      if (slots[i].state == SlotState::Valid &&
+      if (slots[i].state == StoreSlotState::Valid &&
           (newest < 0 || slots[i].sequence > slots[static_cast<std::size_t>(newest)].sequence)) {
         newest = static_cast<int>(i);
       }
@@ -171,50 +110,41 @@ struct Store::Impl {
     return newest;
   }
 
+  // Slots and buffers laid out by `geometry`.
+  void lay_out_slots() {
+    slots.assign(geometry.slot_count, Slot());
+    for (std::uint32_t i = 0; i < geometry.slot_count; ++i) {
+      slots[i].offset = geometry.slot_offset(i);
+      slots[i].capacity = geometry.slot_size;
+    }
+    for (int i = 0; i < 2; ++i) area_offsets[i] = geometry.area_offset(i);
+    size_buffers(geometry.slot_size);
+  }
+
+  void size_buffers(std::uint32_t capacity) {
+    slot_bytes.resize(capacity);
+    newest_bytes.resize(capacity);
+    newest_first.reserve(slots.size());
+  }
+
   // Reads slot `i` and classifies it; when Valid, `view` describes its record in slot_bytes.
   Status read_slot(int fd, std::uint32_t i, Slot& slot) {
-    slot = Slot();
-    const off_t offset = static_cast<off_t>(geometry.slot_offset(i));
-    const std::size_t first = std::min<std::size_t>(geometry.slot_size, kSlotFirstRead);
-    std::size_t got = 0;
-    Status status = detail::pread_full(fd, slot_bytes.data(), first, offset, got, path.c_str());
+    detail::StoreSlotRead read;
+    Status status = detail::read_store_slot(fd, path.c_str(), slots[i].offset, slots[i].capacity,
+                                            areas, slot_bytes, view, read);
     if (!status.ok()) return status;
-    if (got < detail::kRecordHeaderSize || all_zero(slot_bytes.data(), 8)) return Status();
-    // Read the rest of the record when the header claims more (bounded by the slot).
-    const std::uint64_t claimed = std::uint64_t{detail::le::load16(slot_bytes.data() + 10)} +
-                                  detail::le::load32(slot_bytes.data() + 40) +
-                                  detail::le::load32(slot_bytes.data() + 44);
-    const std::size_t wanted = static_cast<std::size_t>(
-        std::min<std::uint64_t>(claimed, geometry.slot_size));
-    if (wanted > got && got == first) {
-      std::size_t more = 0;
-      status = detail::pread_full(fd, slot_bytes.data() + got, wanted - got,
-                                  offset + static_cast<off_t>(got), more, path.c_str());
-      if (!status.ok()) return status;
-      got += more;
-    }
-    const Status parsed = detail::parse_record(slot_bytes.data(), got, view);
-    if (!parsed.ok()) {
-      slot.state = parsed.error() == Error::FutureVersion ? SlotState::FutureVersion
-                                                          : SlotState::Corrupt;
-      return Status();
-    }
-    if (view.schema != nullptr) {  // store records reference their schema; never inline
-      slot.state = SlotState::Corrupt;
-      return Status();
-    }
-    slot.sequence = view.header.sequence;
-    slot.area = area_for_hash(view.header.schema_hash);
-    slot.state = slot.area < 0 ? SlotState::UnknownSchema : SlotState::Valid;
+    slot.state = read.state;
+    slot.area = read.area;
+    slot.sequence = read.state == StoreSlotState::Valid ? view.header.sequence : 0;
     return Status();
   }
 
   Status scan_slots(int fd) {
     newest_scanned = -1;
-    for (std::uint32_t i = 0; i < geometry.slot_count; ++i) {
+    for (std::uint32_t i = 0; i < slots.size(); ++i) {
       Status status = read_slot(fd, i, slots[i]);
       if (!status.ok()) return status;
-      if (slots[i].state == SlotState::Valid &&
+      if (slots[i].state == StoreSlotState::Valid &&
           (newest_scanned < 0 ||
            slots[i].sequence > slots[static_cast<std::size_t>(newest_scanned)].sequence)) {
         // Swapping vectors moves no bytes: `view` keeps pointing at the same storage.
@@ -226,40 +156,12 @@ struct Store::Impl {
     return Status();
   }
 
-  void size_buffers() {
-    slot_bytes.resize(geometry.slot_size);
-    newest_bytes.resize(geometry.slot_size);
-    newest_first.reserve(geometry.slot_count);
-  }
-
-  Status load_area(int fd, int i) {
-    Area& area = areas[i];
-    area = Area();
-    std::uint8_t head[kAreaHeaderSize];
-    std::size_t got = 0;
-    Status status = detail::pread_full(fd, head, sizeof head,
-                                       static_cast<off_t>(geometry.area_offset(i)), got,
-                                       path.c_str());
-    if (!status.ok()) return status;
-    const std::uint32_t size = detail::le::load32(head + 8);
-    if (got < sizeof head || size == 0 || size > geometry.schema_area_size - kAreaHeaderSize) {
-      return Status();  // empty or damaged: no schema here
+  Status load_areas(int fd) {
+    for (int i = 0; i < 2; ++i) {
+      Status status = detail::load_store_area(fd, path.c_str(), geometry.area_offset(i),
+                                              geometry.schema_area_size, areas[i]);
+      if (!status.ok()) return status;
     }
-    std::vector<std::uint8_t> bytes(size);
-    status = detail::pread_full(fd, bytes.data(), size,
-                                static_cast<off_t>(geometry.area_offset(i) + kAreaHeaderSize),
-                                got, path.c_str());
-    if (!status.ok()) return status;
-    const std::uint64_t hash = detail::le::load64(head);
-    const std::uint32_t crc = detail::crc32c_extend(detail::crc32c(head, 12), bytes.data(), size);
-    if (got < size || crc != detail::le::load32(head + 12) ||
-        detail::fnv1a64(bytes.data(), size) != hash ||
-        !detail::parse_schema(bytes.data(), size, area.schema).ok()) {
-      area = Area();
-      return Status();
-    }
-    area.valid = true;
-    area.hash = hash;
     return Status();
   }
 
@@ -271,23 +173,27 @@ struct Store::Impl {
     const int newest = newest_valid_slot();
     const int target = (newest >= 0 && slots[static_cast<std::size_t>(newest)].area == 0) ? 1 : 0;
     const detail::SchemaBlob& blob = detail::schema_blob(schema);
-    if (kAreaHeaderSize + blob.bytes.size() > geometry.schema_area_size) {
+    if (detail::kStoreAreaHeaderSize + blob.bytes.size() > geometry.schema_area_size) {
       return Status(Error::TooLarge,
                     "%s: this build's schema (%zu bytes) does not fit the store's schema area "
-                    "(%u bytes); remove the store to recreate it",
+                    "(%u bytes); open a new store (a new path) for this build",
                     path.c_str(), blob.bytes.size(), geometry.schema_area_size);
     }
-    std::vector<std::uint8_t> area_bytes(kAreaHeaderSize + blob.bytes.size());
+    std::vector<std::uint8_t> area_bytes(detail::kStoreAreaHeaderSize + blob.bytes.size());
     detail::le::store64(area_bytes.data(), blob.hash);
     detail::le::store32(area_bytes.data() + 8, static_cast<std::uint32_t>(blob.bytes.size()));
-    std::memcpy(area_bytes.data() + kAreaHeaderSize, blob.bytes.data(), blob.bytes.size());
+    std::memcpy(area_bytes.data() + detail::kStoreAreaHeaderSize, blob.bytes.data(),
+                blob.bytes.size());
     detail::le::store32(area_bytes.data() + 12,
                         detail::crc32c_extend(detail::crc32c(area_bytes.data(), 12),
                                               blob.bytes.data(), blob.bytes.size()));
     // Forget the old area before overwriting it: a failed write leaves it unusable either way.
-    areas[target] = Area();
+    areas[target] = StoreSchemaArea();
     for (Slot& slot : slots) {
-      if (slot.area == target) slot = Slot{SlotState::UnknownSchema, slot.sequence, -1};
+      if (slot.area == target) {
+        slot.state = StoreSlotState::UnknownSchema;
+        slot.area = -1;
+      }
     }
     status = detail::pwrite_all(fd, area_bytes.data(), area_bytes.size(),
                                 static_cast<off_t>(geometry.area_offset(target)), path.c_str());
@@ -299,24 +205,173 @@ struct Store::Impl {
     if (!status.ok()) return status;
     areas[target].valid = true;
     areas[target].hash = blob.hash;
+    areas[target].size = static_cast<std::uint32_t>(blob.bytes.size());
     own_area = target;
     return Status();
   }
 
-  // Zero-filled, preallocated file with a header: every slot and area empty. The header is
-  // written last, so an interrupted initialisation leaves a file that reads as blank.
-  Status initialise(int fd) {
-    if (::ftruncate(fd, 0) != 0) return detail::io_error("cannot truncate", path.c_str(), errno);
-    const int rc = ::posix_fallocate(fd, 0, static_cast<off_t>(geometry.file_size()));
-    if (rc != 0) return detail::io_error("cannot preallocate", path.c_str(), rc);
-    std::uint8_t header[kStoreHeaderSize];
-    encode_store_header(geometry, header);
-    Status status = detail::pwrite_all(fd, header, sizeof header, 0, path.c_str());
+  // Zero-filled, preallocated `fd` laid out by `g`, every slot and area empty, plus `copies`
+  // written into it. The header is written last, so an interrupted initialisation leaves a
+  // file that reads as blank.
+  struct Copy {
+    std::uint64_t offset;  // in the new layout
+    const std::uint8_t* bytes;
+    std::size_t size;
+  };
+  Status initialise(int fd, const char* file, const StoreGeometry& g,
+                    const std::vector<Copy>& copies) {
+    if (::ftruncate(fd, 0) != 0) return detail::io_error("cannot truncate", file, errno);
+    const int rc = ::posix_fallocate(fd, 0, static_cast<off_t>(g.file_size()));
+    if (rc != 0) return detail::io_error("cannot preallocate", file, rc);
+    for (const Copy& copy : copies) {
+      Status status = detail::pwrite_all(fd, copy.bytes, copy.size,
+                                         static_cast<off_t>(copy.offset), file);
+      if (!status.ok()) return status;
+    }
+    std::uint8_t header[detail::kStoreHeaderSize];
+    detail::encode_store_header(g, header);
+    Status status = detail::pwrite_all(fd, header, sizeof header, 0, file);
     if (!status.ok()) return status;
-    if (::fdatasync(fd) != 0) return detail::io_error("cannot fdatasync", path.c_str(), errno);
-    for (Area& area : areas) area = Area();
+    if (::fdatasync(fd) != 0) return detail::io_error("cannot fdatasync", file, errno);
+    return Status();
+  }
+
+  // Adopts `g` for a file just initialised with nothing in it.
+  void become_empty(const StoreGeometry& g) {
+    geometry = g;
+    for (StoreSchemaArea& area : areas) area = StoreSchemaArea();
     own_area = -1;
-    slots.assign(geometry.slot_count, Slot());
+    lay_out_slots();
+  }
+
+  // Rewrites the store with the requested geometry: a new file, renamed over the old one, that
+  // holds both schema areas and the newest valid checkpoints (as many as fit, the newest
+  // first). The old file is untouched until the rename. On success `fd` is the new file's.
+  Status apply_requested_geometry(int& fd, std::size_t own_schema_bytes) {
+    Status status = scan_slots(fd);
+    if (!status.ok()) return status;
+    StoreGeometry target =
+        detail::store_geometry_for(requested.slot_count, requested.slot_size, own_schema_bytes);
+    target.schema_area_size = std::max(target.schema_area_size, geometry.schema_area_size);
+    target.slots_offset = detail::kStorePageSize + 2 * std::uint64_t{target.schema_area_size};
+
+    // What to carry: the areas, and up to slot_count - 1 newest checkpoints (the save about to
+    // happen takes the last slot).
+    std::vector<std::vector<std::uint8_t>> kept;
+    std::vector<Copy> copies;
+    for (int i = 0; i < 2; ++i) {
+      if (!areas[i].valid) continue;
+      kept.emplace_back(detail::kStoreAreaHeaderSize + areas[i].size);
+      std::size_t got = 0;
+      status = detail::pread_full(fd, kept.back().data(), kept.back().size(),
+                                  static_cast<off_t>(area_offsets[i]), got, path.c_str());
+      if (!status.ok()) return status;
+      if (got != kept.back().size()) return Status(Error::Io, "%s: a schema area changed", path.c_str());
+    }
+    newest_first.clear();
+    for (std::uint32_t i = 0; i < slots.size(); ++i) {
+      if (slots[i].state == StoreSlotState::Valid) newest_first.push_back(i);
+    }
+    std::sort(newest_first.begin(), newest_first.end(), [this](std::uint32_t a, std::uint32_t b) {
+      return slots[a].sequence > slots[b].sequence;
+    });
+    std::uint32_t carried = 0;
+    for (const std::uint32_t i : newest_first) {
+      if (carried + 1 >= target.slot_count) break;
+      Slot reread;
+      status = read_slot(fd, i, reread);
+      if (!status.ok()) return status;
+      if (reread.state != StoreSlotState::Valid) continue;
+      if (view.record_size > target.slot_size) {
+        // The newest checkpoint must survive: keep the old geometry while it cannot move.
+        if (carried == 0) return Status();
+        continue;
+      }
+      kept.emplace_back(slot_bytes.begin(),
+                        slot_bytes.begin() + static_cast<std::ptrdiff_t>(view.record_size));
+      ++carried;
+    }
+    std::size_t next = 0;
+    for (int i = 0; i < 2; ++i) {
+      if (!areas[i].valid) continue;
+      copies.push_back({target.area_offset(i), kept[next].data(), kept[next].size()});
+      ++next;
+    }
+    for (std::uint32_t slot = 0; next < kept.size(); ++next, ++slot) {
+      copies.push_back({target.slot_offset(slot), kept[next].data(), kept[next].size()});
+    }
+
+    char temp[PATH_MAX];
+    int new_fd = -1;
+    status = detail::create_temp_file(path.c_str(), O_RDWR, temp, sizeof temp, new_fd);
+    if (!status.ok()) return status;
+    if (::flock(new_fd, LOCK_EX | LOCK_NB) != 0) {
+      status = detail::io_error("cannot lock", temp, errno);
+    }
+    if (status.ok()) status = initialise(new_fd, temp, target, copies);
+    if (status.ok() && ::rename(temp, path.c_str()) != 0) {
+      status = detail::io_error("cannot rename the rewritten store onto", path.c_str(), errno);
+    }
+    if (!status.ok()) {
+      ::unlink(temp);
+      ::close(new_fd);
+      return status;
+    }
+    ::close(fd);  // releases the old file's lock; the new file holds its own
+    fd = new_fd;
+    geometry_pending = false;
+    geometry = target;
+    lay_out_slots();
+    status = load_areas(fd);
+    if (status.ok()) status = scan_slots(fd);
+    if (status.ok()) status = detail::sync_parent_directory(path.c_str());
+    return status;
+  }
+
+  // A store whose header does not decode: find its checkpoints by scanning. With `options`
+  // (opened for writing) the header is rebuilt when that geometry places everything found.
+  // Returns the original header problem when nothing restorable is found.
+  Status recover(int fd, std::uint64_t file_size, const Status& header_problem,
+                 const StoreOptions* options, bool& rebuilt) {
+    rebuilt = false;
+    detail::StoreSalvage salvage;
+    Status status = detail::salvage_store(fd, path.c_str(), file_size, salvage);
+    if (!status.ok()) return status;
+    if (salvage.record_offsets.empty()) return header_problem;
+    StoreGeometry guess;
+    if (options != nullptr && geometry_from_file_size(*options, file_size, guess) &&
+        detail::salvage_fits_geometry(salvage, guess, file_size)) {
+      std::uint8_t header[detail::kStoreHeaderSize];
+      detail::encode_store_header(guess, header);
+      status = detail::pwrite_all(fd, header, sizeof header, 0, path.c_str());
+      if (status.ok() && ::fdatasync(fd) != 0) {
+        status = detail::io_error("cannot fdatasync", path.c_str(), errno);
+      }
+      if (!status.ok()) return status;
+      geometry = guess;
+      lay_out_slots();
+      rebuilt = true;
+      return Status();
+    }
+    // Restore-only: one slot per record found, in place.
+    geometry = StoreGeometry();
+    std::uint32_t largest = 0;
+    slots.assign(salvage.record_offsets.size(), Slot());
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+      slots[i].offset = salvage.record_offsets[i];
+      slots[i].capacity = salvage.record_sizes[i];
+      largest = std::max(largest, salvage.record_sizes[i]);
+    }
+    for (int i = 0; i < 2; ++i) {
+      areas[i] = std::move(salvage.areas[i]);
+      area_offsets[i] = salvage.area_offsets[i];
+    }
+    size_buffers(largest);
+    read_only_reason = "store " + path + " has a damaged header (" + header_problem.message() +
+                       "); its " + std::to_string(slots.size()) +
+                       " checkpoints were found by scanning and can be restored, but its "
+                       "geometry could not be confirmed, so symcr writes nothing into it: "
+                       "restore from it, then save into a new path";
     return Status();
   }
 };
@@ -351,6 +406,8 @@ void Store::close() {
   last_sequence_ = 0;
 }
 
+bool Store::read_only() const { return impl_ != nullptr && !impl_->read_only_reason.empty(); }
+
 Status Store::open(const char* path, const StoreOptions& options, Store& out) {
   const Schema* schema = nullptr;
   Status status = detail::program_schema(schema);
@@ -358,110 +415,184 @@ Status Store::open(const char* path, const StoreOptions& options, Store& out) {
   return open(path, *schema, options, out);
 }
 
+Status Store::open_readonly(const char* path, Store& out) {
+  const Schema* schema = nullptr;
+  Status status = detail::program_schema(schema);
+  if (!status.ok()) return status;
+  return open_readonly(path, *schema, out);
+}
+
+namespace {
+
+Status open_error(const char* path, int error_number) {
+  if (error_number == ELOOP) {
+    return Status(Error::Io, "cannot open store %s: it is a symbolic link, which symcr does "
+                  "not follow", path);
+  }
+  return detail::io_error("cannot open store", path, error_number);
+}
+
+bool is_permission_error(int error_number) {
+  return error_number == EROFS || error_number == EACCES || error_number == EPERM;
+}
+
+}  // namespace
+
 Status Store::open(const char* path, const Schema& schema, const StoreOptions& options,
                    Store& out) {
   out.close();
-  Status status = validate_options(options);
+  Status status = detail::check_store_dimensions(options.slots, options.slot_size);
   if (!status.ok()) return status;
-  const detail::SchemaBlob& blob = detail::schema_blob(schema);
+  return open_impl(path, schema, options, /*writable=*/true, out);
+}
 
-  bool created = true;
-  int fd = ::open(path, O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
-  if (fd < 0 && errno == EEXIST) {
-    created = false;
-    fd = ::open(path, O_RDWR | O_NOFOLLOW | O_CLOEXEC);
+Status Store::open_readonly(const char* path, const Schema& schema, Store& out) {
+  out.close();
+  return open_impl(path, schema, StoreOptions(), /*writable=*/false, out);
+}
+
+// For writing: create if absent, and fall back to read-only where the file or its file system
+// cannot be written. Every failure closes `out` (and removes a file it created).
+Status Store::open_impl(const char* path, const Schema& schema, const StoreOptions& options,
+                        bool writable, Store& out) {
+  Status status = open_descriptor(path, schema, options, writable, out);
+  if (!status.ok()) {
+    out.close();
+    return status;
   }
-  if (fd < 0) {
-    if (errno == ELOOP) {
-      return Status(Error::Io, "cannot open store %s: it is a symbolic link, which symcr does "
-                    "not follow", path);
+  out.schema_ = &schema;
+  return Status();
+}
+
+Status Store::open_descriptor(const char* path, const Schema& schema,
+                              const StoreOptions& options, bool writable, Store& out) {
+  const detail::SchemaBlob& blob = detail::schema_blob(schema);
+  bool created = false;
+  std::string read_only_reason;
+  int fd = -1;
+  if (writable) {
+    fd = ::open(path, O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    created = fd >= 0;
+    if (fd < 0 && (errno == EEXIST || is_permission_error(errno))) {
+      fd = ::open(path, O_RDWR | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
     }
-    return detail::io_error("cannot open store", path, errno);
+    if (fd < 0 && is_permission_error(errno)) {
+      read_only_reason = std::string("store ") + path + " was opened read-only (" +
+                         std::strerror(errno) + "): restore_latest() works, save() does not";
+    }
+  } else {
+    read_only_reason = std::string("store ") + path + " was opened with open_readonly()";
   }
-  // Adopt the descriptor now: every early return below closes it through `out`.
+  if (fd < 0 && !read_only_reason.empty()) {
+    fd = ::open(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+  }
+  if (fd < 0) return open_error(path, errno);
+  // Adopt the descriptor now: the caller closes it on every failure below.
   out.fd_ = fd;
   out.impl_ = new Impl();
   Impl& impl = *out.impl_;
   impl.path = path;
-  auto fail = [&out](const Status& failure) {
-    out.close();
+  impl.read_only_reason = read_only_reason;
+  const bool can_write = read_only_reason.empty();
+  // A created file that cannot be made a store is removed again: no empty file is left.
+  auto creation_failed = [&](const Status& failure) {
+    if (created) ::unlink(path);
     return failure;
   };
 
   struct stat info {};
-  if (::fstat(fd, &info) != 0) return fail(detail::io_error("cannot stat", path, errno));
-  if (!S_ISREG(info.st_mode)) return fail(Status(Error::Io, "%s is not a regular file", path));
+  if (::fstat(fd, &info) != 0) return detail::io_error("cannot stat", path, errno);
+  if (!S_ISREG(info.st_mode)) return Status(Error::Io, "%s is not a regular file", path);
   // One writer per store: two processes saving into one ring would overwrite each other.
-  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+  if (can_write && ::flock(fd, LOCK_EX | LOCK_NB) != 0) {
     if (errno == EWOULDBLOCK) {
-      return fail(Status(Error::Io, "store %s is open elsewhere (locked by another Store)",
-                         path));
+      return Status(Error::Io, "store %s is open elsewhere (locked by another Store)", path);
     }
-    return fail(detail::io_error("cannot lock", path, errno));
+    return detail::io_error("cannot lock", path, errno);
   }
+  const std::uint64_t file_size = static_cast<std::uint64_t>(info.st_size);
+  const StoreGeometry wanted =
+      detail::store_geometry_for(options.slots, options.slot_size, blob.bytes.size());
 
-  std::uint8_t header[kStoreHeaderSize] = {};
+  std::uint8_t header[detail::kStoreHeaderSize] = {};
   std::size_t got = 0;
-  status = detail::pread_full(fd, header, sizeof header, 0, got, path);
-  if (!status.ok()) return fail(status);
-  const Geometry wanted = geometry_for(options, blob.bytes.size());
-  // Blank: just created, or an initialisation that did not get to write its header.
-  const bool blank = created || all_zero(header, got);
-  if (blank) {
-    impl.geometry = wanted;
-  } else {
-    if (got < kStoreHeaderSize) {
-      return fail(Status(Error::Truncated, "%s: store header truncated", path));
+  Status status = detail::pread_full(fd, header, sizeof header, 0, got, path);
+  if (!status.ok()) return creation_failed(status);
+  Status header_status;
+  if (!created) header_status = detail::decode_store_header(header, got, path, impl.geometry);
+  bool needs_initialising = created;
+  if (!header_status.ok() && !created) {
+    if (header_status.error() == Error::FutureVersion) return header_status;
+    bool rebuilt = false;
+    status = impl.recover(fd, file_size, header_status, can_write ? &options : nullptr, rebuilt);
+    if (!status.ok()) {
+      // Nothing to restore in it. Only a blank file (an interrupted creation) is reused.
+      if (!(can_write && all_zero(header, got))) return status;
+      needs_initialising = true;
+    } else if (rebuilt) {
+      header_status = Status();
     }
-    status = decode_store_header(header, path, impl.geometry);
-    if (!status.ok()) return fail(status);
-    if (static_cast<std::uint64_t>(info.st_size) < impl.geometry.file_size()) {
-      return fail(Status(Error::Truncated, "%s: %lld bytes, the store needs %llu", path,
-                         static_cast<long long>(info.st_size),
-                         static_cast<unsigned long long>(impl.geometry.file_size())));
-    }
+  } else if (!created) {
+    impl.lay_out_slots();
   }
-  impl.slots.assign(impl.geometry.slot_count, Impl::Slot());
-  impl.size_buffers();
 
-  if (blank) {
-    status = impl.initialise(fd);
+  if (needs_initialising) {
+    if (!can_write) return Status(Error::NoValidSlot, "%s holds no store", path);
+    status = impl.initialise(fd, path, wanted, {});
     if (status.ok() && created) status = detail::sync_parent_directory(path);
-    if (!status.ok()) return fail(status);
-  } else {
-    for (int i = 0; i < 2 && status.ok(); ++i) status = impl.load_area(fd, i);
-    if (status.ok()) status = impl.scan_slots(fd);
-    if (!status.ok()) return fail(status);
-    const Geometry& existing = impl.geometry;
-    if (existing.slot_count != wanted.slot_count || existing.slot_size != wanted.slot_size) {
-      // Another geometry: keep a store that holds checkpoints, reuse one that holds none.
-      if (impl.newest_valid_slot() >= 0) {
-        return fail(Status(Error::Incompatible,
-                           "store %s has %u slots of %u bytes holding checkpoints; %u slots of "
-                           "%u bytes were requested (open it with its geometry or remove it)",
-                           path, existing.slot_count, existing.slot_size, wanted.slot_count,
-                           wanted.slot_size));
-      }
-      impl.geometry = wanted;
-      impl.size_buffers();
-      status = impl.initialise(fd);
-      if (!status.ok()) return fail(status);
+    if (!status.ok()) return creation_failed(status);
+    impl.become_empty(wanted);
+  } else if (header_status.ok()) {
+    status = impl.load_areas(fd);
+    if (status.ok()) status = impl.scan_slots(fd);  // slots past a truncation read as empty
+    if (!status.ok()) return status;
+    if (can_write && file_size < impl.geometry.file_size()) {
+      // Truncated: the whole slots are kept; the file grows back to its size, zero-filled.
+      const int rc = ::posix_fallocate(fd, 0, static_cast<off_t>(impl.geometry.file_size()));
+      if (rc != 0) return detail::io_error("cannot extend the truncated store", path, rc);
     }
+    if (can_write && !same_dimensions(impl.geometry, wanted)) {
+      if (impl.newest_valid_slot() >= 0) {
+        // Another geometry with checkpoints: read with the file's, rewrite at the first save.
+        impl.geometry_pending = true;
+        impl.requested = wanted;
+      } else {
+        status = impl.initialise(fd, path, wanted, {});
+        if (!status.ok()) return status;
+        impl.become_empty(wanted);
+      }
+    }
+  } else {
+    status = impl.scan_slots(fd);  // restore-only: a salvaged store
+    if (!status.ok()) return status;
   }
   impl.own_area = impl.area_for_hash(blob.hash);
   const int newest = impl.newest_valid_slot();
   out.last_sequence_ = newest >= 0 ? impl.slots[static_cast<std::size_t>(newest)].sequence : 0;
-  out.schema_ = &schema;
   out.options_ = options;
+  if (impl.geometry.slot_count != 0) {
+    out.options_.slots = impl.geometry.slot_count;
+    out.options_.slot_size = impl.geometry.slot_size;
+  }
   return Status();
 }
 
 Status Store::save() {
   if (!is_open()) return Status(Error::Io, "the store is not open");
   Impl& impl = *impl_;
+  if (!impl.read_only_reason.empty()) {
+    return Status(Error::Io, "%s", impl.read_only_reason.c_str());
+  }
   const std::uint64_t sequence = last_sequence_ + 1;
   Status status = detail::encode_record(*schema_, /*inline_schema=*/false, sequence, impl.record);
   if (!status.ok()) return status;
+  if (impl.geometry_pending) {
+    status = impl.apply_requested_geometry(fd_, detail::schema_blob(*schema_).bytes.size());
+    if (!status.ok()) return status;
+    impl.own_area = impl.area_for_hash(detail::schema_blob(*schema_).hash);
+    options_.slots = impl.geometry.slot_count;
+    options_.slot_size = impl.geometry.slot_size;
+  }
   if (impl.record.size() > impl.geometry.slot_size) {
     return Status(Error::TooLarge,
                   "%s: a checkpoint of %zu bytes does not fit a slot of %u bytes; nothing was "
@@ -476,19 +607,21 @@ Status Store::save() {
   // never the newest valid one, so a torn write costs at most this checkpoint.
   std::uint32_t target = 0;
   for (std::uint32_t i = 0; i < impl.slots.size(); ++i) {
-    if (impl.slots[i].state != SlotState::Valid) {
+    if (impl.slots[i].state != StoreSlotState::Valid) {
       target = i;
       break;
     }
     if (impl.slots[i].sequence < impl.slots[target].sequence) target = i;
   }
   Impl::Slot& slot = impl.slots[target];
-  slot = Impl::Slot{SlotState::Corrupt, 0, -1};  // until the write completes
+  slot.state = StoreSlotState::Corrupt;  // until the write completes
+  slot.area = -1;
   status = detail::pwrite_all(fd_, impl.record.data(), impl.record.size(),
-                              static_cast<off_t>(impl.geometry.slot_offset(target)),
-                              impl.path.c_str());
+                              static_cast<off_t>(slot.offset), impl.path.c_str());
   if (!status.ok()) return status;
-  slot = Impl::Slot{SlotState::Valid, sequence, impl.own_area};
+  slot.state = StoreSlotState::Valid;
+  slot.sequence = sequence;
+  slot.area = impl.own_area;
   last_sequence_ = sequence;
   if (options_.durability == Durability::Fdatasync && ::fdatasync(fd_) != 0) {
     return detail::io_error("cannot fdatasync", impl.path.c_str(), errno);
@@ -510,8 +643,8 @@ Report Store::restore_latest(const RestoreOptions& options) {
   }
   impl.newest_first.clear();
   for (std::uint32_t i = 0; i < impl.slots.size(); ++i) {
-    if (impl.slots[i].state == SlotState::Valid) impl.newest_first.push_back(i);
-    if (impl.slots[i].state == SlotState::Valid && impl.slots[i].sequence > last_sequence_) {
+    if (impl.slots[i].state == StoreSlotState::Valid) impl.newest_first.push_back(i);
+    if (impl.slots[i].state == StoreSlotState::Valid && impl.slots[i].sequence > last_sequence_) {
       last_sequence_ = impl.slots[i].sequence;
     }
   }
@@ -534,11 +667,11 @@ Report Store::restore_latest(const RestoreOptions& options) {
         report.set_status(status);
         return report;
       }
-      if (reread.state != SlotState::Valid) continue;
+      if (reread.state != StoreSlotState::Valid) continue;
       record = &impl.view;
       area_index = reread.area;
     }
-    const Impl::Area& area = impl.areas[area_index];
+    const StoreSchemaArea& area = impl.areas[area_index];
     report = detail::restore_record(*record, area.schema.schema(), area.hash, *schema_,
                                     options);
     const Error error = report.status().error();
@@ -549,17 +682,17 @@ Report Store::restore_latest(const RestoreOptions& options) {
 
   unsigned empty = 0, corrupt = 0, unknown = 0, future = 0;
   for (const Impl::Slot& slot : impl.slots) {
-    empty += slot.state == SlotState::Empty;
-    corrupt += slot.state == SlotState::Corrupt;
-    unknown += slot.state == SlotState::UnknownSchema;
-    future += slot.state == SlotState::FutureVersion;
+    empty += slot.state == StoreSlotState::Empty;
+    corrupt += slot.state == StoreSlotState::Corrupt;
+    unknown += slot.state == StoreSlotState::UnknownSchema;
+    future += slot.state == StoreSlotState::FutureVersion;
   }
   report.clear();
   report.set_status(Status(
       Error::NoValidSlot,
-      "%s: no restorable checkpoint in %u slots (%u empty, %u corrupt or torn, %u with an "
+      "%s: no restorable checkpoint in %zu slots (%u empty, %u corrupt or torn, %u with an "
       "unknown schema, %u from a future format, %u rejected by restore%s%s)",
-      impl.path.c_str(), impl.geometry.slot_count, empty, corrupt, unknown, future, rejected,
+      impl.path.c_str(), impl.slots.size(), empty, corrupt, unknown, future, rejected,
       rejected ? ": " : "", rejected ? last_rejection.message() : ""));
   return report;
 }

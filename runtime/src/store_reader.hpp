@@ -12,35 +12,10 @@
 
 #include "engine.hpp"
 #include "record.hpp"
+#include "store_layout.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {
-
-inline constexpr std::uint8_t kStoreFileMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'S', 'T', 'O'};
-inline constexpr std::uint16_t kStoreFileFormatVersion = 1;
-
-struct StoreGeometry {
-  std::uint32_t slot_count = 0;
-  std::uint32_t slot_size = 0;
-  std::uint32_t schema_area_size = 0;
-  std::uint64_t slots_offset = 0;
-};
-
-struct StoreSchemaArea {
-  bool valid = false;      // CRC, hash and schema all hold
-  std::uint64_t hash = 0;
-  std::uint32_t size = 0;  // bytes of serialised schema
-  ParsedSchema schema;
-};
-
-enum class StoreSlotState : std::uint8_t {
-  Valid,          // the record validates and its schema area is valid
-  Empty,          // never written (all-zero magic)
-  Corrupt,        // torn or damaged record (problem says how)
-  UnknownSchema,  // the record is intact but no valid area holds its schema
-  FutureVersion,  // written by a newer record format
-};
-const char* store_slot_state_name(StoreSlotState state);
 
 struct StoreSlot {
   StoreSlotState state = StoreSlotState::Empty;
@@ -73,7 +48,6 @@ class StoreReader {
                      int& area) const;
 
  private:
-  Status load_area(int index);
   Status classify_slot(std::uint32_t index, std::vector<std::uint8_t>& bytes, RecordView& view,
                        StoreSlot& slot) const;
 
@@ -83,9 +57,6 @@ class StoreReader {
   StoreSchemaArea areas_[2];
   std::vector<StoreSlot> slots_;
 };
-
-// True when `data` (at least 8 bytes) starts like a store rather than a record.
-bool looks_like_store(const std::uint8_t* data, std::size_t size);
 
 }  // namespace symcr::detail
 

@@ -400,16 +400,156 @@ TEST_F(StoreTest, SaveAllocatesNothingAfterTheFirstCall) {
   EXPECT_EQ(g_allocations.load(), before);
 }
 
-TEST_F(StoreTest, DifferentGeometryWithCheckpointsIsRefused) {
-  save_seeds(1, 2);
+TEST_F(StoreTest, DifferentGeometryWithCheckpointsRestoresThemAndRewritesTheStoreAtTheFirstSave) {
+  save_seeds(1, 3);
   const std::vector<std::uint8_t> before = read_file(path);
   options.slots = 8;
+  options.slot_size = 2 * options.slot_size;  // the patched build's state grew
+  {
+    symcr::Store store;
+    open(store);
+    EXPECT_EQ(read_file(path), before) << "opening wrote into the store";
+    EXPECT_EQ(store.options().slots, 4u) << "reads with the file's own geometry";
+    scramble_a();
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    expect_a(3);
+    fill_a(4);
+    const symcr::Status saved = store.save();
+    ASSERT_TRUE(saved.ok()) << saved.message();
+    EXPECT_EQ(store.options().slots, 8u);
+  }
+  const StoreFile file(path);
+  EXPECT_EQ(file.slot_count(), 8u);
+  EXPECT_EQ(file.slot_size(), options.slot_size);
+  EXPECT_EQ(file.bytes.size(), file.slots_offset() + 8u * options.slot_size);
+  expect_restores_sequence(4);
+  // The earlier checkpoints came along: damage the newest and the one before restores.
+  StoreFile damaged(path);
+  damaged.slot(damaged.slot_with_sequence(4))[60] ^= 1;
+  damaged.write();
+  expect_restores_sequence(3);
+}
+
+TEST_F(StoreTest, ANewGeometryTooSmallForTheNewestCheckpointKeepsTheOldOne) {
+  save_seeds(1, 2);
+  const std::uint32_t old_slot_size = options.slot_size;
+  options.slot_size = 112;  // holds no checkpoint at all
   symcr::Store store;
-  const symcr::Status status = symcr::Store::open(path.c_str(), schema_a, options, store);
-  EXPECT_EQ(status.error(), Error::Incompatible);
-  EXPECT_NE(std::string(status.message()).find("4 slots"), std::string::npos) << status.message();
-  EXPECT_FALSE(store.is_open());
+  open(store);
+  fill_a(3);
+  const symcr::Status saved = store.save();  // into the old geometry, which still holds it
+  ASSERT_TRUE(saved.ok()) << saved.message();
+  const StoreFile file(path);
+  EXPECT_EQ(file.slot_size(), old_slot_size);
+  store.close();
+  options.slot_size = old_slot_size;
+  expect_restores_sequence(3);
+}
+
+TEST_F(StoreTest, AZeroedHeaderIsRebuiltFromTheSlotsAndNothingIsLost) {
+  save_seeds(1, 6);
+  StoreFile file(path);
+  std::memset(file.bytes.data(), 0, 36);  // a torn or zeroed first page
+  file.write();
+  expect_restores_sequence(6);
+  const StoreFile rebuilt(path);
+  EXPECT_EQ(rebuilt.slot_count(), 4u);
+  EXPECT_EQ(rebuilt.slot_size(), options.slot_size);
+  EXPECT_EQ(std::vector<std::uint8_t>(rebuilt.bytes.begin() + 4096, rebuilt.bytes.end()),
+            std::vector<std::uint8_t>(file.bytes.begin() + 4096, file.bytes.end()))
+      << "recovery changed more than the header";
+  save_seeds(7, 7);
+  expect_restores_sequence(7);
+}
+
+TEST_F(StoreTest, ACorruptHeaderWithAnotherGeometryRequestedOpensRestoreOnly) {
+  save_seeds(1, 3);
+  StoreFile file(path);
+  file.bytes[13] ^= 1;  // slot_count, under the header CRC
+  file.write();
+  options.slots = 6;  // the geometry cannot be confirmed against this
+  symcr::Store store;
+  open(store);
+  EXPECT_TRUE(store.read_only());
+  scramble_a();
+  const symcr::Report report = store.restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  expect_a(3);
+  fill_a(4);
+  const symcr::Status saved = store.save();
+  EXPECT_EQ(saved.error(), Error::Io);
+  EXPECT_NE(std::string(saved.message()).find("damaged header"), std::string::npos)
+      << saved.message();
+  EXPECT_EQ(std::string(saved.message()).find("remove"), std::string::npos) << saved.message();
+  EXPECT_EQ(read_file(path), file.bytes) << "a restore-only store was written";
+}
+
+TEST_F(StoreTest, AHeaderThatIsNotAStoreAndNoCheckpointsIsRefusedAndLeftAlone) {
+  std::vector<std::uint8_t> text(300 * 1024, 'x');
+  write_file(path, text);
+  symcr::Store store;
+  EXPECT_EQ(symcr::Store::open(path.c_str(), schema_a, options, store).error(),
+            Error::NotACheckpoint);
+  EXPECT_EQ(read_file(path), text);
+}
+
+TEST_F(StoreTest, ATruncatedStoreRestoresItsWholeSlotsAndGrowsBackForWriting) {
+  save_seeds(1, 4);  // sequences 1-4 in slots 0-3
+  StoreFile file(path);
+  ASSERT_GT(file.record_size(2), 100u);
+  const std::uint64_t cut = file.slots_offset() + 2 * file.slot_size() + 100;  // inside slot 2
+  ASSERT_EQ(::truncate(path.c_str(), static_cast<off_t>(cut)), 0);
+  expect_restores_sequence(2);
+  EXPECT_EQ(read_file(path).size(), file.bytes.size()) << "not grown back to its geometry";
+  save_seeds(5, 5);  // sequence 3: the slots past the cut are gone
+  scramble_a();
+  const symcr::Report report = restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 3u);
+  expect_a(5);
+}
+
+TEST_F(StoreTest, AReadOnlyStoreFileOpensForRestoring) {
+  save_seeds(1, 2);
+  ASSERT_EQ(::chmod(path.c_str(), 0400), 0);
+  const std::vector<std::uint8_t> before = read_file(path);
+  // root ignores file permissions: open_readonly() is the same path without relying on them.
+  for (const bool explicit_readonly : {false, true}) {
+    symcr::Store store;
+    const symcr::Status status =
+        explicit_readonly ? symcr::Store::open_readonly(path.c_str(), schema_a, store)
+                          : symcr::Store::open(path.c_str(), schema_a, options, store);
+    ASSERT_TRUE(status.ok()) << status.message();
+    if (!explicit_readonly && ::geteuid() == 0) continue;
+    EXPECT_TRUE(store.read_only());
+    scramble_a();
+    ASSERT_TRUE(store.restore_latest().ok());
+    expect_a(2);
+    EXPECT_EQ(store.save().error(), Error::Io);
+  }
   EXPECT_EQ(read_file(path), before);
+}
+
+TEST_F(StoreTest, OpenReadonlyTakesTheGeometryFromTheFile) {
+  options.slots = 3;
+  options.slot_size = 12288;
+  save_seeds(1, 5);
+  symcr::Store store;
+  const symcr::Status status = symcr::Store::open_readonly(path.c_str(), schema_a, store);
+  ASSERT_TRUE(status.ok()) << status.message();
+  EXPECT_EQ(store.options().slots, 3u);
+  EXPECT_EQ(store.options().slot_size, 12288u);
+  scramble_a();
+  ASSERT_TRUE(store.restore_latest().ok());
+  expect_a(5);
+}
+
+TEST_F(StoreTest, OpenReadonlyNeverCreatesAFile) {
+  symcr::Store store;
+  EXPECT_EQ(symcr::Store::open_readonly(path.c_str(), schema_a, store).error(), Error::Io);
+  struct stat info {};
+  EXPECT_NE(::stat(path.c_str(), &info), 0);
 }
 
 TEST_F(StoreTest, DifferentGeometryWithoutCheckpointsIsReinitialised) {
@@ -442,13 +582,13 @@ TEST_F(StoreTest, AFileThatIsNotAStoreIsLeftAlone) {
   EXPECT_EQ(read_file(path), std::vector<std::uint8_t>(5000, 'x'));
 }
 
-TEST_F(StoreTest, CorruptStoreHeaderIsRefused) {
-  save_seeds(1, 1);
+TEST_F(StoreTest, ACorruptStoreHeaderIsRecoveredFromTheSlots) {
+  save_seeds(1, 2);
   StoreFile file(path);
   file.bytes[13] ^= 1;  // slot_count, under the header CRC
   file.write();
-  symcr::Store store;
-  EXPECT_EQ(symcr::Store::open(path.c_str(), schema_a, options, store).error(), Error::Checksum);
+  expect_restores_sequence(2);
+  EXPECT_EQ(StoreFile(path).slot_count(), 4u);
 }
 
 TEST_F(StoreTest, AFutureStoreVersionIsRefusedAndLeftAlone) {

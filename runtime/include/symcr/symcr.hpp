@@ -183,10 +183,24 @@ class Store {
   Store& operator=(Store&& other) noexcept;
 
   // Opens `path`, creating and preallocating it if absent. An existing store written by
-  // another build keeps its checkpoints (and their schema) until this build saves.
+  // another build keeps its checkpoints (and their schema) until this build saves. An existing
+  // store is never reinitialised while it holds a valid checkpoint:
+  //   - its own geometry is used for reading; one other than `options` asks for takes effect
+  //     at the first save(), which rewrites the store (a new file renamed over it) carrying
+  //     its newest checkpoints over;
+  //   - a store that cannot be opened for writing (a read-only file or file system) opens
+  //     read-only: restore_latest() works, save() returns Error::Io;
+  //   - a store whose header is damaged is recovered from its slots: its header is rewritten
+  //     when `options`' geometry places every checkpoint found, and otherwise the store opens
+  //     restore-only (save() refuses, nothing is written);
+  //   - a truncated store keeps the slots still whole (it is extended again for writing).
   static Status open(const char* path, const Schema& schema, const StoreOptions& options,
                      Store& out);
   static Status open(const char* path, const StoreOptions& options, Store& out);  // program's
+  // Opens an existing store for restoring only: never creates, locks or writes it, and takes
+  // its geometry from the file (or from its slots, when its header is damaged).
+  static Status open_readonly(const char* path, const Schema& schema, Store& out);
+  static Status open_readonly(const char* path, Store& out);  // program's
 
   // Saves every root into the oldest slot with one positioned write.
   Status save();
@@ -194,12 +208,18 @@ class Store {
   Report restore_latest(const RestoreOptions& options = {});
 
   bool is_open() const { return fd_ >= 0; }
+  // True when save() refuses: opened read-only, or a damaged store recovered for restoring.
+  bool read_only() const;
   std::uint64_t last_sequence() const { return last_sequence_; }
-  const StoreOptions& options() const { return options_; }
+  const StoreOptions& options() const { return options_; }  // the geometry in use
   void close();
 
  private:
   struct Impl;
+  static Status open_impl(const char* path, const Schema& schema, const StoreOptions& options,
+                          bool writable, Store& out);
+  static Status open_descriptor(const char* path, const Schema& schema,
+                                const StoreOptions& options, bool writable, Store& out);
   int fd_ = -1;
   const Schema* schema_ = nullptr;
   StoreOptions options_;

@@ -1,0 +1,281 @@
+// The store file's layout (store_layout.hpp, docs/format.md §4).
+#include "store_layout.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "crc32c.hpp"
+#include "file_io.hpp"
+#include "little_endian.hpp"
+
+namespace symcr::detail {
+namespace {
+
+// First read of a slot: one pread covers the header and a record of up to a page.
+constexpr std::size_t kSlotFirstRead = 4096;
+// The salvage scan reads the file in pieces of this size.
+constexpr std::size_t kSalvageChunk = 1 << 20;
+
+bool all_zero(const std::uint8_t* p, std::size_t n) {
+  return std::all_of(p, p + n, [](std::uint8_t b) { return b == 0; });
+}
+
+std::uint64_t round_up_to_page(std::uint64_t n) {
+  return (n + kStorePageSize - 1) / kStorePageSize * kStorePageSize;
+}
+
+// The size a record header claims for its whole record.
+std::uint64_t claimed_record_size(const std::uint8_t* header) {
+  return std::uint64_t{le::load16(header + 10)} + le::load32(header + 40) +
+         le::load32(header + 44);
+}
+
+}  // namespace
+
+StoreGeometry store_geometry_for(std::uint32_t slots, std::uint32_t slot_size,
+                                 std::size_t schema_bytes) {
+  StoreGeometry g;
+  g.slot_count = slots;
+  g.slot_size = slot_size;
+  const std::uint64_t wanted = 4 * (kStoreAreaHeaderSize + std::uint64_t{schema_bytes});
+  g.schema_area_size = static_cast<std::uint32_t>(
+      round_up_to_page(std::max<std::uint64_t>(kStoreMinSchemaAreaSize, wanted)));
+  g.slots_offset = kStorePageSize + 2 * std::uint64_t{g.schema_area_size};
+  return g;
+}
+
+Status check_store_dimensions(std::uint32_t slots, std::uint32_t slot_size) {
+  if (slots < 2 || slots > kStoreMaxSlots) {
+    return Status(Error::TooLarge, "a store needs 2 to %u slots, not %u", kStoreMaxSlots, slots);
+  }
+  if (slot_size < kStoreMinSlotSize || slot_size > kStoreMaxSlotSize) {
+    return Status(Error::TooLarge, "a store slot must have %u to %u bytes, not %u",
+                  kStoreMinSlotSize, kStoreMaxSlotSize, slot_size);
+  }
+  return Status();
+}
+
+void encode_store_header(const StoreGeometry& g, std::uint8_t* p) {
+  std::memset(p, 0, kStoreHeaderSize);
+  std::memcpy(p, kStoreFileMagic, sizeof kStoreFileMagic);
+  le::store16(p + 8, kStoreFileFormatVersion);
+  le::store32(p + 12, g.slot_count);
+  le::store32(p + 16, g.slot_size);
+  le::store32(p + 20, g.schema_area_size);
+  le::store64(p + 24, g.slots_offset);
+  le::store32(p + 32, crc32c(p, 32));
+}
+
+Status decode_store_header(const std::uint8_t* p, std::size_t size, const char* path,
+                           StoreGeometry& g) {
+  if (size < sizeof kStoreFileMagic || std::memcmp(p, kStoreFileMagic, 8) != 0) {
+    return Status(Error::NotACheckpoint, "%s is not a symcr store (bad magic)", path);
+  }
+  if (size < kStoreHeaderSize) return Status(Error::Truncated, "%s: store header truncated", path);
+  const std::uint16_t version = le::load16(p + 8);
+  if (version > kStoreFileFormatVersion) {
+    return Status(Error::FutureVersion,
+                  "%s was written by store format version %u; this build reads up to %u", path,
+                  unsigned{version}, unsigned{kStoreFileFormatVersion});
+  }
+  if (le::load32(p + 32) != crc32c(p, 32)) {
+    return Status(Error::Checksum, "%s: store header checksum mismatch", path);
+  }
+  g.slot_count = le::load32(p + 12);
+  g.slot_size = le::load32(p + 16);
+  g.schema_area_size = le::load32(p + 20);
+  g.slots_offset = le::load64(p + 24);
+  if (version == 0 || !check_store_dimensions(g.slot_count, g.slot_size).ok() ||
+      g.schema_area_size <= kStoreAreaHeaderSize || g.schema_area_size % kStorePageSize != 0 ||
+      g.slots_offset != kStorePageSize + 2 * std::uint64_t{g.schema_area_size}) {
+    return Status(Error::Corrupt, "%s: invalid store header", path);
+  }
+  return Status();
+}
+
+Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint64_t capacity,
+                       StoreSchemaArea& area) {
+  area = StoreSchemaArea();
+  std::uint8_t head[kStoreAreaHeaderSize];
+  std::size_t got = 0;
+  Status status = pread_full(fd, head, sizeof head, static_cast<off_t>(offset), got, path);
+  if (!status.ok()) return status;
+  const std::uint32_t size = le::load32(head + 8);
+  if (got < sizeof head || size == 0 || capacity < kStoreAreaHeaderSize ||
+      size > capacity - kStoreAreaHeaderSize) {
+    return Status();  // empty or damaged: no schema here
+  }
+  std::vector<std::uint8_t> bytes(size);
+  status = pread_full(fd, bytes.data(), size, static_cast<off_t>(offset + kStoreAreaHeaderSize),
+                      got, path);
+  if (!status.ok()) return status;
+  const std::uint64_t hash = le::load64(head);
+  const std::uint32_t crc = crc32c_extend(crc32c(head, 12), bytes.data(), size);
+  if (got < size || crc != le::load32(head + 12) || fnv1a64(bytes.data(), size) != hash ||
+      !parse_schema(bytes.data(), size, area.schema).ok()) {
+    area = StoreSchemaArea();
+    return Status();
+  }
+  area.valid = true;
+  area.hash = hash;
+  area.size = size;
+  return Status();
+}
+
+const char* store_slot_state_name(StoreSlotState state) {
+  switch (state) {
+    case StoreSlotState::Valid: return "valid";
+    case StoreSlotState::Empty: return "empty";
+    case StoreSlotState::Corrupt: return "corrupt";
+    case StoreSlotState::UnknownSchema: return "unknown-schema";
+    case StoreSlotState::FutureVersion: return "future-version";
+  }
+  return "?";
+}
+
+Status read_store_slot(int fd, const char* path, std::uint64_t offset, std::uint32_t capacity,
+                       const StoreSchemaArea* areas, std::vector<std::uint8_t>& buffer,
+                       RecordView& view, StoreSlotRead& out, Status* problem) {
+  out = StoreSlotRead();
+  const std::size_t first = std::min<std::size_t>(capacity, kSlotFirstRead);
+  if (buffer.size() < first) buffer.resize(first);
+  std::size_t got = 0;
+  Status status = pread_full(fd, buffer.data(), first, static_cast<off_t>(offset), got, path);
+  if (!status.ok()) return status;
+  if (got < kRecordHeaderSize || all_zero(buffer.data(), 8)) {
+    // Never written, or cut off by a truncated file: nothing to restore either way.
+    if (got > 0 && !all_zero(buffer.data(), std::min<std::size_t>(got, 8))) {
+      out.state = StoreSlotState::Corrupt;
+      if (problem) *problem = Status(Error::Truncated, "the record is cut off by the end of the file");
+    }
+    return Status();
+  }
+  // Read the rest of the record when the header claims more (bounded by the slot).
+  const std::size_t wanted = static_cast<std::size_t>(
+      std::min<std::uint64_t>(claimed_record_size(buffer.data()), capacity));
+  if (wanted > got && got == first) {
+    if (buffer.size() < wanted) buffer.resize(wanted);
+    std::size_t more = 0;
+    status = pread_full(fd, buffer.data() + got, wanted - got,
+                        static_cast<off_t>(offset + got), more, path);
+    if (!status.ok()) return status;
+    got += more;
+  }
+  const Status parsed = parse_record(buffer.data(), got, view);
+  if (!parsed.ok()) {
+    out.state = parsed.error() == Error::FutureVersion ? StoreSlotState::FutureVersion
+                                                       : StoreSlotState::Corrupt;
+    if (problem) *problem = parsed;
+    return Status();
+  }
+  if (view.schema != nullptr) {  // store records reference their schema; never inline
+    out.state = StoreSlotState::Corrupt;
+    if (problem) *problem = Status(Error::Corrupt, "a store slot's record carries an inline schema");
+    return Status();
+  }
+  for (int i = 0; i < 2; ++i) {
+    if (areas[i].valid && areas[i].hash == view.header.schema_hash) out.area = i;
+  }
+  if (out.area < 0) {
+    out.state = StoreSlotState::UnknownSchema;
+    if (problem) {
+      *problem = Status(Error::SchemaUnknown, "schema %016llx is in neither schema area",
+                        static_cast<unsigned long long>(view.header.schema_hash));
+    }
+    return Status();
+  }
+  out.state = StoreSlotState::Valid;
+  return Status();
+}
+
+Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSalvage& out) {
+  out = StoreSalvage();
+  // Records: every place the record magic starts a record whose checksum holds. The scan
+  // resumes after a record found, so a checkpoint held as data inside another is not taken.
+  std::vector<std::uint8_t> chunk(kSalvageChunk);
+  std::vector<std::uint8_t> record;
+  RecordView view;
+  std::uint64_t position = kStorePageSize;
+  while (position + kRecordHeaderSize <= file_size) {
+    std::size_t got = 0;
+    Status status = pread_full(fd, chunk.data(), chunk.size(), static_cast<off_t>(position),
+                               got, path);
+    if (!status.ok()) return status;
+    if (got < sizeof kRecordMagic) break;
+    const std::uint8_t* hit = static_cast<const std::uint8_t*>(
+        ::memmem(chunk.data(), got, kRecordMagic, sizeof kRecordMagic));
+    if (hit == nullptr) {
+      position += got - (sizeof kRecordMagic - 1);  // a magic may straddle two pieces
+      continue;
+    }
+    const std::uint64_t offset = position + static_cast<std::uint64_t>(hit - chunk.data());
+    std::uint8_t header[kRecordHeaderSize];
+    status = pread_full(fd, header, sizeof header, static_cast<off_t>(offset), got, path);
+    if (!status.ok()) return status;
+    const std::uint64_t claimed = got == sizeof header ? claimed_record_size(header) : 0;
+    bool found = false;
+    if (claimed >= kRecordHeaderSize && claimed <= kStoreMaxSlotSize &&
+        offset + claimed <= file_size) {
+      record.resize(static_cast<std::size_t>(claimed));
+      status = pread_full(fd, record.data(), record.size(), static_cast<off_t>(offset), got, path);
+      if (!status.ok()) return status;
+      found = got == record.size() && parse_record(record.data(), got, view).ok() &&
+              view.schema == nullptr;
+    }
+    if (found) {
+      out.record_offsets.push_back(offset);
+      out.record_sizes.push_back(static_cast<std::uint32_t>(view.record_size));
+      position = offset + view.record_size;
+    } else {
+      position = offset + 1;
+    }
+  }
+  // Schema areas: area 0 is at the first page; area 1 one area size further, at a page
+  // boundary before the first slot.
+  const std::uint64_t areas_end =
+      out.record_offsets.empty() ? file_size : out.record_offsets.front();
+  for (std::uint64_t area_size = kStoreMinSchemaAreaSize;
+       kStorePageSize + 2 * area_size <= areas_end; area_size += kStorePageSize) {
+    StoreSchemaArea candidate;
+    Status status = load_store_area(fd, path, kStorePageSize + area_size, area_size, candidate);
+    if (!status.ok()) return status;
+    if (candidate.valid) {
+      out.areas[1] = std::move(candidate);
+      out.area_offsets[1] = kStorePageSize + area_size;
+      out.area_capacities[1] = area_size;
+      break;
+    }
+  }
+  out.area_offsets[0] = kStorePageSize;
+  out.area_capacities[0] = out.areas[1].valid ? out.area_capacities[1]
+                                              : (areas_end > kStorePageSize
+                                                     ? areas_end - kStorePageSize : 0);
+  return load_store_area(fd, path, out.area_offsets[0], out.area_capacities[0], out.areas[0]);
+}
+
+bool salvage_fits_geometry(const StoreSalvage& salvage, const StoreGeometry& g,
+                           std::uint64_t file_size) {
+  if (g.file_size() != file_size || g.slots_offset != g.area_offset(2)) return false;
+  for (int i = 0; i < 2; ++i) {
+    if (!salvage.areas[i].valid) continue;
+    if (salvage.area_offsets[i] != g.area_offset(i) ||
+        kStoreAreaHeaderSize + salvage.areas[i].size > g.schema_area_size) {
+      return false;
+    }
+  }
+  for (std::size_t i = 0; i < salvage.record_offsets.size(); ++i) {
+    const std::uint64_t offset = salvage.record_offsets[i];
+    if (offset < g.slots_offset || (offset - g.slots_offset) % g.slot_size != 0 ||
+        salvage.record_sizes[i] > g.slot_size) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool looks_like_store(const std::uint8_t* data, std::size_t size) {
+  return size >= sizeof kStoreFileMagic &&
+         std::memcmp(data, kStoreFileMagic, sizeof kStoreFileMagic) == 0;
+}
+
+}  // namespace symcr::detail

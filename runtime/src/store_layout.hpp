@@ -1,0 +1,110 @@
+// The store file's layout (docs/format.md §4), written once for the writing Store and the
+// read-only StoreReader: the header, the two schema areas, reading and classifying one slot,
+// and finding the checkpoints of a store whose header is damaged. Internal to the runtime.
+#ifndef SYMCR_SRC_STORE_LAYOUT_HPP
+#define SYMCR_SRC_STORE_LAYOUT_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "engine.hpp"
+#include "record.hpp"
+#include "symcr/symcr.hpp"
+
+namespace symcr::detail {
+
+inline constexpr std::uint8_t kStoreFileMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'S', 'T', 'O'};
+inline constexpr std::uint16_t kStoreFileFormatVersion = 1;
+inline constexpr std::size_t kStoreHeaderSize = 36;  // 32 bytes of fields + their CRC
+inline constexpr std::uint64_t kStorePageSize = 4096;
+inline constexpr std::size_t kStoreAreaHeaderSize = 16;  // u64 hash, u32 size, u32 crc
+inline constexpr std::uint32_t kStoreMinSchemaAreaSize = 64 * 1024;
+inline constexpr std::uint32_t kStoreMaxSlots = 1u << 20;
+inline constexpr std::uint32_t kStoreMinSlotSize = 2 * kRecordHeaderSize;
+inline constexpr std::uint32_t kStoreMaxSlotSize = 1u << 30;
+
+struct StoreGeometry {
+  std::uint32_t slot_count = 0;
+  std::uint32_t slot_size = 0;
+  std::uint32_t schema_area_size = 0;
+  std::uint64_t slots_offset = 0;
+
+  std::uint64_t area_offset(int area) const {
+    return kStorePageSize + static_cast<std::uint64_t>(area) * schema_area_size;
+  }
+  std::uint64_t slot_offset(std::uint32_t slot) const {
+    return slots_offset + static_cast<std::uint64_t>(slot) * slot_size;
+  }
+  std::uint64_t file_size() const { return slot_offset(slot_count); }
+};
+
+// The geometry of a new store: `slots` × `slot_size`, with schema areas four times the
+// creating build's schema (at least 64 KiB), leaving room for later builds' larger schemas.
+StoreGeometry store_geometry_for(std::uint32_t slots, std::uint32_t slot_size,
+                                 std::size_t schema_bytes);
+// TooLarge unless `slots` and `slot_size` are within the format's bounds.
+Status check_store_dimensions(std::uint32_t slots, std::uint32_t slot_size);
+
+void encode_store_header(const StoreGeometry& geometry, std::uint8_t* out);  // kStoreHeaderSize
+// Decodes the first `size` bytes of a store: magic, version, CRC and geometry.
+Status decode_store_header(const std::uint8_t* data, std::size_t size, const char* path,
+                           StoreGeometry& out);
+
+struct StoreSchemaArea {
+  bool valid = false;      // CRC, hash and schema all hold
+  std::uint64_t hash = 0;
+  std::uint32_t size = 0;  // bytes of serialised schema
+  ParsedSchema schema;
+};
+// Loads the schema area at `offset` holding at most `capacity` bytes (its header included).
+// A damaged or empty area is loaded as not valid; only an I/O error is a failure.
+Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint64_t capacity,
+                       StoreSchemaArea& out);
+
+enum class StoreSlotState : std::uint8_t {
+  Valid,          // the record validates and its schema area is valid
+  Empty,          // never written (all-zero magic), or past the end of a truncated file
+  Corrupt,        // torn or damaged record
+  UnknownSchema,  // the record is intact but no valid area holds its schema
+  FutureVersion,  // written by a newer record format
+};
+const char* store_slot_state_name(StoreSlotState state);
+
+struct StoreSlotRead {
+  StoreSlotState state = StoreSlotState::Empty;
+  int area = -1;  // Valid: the schema area its record references
+};
+
+// Reads the record in the slot at `offset` (at most `capacity` bytes: the slot size) into
+// `buffer`, grown only when it is smaller than the record (a buffer of the slot size is never
+// reallocated), and classifies it against `areas` (two). `view` describes the record when it
+// parsed; `problem`, when given, says why the slot is not Valid. One pread for a record of up
+// to a page.
+Status read_store_slot(int fd, const char* path, std::uint64_t offset, std::uint32_t capacity,
+                       const StoreSchemaArea* areas, std::vector<std::uint8_t>& buffer,
+                       RecordView& view, StoreSlotRead& out, Status* problem = nullptr);
+
+// What could be found of a store whose header is damaged (zeroed, torn, overwritten): the
+// records that validate, wherever they are in the file, and the schema areas they reference.
+struct StoreSalvage {
+  std::vector<std::uint64_t> record_offsets;  // ascending
+  std::vector<std::uint32_t> record_sizes;
+  StoreSchemaArea areas[2];
+  std::uint64_t area_offsets[2] = {0, 0};
+  std::uint64_t area_capacities[2] = {0, 0};
+};
+// Scans the file (`file_size` bytes) for records and schema areas. Reads only.
+Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSalvage& out);
+// True when `geometry` places every salvaged record at a slot, its areas where they were found
+// and exactly fills `file_size`: the geometry the store was created with, as far as its bytes
+// can tell, and safe to write into a new header.
+bool salvage_fits_geometry(const StoreSalvage& salvage, const StoreGeometry& geometry,
+                           std::uint64_t file_size);
+
+// True when `data` (at least 8 bytes) starts like a store rather than a record.
+bool looks_like_store(const std::uint8_t* data, std::size_t size);
+
+}  // namespace symcr::detail
+
+#endif  // SYMCR_SRC_STORE_LAYOUT_HPP
