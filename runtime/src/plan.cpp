@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "plan.hpp"
+#include "unicode.hpp"
 #include "schema_facts.hpp"
 
 namespace symcr::detail {
@@ -248,9 +249,9 @@ class Planner {
         n.action = Action::String;
         const std::uint32_t from = w_.types[wt.element].size, to = r_.types[rt.element].size;
         if (from != to) {
+          // Re-encoded per value; a value that is not valid in its encoding is rejected.
           n.decision = Decision::Converted;
-          n.detail = "characters " + std::to_string(from * 8) + " -> " + std::to_string(to * 8) +
-                     " bits";
+          n.detail = std::string("re-encoded ") + encoding_name(from) + " -> " + encoding_name(to);
         }
         return;
       }
@@ -317,19 +318,25 @@ class Planner {
     }
   }
 
-  // A container-like node reports its element's conversion when it has none of its own.
+  // A container-like node reports its element's decision when it has none of its own, and its
+  // lossiness, at every nesting level (an inner array shrinking, a string re-encoded inside a
+  // vector). Struct elements are not folded in: their fields get entries of their own, and so
+  // do pointees.
   void inherit_element(PlanNode& n) {
     const PlanNode* e = n.element;
     if (!e || e == &n) return;
+    if (e->action == Action::Struct || e->action == Action::Pointer ||
+        e->action == Action::SharedPtr || e->action == Action::Skip) {
+      return;
+    }
     if (e->action == Action::Reject && n.decision == Decision::Restored) {
       n.decision = Decision::Converted;
       n.detail = "elements rejected: " + e->detail;
-    } else if (e->action == Action::Scalar && e->decision == Decision::Converted &&
-               n.decision == Decision::Restored) {
+    } else if (e->decision == Decision::Converted && n.decision == Decision::Restored) {
       n.decision = Decision::Converted;
       n.detail = "elements " + e->detail;
     }
-    if (e->action == Action::Scalar || e->action == Action::Reject) n.lossy = n.lossy || e->lossy;
+    n.lossy = n.lossy || e->lossy;
   }
 
   __attribute__((cold)) void fill_scalar(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {

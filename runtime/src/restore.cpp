@@ -23,6 +23,7 @@
 #include "plan.hpp"
 #include "scalar.hpp"
 #include "schema_facts.hpp"
+#include "unicode.hpp"
 #include "wire.hpp"
 
 namespace symcr::detail {
@@ -617,31 +618,24 @@ class Restorer {
     if (n->action != Action::String) return true;
     const TypeInfo& rt = r_.types[n->reader];
     const std::uint32_t reader_width = r_.types[rt.element].size;
-    if (reader_width < width) {
-      const std::uint64_t limit = (std::uint64_t{1} << (reader_width * 8)) - 1;
-      for (std::uint32_t i = 0; i < length; ++i) {
-        std::uint64_t unit = 0;
-        std::memcpy(&unit, bytes + std::size_t{i} * width, width);
-        if (unit > limit) {
-          reject_value(counter_, "character %" PRIu64 " at %u does not fit %u-bit characters", unit,
-                       i, reader_width * 8);
-          return true;
-        }
-      }
-    }
-    if (!dst || !writing()) return true;
-    const auto* ops = static_cast<const StringOps*>(rt.ops);
     const void* chars = bytes;
-    if (reader_width != width || reinterpret_cast<std::uintptr_t>(bytes) % width != 0) {
-      string_scratch_.resize(std::size_t{length} * reader_width + 1);
-      for (std::uint32_t i = 0; i < length; ++i) {
-        std::uint64_t unit = 0;
-        std::memcpy(&unit, bytes + std::size_t{i} * width, width);
-        std::memcpy(string_scratch_.data() + std::size_t{i} * reader_width, &unit, reader_width);
+    std::uint32_t reader_length = length;
+    if (reader_width != width) {
+      // Another character width: re-encoded (UTF-8/16/32), both passes alike; a string not
+      // valid in its encoding is rejected and keeps this build's value.
+      char why[160];
+      if (!transcode_string(bytes, length, width, reader_width, string_scratch_, reader_length,
+                            why, sizeof why)) {
+        reject_value(counter_, "%s", why);
+        return true;
       }
       chars = string_scratch_.data();
+    } else if (reinterpret_cast<std::uintptr_t>(bytes) % width != 0) {
+      string_scratch_.assign(bytes, bytes + std::size_t{length} * width);
+      chars = string_scratch_.data();
     }
-    ops->assign(dst, chars, length);
+    if (!dst || !writing()) return true;
+    static_cast<const StringOps*>(rt.ops)->assign(dst, chars, reader_length);
     return true;
   }
 
@@ -704,6 +698,12 @@ class Restorer {
       ops->reserve(dst, count);  // vectors: element addresses stay valid while we append
       for (std::uint32_t i = 0; i < count; ++i) {
         frames_.push_back({PathFrame::Kind::Index, nullptr, i});
+        if (refused_by_validator(e)) {  // not appended: the container holds what passed
+          if (addresses) addresses->push_back(nullptr);
+          if (!nested(e, nullptr)) return false;
+          frames_.pop_back();
+          continue;
+        }
         auto* element = static_cast<std::uint8_t*>(ops->append(dst));
         if (addresses) addresses->push_back(element);
         if (!nested(e, element)) return false;
@@ -719,11 +719,12 @@ class Restorer {
       auto* staged = lifecycle ? static_cast<std::uint8_t*>(lifecycle->create())
                                : reinterpret_cast<std::uint8_t*>(scalar_buffer);
       const std::size_t first_slot = applied_slots_.size();
+      const bool refused = refused_by_validator(e);
       if (!nested(e, staged)) {
         if (lifecycle) lifecycle->destroy(staged);
         return false;
       }
-      auto* inserted = static_cast<std::uint8_t*>(ops->insert(dst, staged));
+      auto* inserted = refused ? nullptr : static_cast<std::uint8_t*>(ops->insert(dst, staged));
       if (inserted) {
         // Slots in the staged element's own bytes moved with it; slots in storage it owns
         // (a vector's buffer, a unique_ptr's pointee) were moved by pointer and stay put.
@@ -734,6 +735,8 @@ class Restorer {
             applied_slots_[s].address = inserted + (at - staged);
           }
         }
+      } else if (refused) {
+        applied_slots_.resize(first_slot);
       } else {
         applied_slots_.resize(first_slot);
         if (mode_ == Mode::Apply) {
@@ -746,6 +749,13 @@ class Restorer {
       frames_.pop_back();
     }
     return true;
+  }
+
+  // Pass 2: whether the next element, validated as a whole, failed its validator in pass 1.
+  // Such an element is left out of its container (reported and lossy in pass 1), never
+  // inserted value-initialised.
+  bool refused_by_validator(const PlanNode* e) const {
+    return e->validated && mode_ == Mode::Apply && verdicts_[verdict_cursor_] == 0;
   }
 
   // A hostile (or merely old) checkpoint must not make restore allocate more than its own size

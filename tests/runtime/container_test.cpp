@@ -77,16 +77,24 @@ TEST_F(WorldB, DequeRestored) {
 TEST_F(WorldB, StringsIncludingCharacterWidthChange) {
   EXPECT_EQ(b1::bag.str, "hello");
   EXPECT_EQ(b1::bag.wide, "hi");
-  expect_entry(report_, "bag.wide", Decision::Converted, "characters 16 -> 8 bits");
-  // A character that does not fit the narrower type is rejected, keeping the reader's string.
-  b0::bag.wide = u"\u00e9\u4e2d";
+  expect_entry(report_, "bag.wide", Decision::Converted, "re-encoded UTF-16 -> UTF-8");
+  // Characters past ASCII are re-encoded by code point, not cut to 8 bits.
+  b0::bag.wide = u"\u00e9\u4e2d\U0001F681";
   b1::bag.wide = "before";
-  const symcr::Report report = load(save(b0::schema()), b1::schema());
+  symcr::Report report = load(save(b0::schema()), b1::schema());
+  ASSERT_TRUE(report.ok());
+  EXPECT_EQ(b1::bag.wide, "\xC3\xA9\xE4\xB8\xAD\xF0\x9F\x9A\x81");
+  // A string that is not valid UTF-16 (an unpaired surrogate) is rejected, keeping the
+  // reader's string.
+  b0::bag.wide = std::u16string(u"ok") + char16_t{0xD800};
+  b1::bag.wide = "before";
+  report = load(save(b0::schema()), b1::schema());
   ASSERT_TRUE(report.ok());
   EXPECT_EQ(b1::bag.wide, "before");
   bool found = false;
   for (const auto& e : report.entries()) {
-    found = found || (e.path == "bag.wide" && e.decision == Decision::Rejected);
+    found = found || (e.path == "bag.wide" && e.decision == Decision::Rejected && e.lossy &&
+                      e.detail.find("not valid UTF-16 at character 2") != std::string::npos);
   }
   EXPECT_TRUE(found) << report.to_text();
 }
