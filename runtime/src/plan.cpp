@@ -390,7 +390,7 @@ class Planner {
     n.fields.resize(wt.field_count);
     for (std::uint32_t f = 0; f < wt.field_count; ++f) {
       const FieldInfo& writer = wt.fields[f];
-      const std::uint32_t match = match_field(writer, rt, reader_used);
+      const std::uint32_t match = match_field(wt, f, rt, reader_used);
       FieldPlan& field = n.fields[f];
       field.name = writer.name;
       field.counter = new_counter(std::string(wt.name) + "::" + writer.name);
@@ -411,8 +411,9 @@ class Planner {
     }
   }
 
-  std::uint32_t match_field(const FieldInfo& writer, const TypeInfo& rt,
+  std::uint32_t match_field(const TypeInfo& wt, std::uint32_t wf, const TypeInfo& rt,
                             const std::vector<bool>& used) const {
+    const FieldInfo& writer = wt.fields[wf];
     const bool base = (writer.flags & kFieldBase) != 0;
     for (std::uint32_t f = 0; f < rt.field_count; ++f) {
       const FieldInfo& reader = rt.fields[f];
@@ -425,7 +426,54 @@ class Planner {
       if (in_aliases(writer.name, reader.renamed_from)) return f;
       if (base && in_aliases(writer.name, r_.types[reader.type].renamed_from)) return f;
     }
+    if (is_anonymous_member(writer.name)) return match_anonymous_member(wt, wf, rt, used);
     return kNoType;
+  }
+
+  // Unnamed struct and union members are named after their declaration index, which moves when
+  // a field is added or removed before them. Their members are what the program names: an
+  // anonymous struct matches the reader's anonymous struct sharing the most member names; an
+  // anonymous union (restored as raw bytes, its members unlisted) matches the reader's anonymous
+  // union of the same rank among the anonymous unions.
+  static bool is_anonymous_member(const char* name) {
+    return std::strncmp(name, "(anonymous ", 11) == 0;
+  }
+  // The same member for the report: the same name, or two unnamed members matched above.
+  static bool same_member(const char* writer, const char* reader) {
+    return same_name(writer, reader) || (is_anonymous_member(writer) && is_anonymous_member(reader));
+  }
+
+  std::uint32_t match_anonymous_member(const TypeInfo& wt, std::uint32_t wf, const TypeInfo& rt,
+                                       const std::vector<bool>& used) const {
+    const TypeInfo& member = w_.types[wt.fields[wf].type];
+    auto anonymous_of_kind = [](const Schema& schema, const FieldInfo& field, Kind kind) {
+      return is_anonymous_member(field.name) && schema.types[field.type].kind == kind;
+    };
+    if (member.kind == Kind::Union) {
+      std::uint32_t rank = 0;
+      for (std::uint32_t f = 0; f < wf; ++f) rank += anonymous_of_kind(w_, wt.fields[f], Kind::Union);
+      for (std::uint32_t f = 0; f < rt.field_count; ++f) {
+        if (!anonymous_of_kind(r_, rt.fields[f], Kind::Union)) continue;
+        if (rank-- == 0) return used[f] ? kNoType : f;
+      }
+      return kNoType;
+    }
+    std::uint32_t best = kNoType, best_shared = 0;
+    for (std::uint32_t f = 0; f < rt.field_count; ++f) {
+      if (used[f] || !anonymous_of_kind(r_, rt.fields[f], member.kind)) continue;
+      const TypeInfo& candidate = r_.types[rt.fields[f].type];
+      std::uint32_t shared = 0;
+      for (std::uint32_t a = 0; a < member.field_count; ++a) {
+        for (std::uint32_t b = 0; b < candidate.field_count; ++b) {
+          shared += same_name(member.fields[a].name, candidate.fields[b].name);
+        }
+      }
+      if (shared > best_shared) {
+        best = f;
+        best_shared = shared;
+      }
+    }
+    return best;
   }
 
   // ---- migration hooks ------------------------------------------------------------------
@@ -475,7 +523,8 @@ class Planner {
         if (wt.field_count != rt.field_count) return true;
         for (const FieldPlan& field : n.fields) {
           if (field.reader_field == kNoType ||
-              !same_name(field.name, rt.fields[field.reader_field].name) || differs(field.node)) {
+              !same_member(field.name, rt.fields[field.reader_field].name) ||
+              differs(field.node)) {
             return true;
           }
         }
@@ -777,7 +826,7 @@ class Planner {
           const std::string child = path + "." + reader.name;
           Decision decision = field.node->decision;
           std::string detail = field.node->detail;
-          if (!same_name(reader.name, writer.name)) {
+          if (!same_member(reader.name, writer.name)) {
             if (decision != Decision::Rejected) decision = Decision::Converted;
             detail = std::string("renamed from ") + writer.name + (detail.empty() ? "" : "; ") + detail;
           }
