@@ -29,6 +29,7 @@ enum class RegionKind : std::uint8_t {
   Object,        // a root or heap object: `object` is its object number
   ContainerRun,  // contiguous elements of one container, from `first_index`
   Owned,         // a unique_ptr's pointee, reached through the unique_ptr at `owner_slot`
+  StringChars,   // a string's heap buffer, reached through the string at `owner_slot`
 };
 
 struct Region {
@@ -338,7 +339,16 @@ class Encoder {
         const std::size_t length = ops->size(p);
         if (length > 0xFFFFFFFFu) return fail_unsupported("a string longer than 2^32 characters");
         put_u32(static_cast<std::uint32_t>(length));
-        put_bytes(ops->data(p), length * size_of(type.element));
+        const void* data = ops->data(p);
+        put_bytes(data, length * size_of(type.element));
+        // Characters in a buffer of their own (not the string's inline one, which its object's
+        // region covers) can be pointed into: index them, terminator position included.
+        const auto start = reinterpret_cast<std::uintptr_t>(data);
+        const auto object = reinterpret_cast<std::uintptr_t>(p);
+        if (track_regions_ && (start < object || start >= object + type.size)) {
+          add_region(Region{start, start + (length + 1) * size_of(type.element), type.element,
+                            RegionKind::StringChars, 0, 0, 0, object, type_index});
+        }
         return;
       }
       case Kind::Container:
@@ -650,6 +660,9 @@ class Encoder {
       case RegionKind::Owned:
         std::snprintf(buffer, size, "a unique_ptr's %s", type);
         return;
+      case RegionKind::StringChars:
+        std::snprintf(buffer, size, "the characters (%s) of a string", type);
+        return;
     }
   }
 
@@ -713,6 +726,20 @@ class Encoder {
         s_.steps.pop_back();
         return false;
       }
+      case Kind::String: {
+        // A character: the step is its index, up to the terminator's position.
+        const auto* ops = static_cast<const StringOps*>(type.ops);
+        const auto* object = reinterpret_cast<const void*>(base);
+        const auto start = reinterpret_cast<std::uintptr_t>(ops->data(object));
+        const std::uint32_t width = size_of(type.element);
+        if (target_type != type.element || target < start || (target - start) % width != 0) {
+          return false;
+        }
+        const std::uint64_t index = (target - start) / width;
+        if (index > ops->size(object) || index > 0xFFFFFFFFu) return false;
+        s_.steps.push_back(static_cast<std::uint32_t>(index));
+        return true;
+      }
       case Kind::Variant: {
         const auto* ops = static_cast<const VariantOps*>(type.ops);
         const auto* object = reinterpret_cast<const void*>(base);
@@ -749,6 +776,13 @@ class Encoder {
         base = Base{1, region.object, region.first_index + offset};
         return descend(region.type, region.start + std::uintptr_t{offset} * region.stride, address,
                        type);
+      }
+      case RegionKind::StringChars: {
+        if (depth > kMaxDepth) return false;
+        const std::uint32_t owner = find_region(region.owner_slot);
+        return owner != kNoRegion &&
+               resolve(owner, region.owner_slot, region.owner_type, base, depth + 1) &&
+               descend(region.owner_type, region.owner_slot, address, type);
       }
       case RegionKind::Owned: {
         if (depth > kMaxDepth) return false;

@@ -247,6 +247,7 @@ class Planner {
       }
       case Kind::String: {
         n.action = Action::String;
+        n.element = node(wt.element, rt.element);  // the characters, for pointers into them
         const std::uint32_t from = w_.types[wt.element].size, to = r_.types[rt.element].size;
         if (from != to) {
           // Re-encoded per value; a value that is not valid in its encoding is rejected.

@@ -119,7 +119,7 @@ struct HeapRecord {
 };
 
 struct MappedStep {
-  enum class Kind : std::uint8_t { Offset, Optional, Unique, Variant } kind;
+  enum class Kind : std::uint8_t { Offset, Optional, Unique, Variant, Character } kind;
   std::uint32_t holder_type;  // reader type whose ops apply
   std::uint64_t value;
 };
@@ -846,6 +846,9 @@ class Restorer {
             if (step >= t.alternative_count) return corrupt("reference %u: alternative %u of %s", i, step, t.name).ok();
             type = t.alternatives[step];
             break;
+          case Kind::String:  // a character index, bounded by the restored string's length
+            type = t.element;
+            break;
           default:
             return corrupt("reference %u: a step into %s", i, t.name).ok();
         }
@@ -1035,6 +1038,17 @@ class Restorer {
           node = node->alternatives[step];
           break;
         }
+        case Action::String:
+          // The same character of the restored string: its index holds only while the
+          // characters are copied, not re-encoded.
+          if (w_.types[w_.types[node->writer].element].size !=
+              r_.types[r_.types[node->reader].element].size) {
+            ref.why = "target is a character of a string re-encoded in this build";
+            return;
+          }
+          mapped_.push_back({MappedStep::Kind::Character, node->reader, step});
+          node = node->element;
+          break;
         default:
           ref.why = "target's enclosing type changed";
           return;
@@ -1165,6 +1179,16 @@ class Restorer {
           const auto* variant = static_cast<const VariantOps*>(ops);
           at = variant->index(at) == step.value
                    ? static_cast<std::uint8_t*>(const_cast<void*>(variant->get(at)))
+                   : nullptr;
+          break;
+        }
+        case MappedStep::Kind::Character: {
+          // Into the restored string's own storage, up to its terminator.
+          const auto* string = static_cast<const StringOps*>(ops);
+          const std::uint32_t width = r_.types[r_.types[step.holder_type].element].size;
+          at = step.value <= string->size(at)
+                   ? static_cast<std::uint8_t*>(const_cast<void*>(string->data(at))) +
+                         step.value * width
                    : nullptr;
           break;
         }

@@ -201,8 +201,8 @@ class Walker {
           text += '.';
           text += t.fields[step].name;
           type = t.fields[step].type;
-        } else if (t.kind == Kind::Array && step < t.count) {
-          std::snprintf(buffer, sizeof buffer, "[%u]", step);
+        } else if ((t.kind == Kind::Array && step < t.count) || t.kind == Kind::String) {
+          std::snprintf(buffer, sizeof buffer, "[%u]", step);  // an element or a character
           text += buffer;
           type = t.element;
         } else if ((t.kind == Kind::Optional || t.kind == Kind::UniquePtr) && step == 0) {
