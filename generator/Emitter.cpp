@@ -111,18 +111,7 @@ const char *opsTemplate(OpsKind Ops) {
   return nullptr;
 }
 
-/// Lifecycles are only emitted for types the home TU can name and construct
-/// with `new T()`.
-bool hasLifecycle(const TypeModel &Type) {
-  return Type.NeedsLifecycle && !Type.Spelling.empty() &&
-         Type.Kind != symcr::Kind::Union && Type.Kind != symcr::Kind::Array;
-}
 
-/// The type has a user's symcr_validate and a C++ home TU to call it from.
-bool hasValidate(const ProgramModel &Program, const TypeModel &Type) {
-  return Type.HasValidate && !Type.Spelling.empty() &&
-         !Program.TranslationUnits[Type.HomeTU].IsC;
-}
 
 /// The type has a user's symcr_migrate and a C++ home TU to call it from.
 bool hasMigrate(const ProgramModel &Program, const TypeModel &Type) {
@@ -151,9 +140,9 @@ std::string emitSchemaSource(const ProgramModel &Program) {
     if (T.Ops != OpsKind::None)
       OS << "extern const symcr::" << opsTableType(T.Ops) << " ops_" << I
          << ";\n";
-    if (hasLifecycle(T) && !Program.TranslationUnits[T.HomeTU].IsC)
+    if (T.hasLifecycle() && !Program.TranslationUnits[T.HomeTU].IsC)
       OS << "extern const symcr::Lifecycle lifecycle_" << I << ";\n";
-    if (hasValidate(Program, T))
+    if (T.hasValidate(Program))
       OS << "bool validate_" << I << "(const void* object);\n";
     if (hasMigrate(Program, T))
       OS << "void migrate_" << I
@@ -163,7 +152,7 @@ std::string emitSchemaSource(const ProgramModel &Program) {
   // C types' lifecycles are C functions in their C wrappers (calloc/free).
   for (std::size_t I = 0; I < Program.Types.size(); ++I) {
     const TypeModel &T = Program.Types[I];
-    if (hasLifecycle(T) && Program.TranslationUnits[T.HomeTU].IsC)
+    if (T.hasLifecycle() && Program.TranslationUnits[T.HomeTU].IsC)
       OS << "extern \"C\" const symcr::Lifecycle symcr_gen_c_lifecycle_" << I
          << ";\n";
   }
@@ -240,12 +229,12 @@ std::string emitSchemaSource(const ProgramModel &Program) {
          << static_cast<unsigned>(T.ContainerKind) << ", "
          << (T.Ops == OpsKind::None ? "nullptr" : "&symcr_gen::ops_" + Index)
          << ", "
-         << (!hasLifecycle(T) ? std::string("nullptr")
+         << (!T.hasLifecycle() ? std::string("nullptr")
              : Program.TranslationUnits[T.HomeTU].IsC
                  ? "&symcr_gen_c_lifecycle_" + Index
                  : "&symcr_gen::lifecycle_" + Index)
          << ", "
-         << (hasValidate(Program, T) ? "&symcr_gen::validate_" + Index
+         << (T.hasValidate(Program) ? "&symcr_gen::validate_" + Index
                                      : std::string("nullptr"))
          << ", " << TypeRenamed[I] << ", "
          << (hasMigrate(Program, T) ? "&symcr_gen::migrate_" + Index
@@ -304,7 +293,7 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
     bool LifecycleDeclared = false;
     for (std::uint32_t I : Home) {
       const TypeModel &T = Program.Types[I];
-      if (!hasLifecycle(T))
+      if (!T.hasLifecycle())
         continue;
       if (!LifecycleDeclared)
         OS << "struct symcr_gen_lifecycle {\n  void* (*create)(void);\n"
@@ -401,13 +390,13 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
          << "const symcr::" << opsTableType(T.Ops) << " ops_" << I
          << " = symcr::ops::" << opsTemplate(T.Ops) << "<" << Type
          << ">::table;\n";
-    if (hasLifecycle(T))
+    if (T.hasLifecycle())
       OS << "extern const symcr::Lifecycle lifecycle_" << I << ";\n"
          << "const symcr::Lifecycle lifecycle_" << I
          << " = symcr::ops::lifecycle<" << Type << ">::table;\n";
     // Unqualified: argument-dependent lookup finds a hook in the type's
     // namespace (or a hidden friend), ordinary lookup a global one.
-    if (hasValidate(Program, T))
+    if (T.hasValidate(Program))
       OS << "bool validate_" << I << "(const void* object);\n"
          << "bool validate_" << I << "(const void* object) {\n"
          << "  return symcr_validate(*static_cast<const " << Type

@@ -71,6 +71,8 @@ struct FieldModel {
   std::string OffsetCheckMember;
 };
 
+struct ProgramModel;
+
 struct TypeModel {
   std::string Name; ///< canonical name (docs/format.md §2)
   symcr::Kind Kind = symcr::Kind::Struct;
@@ -84,6 +86,8 @@ struct TypeModel {
   std::vector<std::uint32_t> Alternatives;
   std::uint8_t ContainerKind = 0;
   OpsKind Ops = OpsKind::None;
+  /// Restore may have to create the type (a pointee, a container element): the wrapper emits
+  /// a Lifecycle when hasLifecycle(), and the type is flagged kTypeCreatable then.
   bool NeedsLifecycle = false;
   /// A C++ (or C) spelling usable in the home TU, empty if the type cannot be
   /// named there (unnamed or function-local types).
@@ -98,6 +102,15 @@ struct TypeModel {
   bool HasMigrate = false;
   /// Index of the TU whose wrapper defines this type's ops and layout checks.
   unsigned HomeTU = 0;
+
+  /// A Lifecycle is emitted only for types the home TU can name and construct
+  /// with `new T()` (or calloc in C).
+  bool hasLifecycle() const {
+    return NeedsLifecycle && !Spelling.empty() && Kind != symcr::Kind::Union &&
+           Kind != symcr::Kind::Array;
+  }
+  /// The type has a user's symcr_validate and a C++ home TU to call it from.
+  bool hasValidate(const ProgramModel &Program) const;
   /// Describes the layout and selection; two TUs producing the same name with a
   /// different fingerprint means inconsistent annotations or an ODR problem.
   std::string Fingerprint;
@@ -143,6 +156,10 @@ struct ProgramModel {
   std::vector<RootReport> Reports;
   std::vector<std::string> Dependencies; ///< every file read (for the depfile)
 };
+
+inline bool TypeModel::hasValidate(const ProgramModel &Program) const {
+  return HasValidate && !Spelling.empty() && !Program.TranslationUnits[HomeTU].IsC;
+}
 
 } // namespace symcr_gen
 

@@ -1865,6 +1865,14 @@ void SchemaBuilder::addTranslationUnit(
 }
 
 void SchemaBuilder::finish() {
+  // Recorded in the schema (and its file) so that a plan without the program's code knows
+  // which heap objects the build can rebuild.
+  for (TypeModel &Type : Program.Types) {
+    if (Type.hasLifecycle())
+      Type.Flags |= symcr::kTypeCreatable;
+    if (Type.hasValidate(Program))
+      Type.Flags |= symcr::kTypeValidated;
+  }
   for (std::size_t I = 0; I < Sidecar.size(); ++I)
     for (std::size_t A = 0; A < Sidecar[I].Arguments.size(); ++A) {
       if (SidecarMatched[I][A] ||

@@ -561,17 +561,34 @@ class Planner {
 
   // A root's or field's entry also says that its value is migrated.
   void note_migration(const PlanNode* n, Decision& decision, std::string& detail) const {
+    note_unforeseen_validation(n, detail);
     const PlanNode* migrated = migration_of(n);
     if (!migrated) return;
     if (decision == Decision::Restored) decision = Decision::Converted;
     detail += (detail.empty() ? "" : "; ") + migrated_by(*migrated);
   }
 
-  // An element (or pointee, or variant alternative) has no entry of its own unless migrated.
+  // An element (or pointee, or variant alternative) has no entry of its own unless migrated,
+  // or validated where the verdict cannot be known.
   void add_migration_entry(const PlanNode* n, const std::string& path) {
+    std::string detail;
+    note_unforeseen_validation(n, detail);
     if (const PlanNode* migrated = migration_of(n)) {
-      add(path, Decision::Converted, migrated_by(*migrated), false);
+      add(path, Decision::Converted, detail + (detail.empty() ? "" : "; ") + migrated_by(*migrated),
+          false);
+    } else if (!detail.empty()) {
+      add(path, Decision::Restored, detail, false);
     }
+  }
+
+  // A build known only by its schema file (the CLI's plan) has validators it cannot run: each
+  // value they check says so, rather than being promised.
+  void note_unforeseen_validation(const PlanNode* n, std::string& detail) const {
+    if (!n || n->reader == kNoType || n->action == Action::Reject) return;
+    const TypeInfo& type = r_.types[n->reader];
+    if (!(type.flags & kTypeValidated) || type.validate) return;
+    detail += (detail.empty() ? "" : "; ") + std::string("checked by symcr_validate(") + type.name +
+              ") when restored: its verdict cannot be foreseen here";
   }
 
   // ---- writer minimum sizes (bounds container counts in hostile payloads) ---------------

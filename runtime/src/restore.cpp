@@ -143,14 +143,17 @@ struct AppliedSlot {
 
 class Restorer {
  public:
+  // `dry_run`: a plan of a build known only by its schema (no code): types it can create are
+  // known by their kTypeCreatable flag instead of a Lifecycle; nothing is ever applied.
   Restorer(const Plan& plan, const std::uint8_t* payload, std::size_t size,
-           Report& report)
+           Report& report, bool dry_run)
       : plan_(plan),
         w_(*plan.writer),
         r_(*plan.reader),
         payload_(payload),
         size_(size),
-        report_(report) {}
+        report_(report),
+        dry_run_(dry_run) {}
 
   Status check() {
     mode_ = Mode::Check;
@@ -913,7 +916,9 @@ class Restorer {
       const PlanNode* node = heap_[h].node;
       if (node->reader == kNoType || node->action == Action::Reject) continue;
       const TypeInfo& type = r_.types[node->reader];
-      creatable[h] = claimed_[h] || (heap_[h].owner == 0 && type.lifecycle) ||
+      const bool can_create =
+          type.lifecycle != nullptr || (dry_run_ && (type.flags & kTypeCreatable) != 0);
+      creatable[h] = claimed_[h] || (heap_[h].owner == 0 && can_create) ||
                      (heap_[h].owner == 1 && plan_.shared_types[node->reader] != kNoType);
     }
     // Every heap object was discovered from a root when saved: if every root, heap object and
@@ -1233,6 +1238,7 @@ class Restorer {
   const std::uint8_t* payload_;
   std::size_t size_;
   Report& report_;
+  const bool dry_run_;
   Status error_;
 
   Mode mode_ = Mode::Check;
@@ -1329,7 +1335,7 @@ Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::u
     return report;
   }
   std::size_t value_rejections = 0;
-  Restorer restorer(*plan, payload, size, report);
+  Restorer restorer(*plan, payload, size, report, /*dry_run=*/!apply);
   if (!plan_only) {
     status = restorer.check();
     if (!status.ok()) {

@@ -51,6 +51,11 @@ enum : std::uint32_t {
   kTypeShallow = 1u << 1,     // a shallow root's restricted view of its class (§3)
   kTypeMigrated = 1u << 2,    // the build has a symcr_migrate hook for the type; recorded in
                               // schema files so that `symcr plan` reports the migration
+  kTypeCreatable = 1u << 3,   // the build has a Lifecycle for the type (restore can create it
+                              // on the heap); recorded in schema files so that `symcr plan`
+                              // foresees heap objects rebuilt through raw pointers
+  kTypeValidated = 1u << 4,   // the build has a symcr_validate for the type; recorded in schema
+                              // files so that `symcr plan` says it cannot foresee the verdict
 };
 
 // FieldInfo::flags
