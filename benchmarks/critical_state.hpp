@@ -181,7 +181,7 @@ inline const symcr::RootInfo roots[] = {
     {"mission", kMission, &mission, 0, nullptr},
     {"telemetry", kTelemetry, &telemetry, 0, nullptr},
 };
-inline const symcr::Schema schema{types, kTypeCount, roots, 4};
+inline const symcr::Schema schema{types, kTypeCount, roots, 4, nullptr};
 
 // Wire bytes of the state's values, without padding (docs/format.md §3): what a raw write of
 // the same information costs.
@@ -391,7 +391,7 @@ inline const symcr::RootInfo roots[] = {
     {"mission", kMission, &mission, 0, nullptr},
     {"telemetry", kTelemetry, &telemetry, 0, nullptr},
 };
-inline const symcr::Schema schema{types, kTypeCount, roots, 4};
+inline const symcr::Schema schema{types, kTypeCount, roots, 4, nullptr};
 
 }  // namespace v1
 }  // namespace critical

@@ -81,13 +81,13 @@ PodWorld& pod_world(std::size_t bytes) {
   world->array_types[1] = array(world->array_name.c_str(), 0, count,
                                 static_cast<std::uint32_t>(bytes), alignof(double));
   world->array_root = {"samples", 1, world->storage.data(), 0, nullptr};
-  world->array_schema = {world->array_types, 2, &world->array_root, 1};
+  world->array_schema = {world->array_types, 2, &world->array_root, 1, nullptr};
   world->vector_types[0] = scalar("float64", Kind::Float, 8);
   world->vector_types[1] =
       holder("std::vector<float64>", Kind::Container, sizeof(std::vector<double>),
              alignof(std::vector<double>), 0, &symcr::ops::container<std::vector<double>>::table);
   world->vector_root = {"samples", 1, &world->vector, 0, nullptr};
-  world->vector_schema = {world->vector_types, 2, &world->vector_root, 1};
+  world->vector_schema = {world->vector_types, 2, &world->vector_root, 1, nullptr};
   return *world;
 }
 
@@ -178,7 +178,7 @@ const symcr::Schema& graph_schema() {
       record("Graph", sizeof(Graph), alignof(Graph), graph_fields, 2),
   };
   static const symcr::RootInfo roots[] = {{"graph", 4, &graph, 0, nullptr}};
-  static const symcr::Schema schema{types, 5, roots, 1};
+  static const symcr::Schema schema{types, 5, roots, 1, nullptr};
   return schema;
 }
 
@@ -289,7 +289,7 @@ const symcr::Schema& map_schema() {
              &symcr::ops::container<Map>::table, symcr::ContainerKind::Map),
   };
   static const symcr::RootInfo roots[] = {{"table", 3, &table, 0, nullptr}};
-  static const symcr::Schema schema{types, 4, roots, 1};
+  static const symcr::Schema schema{types, 4, roots, 1, nullptr};
   return schema;
 }
 

@@ -35,6 +35,7 @@ struct PlanArgs {
   std::string schema;                  // the target build's schema file
   bool strict = false;
   bool json = false;
+  bool accept_other_program = false;  // plan a checkpoint of another program all the same
 };
 int run_plan(const PlanArgs& args);
 

@@ -48,6 +48,8 @@ std::vector<HeaderField> describe_header(const detail::RecordHeader& h, const Sc
   add_number("payload_size", h.payload_size);
   add_number("record_size", std::uint64_t{h.header_size} + h.schema_size + h.payload_size);
   fields.push_back({"schema_hash", hex64(h.schema_hash), JsonScalar::of(hex64(h.schema_hash))});
+  fields.push_back({"program_id", h.program_id ? hex32(h.program_id) : "none (anonymous)",
+                    JsonScalar::of(h.program_id ? hex32(h.program_id) : "")});
   std::string where = schema_origin;
   if (schema) {
     where += ", " + std::to_string(schema->type_count) + " types, " +

@@ -66,6 +66,12 @@ cl::opt<bool> plan_strict("strict",
                                    "(exit 1)"),
                           cl::sub(plan_command), cl::cat(symcr_category));
 
+cl::opt<bool> plan_accept_other_program(
+    "accept-other-program",
+    cl::desc("Plan a checkpoint written by another program (another program name) instead of "
+             "refusing it, as RestoreOptions::accept_other_program does"),
+    cl::sub(plan_command), cl::cat(symcr_category));
+
 std::optional<std::uint32_t> given(const cl::opt<unsigned>& option) {
   if (option.getNumOccurrences() == 0) return std::nullopt;
   return static_cast<std::uint32_t>(option);
@@ -83,7 +89,8 @@ int run_subcommand() {
   }
   if (plan_command) {
     return symcr::cli::run_plan(
-        {plan_checkpoint, given(slot), plan_schema, plan_strict, json_output});
+        {plan_checkpoint, given(slot), plan_schema, plan_strict, json_output,
+         plan_accept_other_program});
   }
   llvm::errs() << "symcr: a subcommand is needed: inspect, verify, diff or plan (see "
                   "'symcr --help')\n";

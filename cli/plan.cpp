@@ -11,6 +11,7 @@
 #include "exit_codes.hpp"
 #include "header_fields.hpp"
 #include "json_writer.hpp"
+#include "record.hpp"
 #include "schema_file.hpp"
 #include "terminal.hpp"
 
@@ -46,12 +47,22 @@ int run_plan(const PlanArgs& args) {
     return kExitError;
   }
   detail::ParsedSchema build;
-  status = detail::read_schema_file(resolve_links(args.schema).c_str(), build);
+  std::uint32_t build_program_id = 0;
+  status = detail::read_schema_file(resolve_links(args.schema).c_str(), build, &build_program_id);
   if (!status.ok()) {
     print_error(status.message());
     return kExitError;
   }
-  const Report report = dry_run_restore(checkpoint, build.schema(), args.strict);
+  Report report;
+  const Status program =
+      detail::check_program(checkpoint.record.header.program_id, build_program_id,
+                            "the build of the schema file", args.accept_other_program);
+  if (program.ok()) {
+    report = dry_run_restore(checkpoint, build.schema(), args.strict);
+  } else {
+    report.set_status(program);
+    report.set_sequence(checkpoint.record.header.sequence);
+  }
   const std::size_t rejected = report.count(Decision::Rejected);
   std::size_t lossy = 0;
   for (const ReportEntry& entry : report.entries()) lossy += entry.lossy;

@@ -1,4 +1,4 @@
-# symcr_add_checkpointing(<target> [ANNOTATIONS <file>...])
+# symcr_add_checkpointing(<target> [ANNOTATIONS <file>...] [PROGRAM <name>])
 #
 # Runs symcr-gen over <target>'s C and C++ sources as a build step and links the runtime.
 # Every source is compiled through a generated wrapper that #includes it and appends what
@@ -26,12 +26,16 @@
 # keeps only the runtime functions it reaches. Setting the variable false turns it off. The
 # generated tables stay: they are reached from symcr_program_schema, which the runtime calls.
 #
+# PROGRAM names the program in its checkpoints (default: the calling project's PROJECT_NAME), so
+# that a restore refuses a checkpoint of another program whose roots happen to have the same
+# names. Builds of one program (v0 and its patched v1) must share the name.
+#
 # `#pragma symcr` lines are unknown to g++, which warns under -Wall (-Wunknown-pragmas): the
 # function adds -Wno-unknown-pragmas to the annotated target (only there).
 include_guard(GLOBAL)
 
 function(symcr_add_checkpointing target)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "ANNOTATIONS")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "PROGRAM" "ANNOTATIONS")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "symcr_add_checkpointing: unknown arguments ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -89,6 +93,10 @@ function(symcr_add_checkpointing target)
     message(FATAL_ERROR "symcr_add_checkpointing: '${target}' has no C or C++ sources")
   endif()
 
+  set(program "${arg_PROGRAM}")
+  if(NOT program)
+    set(program "${PROJECT_NAME}")
+  endif()
   set(schema "${out_dir}/symcr_schema.cpp")
   set(schema_file "${out_dir}/${target}.symcr-schema")
   set(annotation_args)
@@ -98,7 +106,7 @@ function(symcr_add_checkpointing target)
   add_custom_command(
     OUTPUT "${schema}" ${wrappers} "${schema_file}"
     COMMAND "${generator}" -p "${CMAKE_BINARY_DIR}" --out-dir "${out_dir}"
-            --schema-file "${schema_file}"
+            --schema-file "${schema_file}" --program "${program}"
             --depfile "${out_dir}/symcr-gen.d" --depfile-target "${schema}"
             --report-file "${out_dir}/report.txt" ${annotation_args} ${inputs}
     DEPENDS ${generator_dependency} ${inputs} ${annotations}

@@ -64,7 +64,7 @@ class BuiltReader {
     for (std::uint32_t r = 0; r < parsed.root_count; ++r) {
       roots_[r].address = reinterpret_cast<std::uint8_t*>(arena_.data()) + offsets[r];
     }
-    schema_ = symcr::Schema{types_.data(), n, roots_.data(), parsed.root_count};
+    schema_ = symcr::Schema{types_.data(), n, roots_.data(), parsed.root_count, nullptr};
     return true;
   }
   const symcr::Schema& schema() const { return schema_; }

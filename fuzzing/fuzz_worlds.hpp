@@ -69,7 +69,8 @@ const symcr::Schema& with_tracked_lifecycles(const symcr::Schema& original) {
             : (void)0),
        ...);
     }
-    schema = symcr::Schema{types.data(), original.type_count, original.roots, original.root_count};
+    schema = symcr::Schema{types.data(), original.type_count, original.roots, original.root_count,
+                           original.program};
   }
   return schema;
 }

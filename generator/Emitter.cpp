@@ -265,7 +265,9 @@ std::string emitSchemaSource(const ProgramModel &Program) {
      << (Program.Types.empty() ? "nullptr" : "types") << ", "
      << Program.Types.size() << "u, "
      << (Program.Roots.empty() ? "nullptr" : "roots") << ", "
-     << Program.Roots.size() << "u};\n  return &schema;\n}\n";
+     << Program.Roots.size() << "u, "
+     << (Program.Name.empty() ? std::string("nullptr") : quoted(Program.Name))
+     << "};\n  return &schema;\n}\n";
   return OS.str();
 }
 

@@ -148,6 +148,8 @@ struct RootReport {
 };
 
 struct ProgramModel {
+  /// The program's name (--program): its identity in checkpoint headers.
+  std::string Name;
   std::vector<TypeModel> Types;
   std::map<std::string, std::uint32_t>
       TypeIndex; ///< by canonical name (+ shallow flag)

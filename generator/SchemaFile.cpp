@@ -75,7 +75,8 @@ public:
     Schema = symcr::Schema{Types.empty() ? nullptr : Types.data(),
                            static_cast<std::uint32_t>(Types.size()),
                            Roots.empty() ? nullptr : Roots.data(),
-                           static_cast<std::uint32_t>(Roots.size())};
+                           static_cast<std::uint32_t>(Roots.size()),
+                           Program.Name.empty() ? nullptr : Program.Name.c_str()};
   }
 
   const symcr::Schema &schema() const { return Schema; }

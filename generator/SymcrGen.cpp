@@ -64,6 +64,11 @@ static llvm::cl::opt<std::string> SchemaFile(
     "schema-file",
     llvm::cl::desc("Write the build's schema file (for `symcr plan --schema`)"),
     llvm::cl::value_desc("file"), llvm::cl::cat(Category));
+static llvm::cl::opt<std::string> ProgramName(
+    "program",
+    llvm::cl::desc("The program's name, written into its checkpoints: a restore refuses a "
+                   "checkpoint of another program (default: none, accepted by any)"),
+    llvm::cl::value_desc("name"), llvm::cl::cat(Category));
 static llvm::cl::opt<std::string>
     Depfile("depfile", llvm::cl::desc("Write a Makefile-style depfile"),
             llvm::cl::value_desc("file"), llvm::cl::cat(Category));
@@ -285,6 +290,7 @@ int main(int argc, const char **argv) {
     return 1;
 
   ProgramModel Program;
+  Program.Name = ProgramName;
   std::map<std::string, std::string> SourceToWrapper;
   std::vector<std::string> Sources;
   for (const std::string &Path : Parser->getSourcePathList()) {

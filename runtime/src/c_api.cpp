@@ -42,9 +42,10 @@ int hand_over(symcr::Report&& report, symcr_report** out) {
   return code;
 }
 
-symcr::RestoreOptions restore_options(int strict) {
+symcr::RestoreOptions restore_options(int flags) {
   symcr::RestoreOptions options;
-  options.strict = strict != 0;
+  options.strict = (flags & SYMCR_RESTORE_STRICT) != 0;
+  options.accept_other_program = (flags & SYMCR_RESTORE_ACCEPT_OTHER_PROGRAM) != 0;
   return options;
 }
 
@@ -70,18 +71,18 @@ int symcr_checkpoint_with(const symcr_schema* schema, const char* path, int fdat
                                   : symcr::checkpoint(path, options));
 }
 
-int symcr_restore(const char* path, int strict, symcr_report** report) {
-  return symcr_restore_with(nullptr, path, strict, report);
+int symcr_restore(const char* path, int flags, symcr_report** report) {
+  return symcr_restore_with(nullptr, path, flags, report);
 }
 
-int symcr_restore_with(const symcr_schema* schema, const char* path, int strict,
+int symcr_restore_with(const symcr_schema* schema, const char* path, int flags,
                        symcr_report** report) {
   symcr::Report result;
   if (path == nullptr) {
     result.set_status(symcr::Status(symcr::Error::Io, "no path given"));
   } else {
-    result = schema != nullptr ? symcr::restore(*schema, path, restore_options(strict))
-                               : symcr::restore(path, restore_options(strict));
+    result = schema != nullptr ? symcr::restore(*schema, path, restore_options(flags))
+                               : symcr::restore(path, restore_options(flags));
   }
   return hand_over(std::move(result), report);
 }
@@ -160,12 +161,12 @@ int symcr_store_save(symcr_store* store) {
   return record(store->store.save());
 }
 
-int symcr_store_restore_latest(symcr_store* store, int strict, symcr_report** report) {
+int symcr_store_restore_latest(symcr_store* store, int flags, symcr_report** report) {
   symcr::Report result;
   if (store == nullptr) {
     result.set_status(symcr::Status(symcr::Error::Io, "no store"));
   } else {
-    result = store->store.restore_latest(restore_options(strict));
+    result = store->store.restore_latest(restore_options(flags));
   }
   return hand_over(std::move(result), report);
 }

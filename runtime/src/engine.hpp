@@ -38,7 +38,11 @@ __attribute__((format(printf, 2, 0), noinline, cold)) const Status& set_corrupt_
 struct SchemaBlob {
   std::vector<std::uint8_t> bytes;
   std::uint64_t hash = 0;
+  std::uint32_t program_id = 0;  // program_id_of(schema.program)
 };
+
+// A program's identity in record headers: FNV-1a 32 of its name, never 0; 0 for no name.
+std::uint32_t program_id_of(const char* program);
 const SchemaBlob& schema_blob(const Schema& schema);
 
 std::uint64_t fnv1a64(const std::uint8_t* data, std::size_t size);

@@ -31,7 +31,7 @@ void store_header(const RecordHeader& h, std::uint8_t* p) {
   le::store32(p + 40, h.schema_size);
   le::store32(p + 44, h.payload_size);
   le::store32(p + 48, h.checksum);
-  le::store32(p + 52, 0);  // reserved
+  le::store32(p + 52, h.program_id);
 }
 
 // CRC of the record with the checksum field read as zero, without modifying the bytes.
@@ -83,6 +83,7 @@ Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t seq
   header.schema_hash = blob.hash;
   header.schema_size = static_cast<std::uint32_t>(schema_size);
   header.payload_size = static_cast<std::uint32_t>(payload_size);
+  header.program_id = blob.program_id;
   store_header(header, out.data());
   le::store32(out.data() + kRecordChecksumOffset, record_checksum(out.data(), out.size()));
   return Status();
@@ -110,6 +111,7 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
   h.schema_size = le::load32(data + 40);
   h.payload_size = le::load32(data + 44);
   h.checksum = le::load32(data + 48);
+  h.program_id = le::load32(data + 52);
 
   // The version comes before everything else: a newer version may lay out the rest anew.
   if (h.format_version > kRecordFormatVersion) {
@@ -153,8 +155,28 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
   return Status();
 }
 
+Status check_program(std::uint32_t writer_program_id, std::uint32_t reader_program_id,
+                     const char* reader_name, bool accept_other_program) {
+  if (writer_program_id == 0 || reader_program_id == 0 ||
+      writer_program_id == reader_program_id || accept_other_program) {
+    return Status();
+  }
+  return Status(Error::Incompatible,
+                "written by another program (program id %08x; this is '%s', id %08x): nothing "
+                "restored (RestoreOptions::accept_other_program restores it anyway)",
+                writer_program_id, reader_name ? reader_name : "?", reader_program_id);
+}
+
 Report restore_record(const RecordView& record, const Schema& writer, std::uint64_t writer_hash,
                       const Schema& reader, const RestoreOptions& options) {
+  const Status program = check_program(record.header.program_id, schema_blob(reader).program_id,
+                                       reader.program, options.accept_other_program);
+  if (!program.ok()) {
+    Report report;
+    report.set_status(program);
+    report.set_sequence(record.header.sequence);
+    return report;
+  }
   Report report = restore_payload(writer, writer_hash, record.payload, record.payload_size,
                                   reader, options);
   report.set_sequence(record.header.sequence);

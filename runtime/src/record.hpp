@@ -30,6 +30,7 @@ struct RecordHeader {
   std::uint32_t schema_size = 0;
   std::uint32_t payload_size = 0;
   std::uint32_t checksum = 0;
+  std::uint32_t program_id = 0;  // the writing program (program_id_of), 0 when anonymous
 };
 
 // A record validated in place: views into the caller's bytes, valid while they are.
@@ -55,8 +56,14 @@ struct SchemaBlob;
 Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
                     const SchemaBlob* known = nullptr);
 
-// Restores a record validated by parse_record whose writer schema is `writer`. The report
-// carries the record's sequence.
+// Incompatible when a checkpoint of program `writer_program_id` is not to be restored into
+// program `reader_program_id` (named `reader_name`): both are named, they differ, and it is
+// not accepted anyway.
+Status check_program(std::uint32_t writer_program_id, std::uint32_t reader_program_id,
+                     const char* reader_name, bool accept_other_program);
+
+// Restores a record validated by parse_record whose writer schema is `writer`, unless it is
+// another program's (check_program). The report carries the record's sequence.
 Report restore_record(const RecordView& record, const Schema& writer, std::uint64_t writer_hash,
                       const Schema& reader, const RestoreOptions& options);
 

@@ -52,6 +52,7 @@ const SchemaCacheEntry& schema_cache_entry(const Schema& schema) {
   auto* entry = new SchemaCacheEntry();  // lives as long as the process, like the schema
   serialise_schema(schema, entry->blob.bytes);
   entry->blob.hash = fnv1a64(entry->blob.bytes.data(), entry->blob.bytes.size());
+  entry->blob.program_id = program_id_of(schema.program);
   entry->facts = compute_schema_facts(schema);
   cache->push_back(CachedSchema{key, entry});
   last = cache->back();
@@ -59,5 +60,15 @@ const SchemaCacheEntry& schema_cache_entry(const Schema& schema) {
 }
 
 const SchemaBlob& schema_blob(const Schema& schema) { return schema_cache_entry(schema).blob; }
+
+std::uint32_t program_id_of(const char* program) {
+  if (program == nullptr || *program == '\0') return 0;
+  std::uint32_t hash = 2166136261u;
+  for (const char* c = program; *c; ++c) {
+    hash ^= static_cast<std::uint8_t>(*c);
+    hash *= 16777619u;
+  }
+  return hash == 0 ? 1 : hash;
+}
 
 }  // namespace symcr::detail

@@ -44,16 +44,18 @@ Status write_schema_file(const Schema& schema, const char* path) {
   le::store32(h + 40, static_cast<std::uint32_t>(blob.bytes.size()));
   le::store32(h + 44, 0);  // payload_size: a schema file carries no values
   le::store32(h + 48, 0);  // checksum, computed over the record with this field zero
-  le::store32(h + 52, 0);
+  le::store32(h + 52, blob.program_id);
   for (std::size_t i = 0; i < blob.bytes.size(); ++i) h[kRecordHeaderSize + i] = blob.bytes[i];
   le::store32(h + kRecordChecksumOffset, crc32c(record.data(), record.size()));
   return write_file_atomically(path, record.data(), record.size(), Durability::PageCache);
 }
 
-Status parse_schema_file(const std::uint8_t* data, std::size_t size, ParsedSchema& out) {
+Status parse_schema_file(const std::uint8_t* data, std::size_t size, ParsedSchema& out,
+                         std::uint32_t* program_id) {
   RecordView record;
   Status status = parse_record(data, size, record);
   if (!status.ok()) return status;
+  if (program_id) *program_id = record.header.program_id;
   if (record.record_size != size) {
     return Status(Error::Corrupt, "%zu unexpected bytes after the %zu-byte record",
                   size - record.record_size, record.record_size);
@@ -69,11 +71,11 @@ Status parse_schema_file(const std::uint8_t* data, std::size_t size, ParsedSchem
   return parse_schema(record.schema, record.header.schema_size, out);
 }
 
-Status read_schema_file(const char* path, ParsedSchema& out) {
+Status read_schema_file(const char* path, ParsedSchema& out, std::uint32_t* program_id) {
   std::vector<std::uint8_t> bytes;
   Status status = read_regular_file(path, kMaxSchemaFileSize, bytes);
   if (!status.ok()) return status;
-  status = parse_schema_file(bytes.data(), bytes.size(), out);
+  status = parse_schema_file(bytes.data(), bytes.size(), out, program_id);
   if (!status.ok()) return Status(status.error(), "%s: %s", path, status.message());
   return Status();
 }

@@ -17,11 +17,13 @@ namespace symcr::detail {
 Status write_schema_file(const Schema& schema, const char* path);
 
 // Parses a schema file's bytes: a valid record whose schema is inline and whose payload is
-// empty (a checkpoint is refused with a message saying so).
-Status parse_schema_file(const std::uint8_t* data, std::size_t size, ParsedSchema& out);
+// empty (a checkpoint is refused with a message saying so). `program_id`, when given, receives
+// the build's program identity from the record header.
+Status parse_schema_file(const std::uint8_t* data, std::size_t size, ParsedSchema& out,
+                         std::uint32_t* program_id = nullptr);
 
 // Reads and parses the schema file at `path`.
-Status read_schema_file(const char* path, ParsedSchema& out);
+Status read_schema_file(const char* path, ParsedSchema& out, std::uint32_t* program_id = nullptr);
 
 }  // namespace symcr::detail
 

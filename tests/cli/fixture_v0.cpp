@@ -97,7 +97,7 @@ const symcr::RootInfo roots[] = {
     {"copter", kCopter, &copter, 0, nullptr},
     {"telemetry", kTelemetry, &telemetry, 0, nullptr},
 };
-const symcr::Schema v0_schema{types, kTypeCount, roots, 2};
+const symcr::Schema v0_schema{types, kTypeCount, roots, 2, nullptr};
 
 }  // namespace
 

@@ -57,7 +57,7 @@ const symcr::Schema& old_schema() {
       record("List", sizeof(OldList), alignof(OldList), list_fields, 2),
   };
   static const symcr::RootInfo roots[] = {{"list", 3, &old_list, 0, nullptr}};
-  static const symcr::Schema schema{types, 4, roots, 1};
+  static const symcr::Schema schema{types, 4, roots, 1, nullptr};
   return schema;
 }
 
@@ -72,7 +72,7 @@ const symcr::Schema& new_schema() {
       record("List", sizeof(NewList), alignof(NewList), list_fields, 1),
   };
   static const symcr::RootInfo roots[] = {{"list", 3, &new_list, 0, nullptr}};
-  static const symcr::Schema schema{types, 4, roots, 1};
+  static const symcr::Schema schema{types, 4, roots, 1, nullptr};
   return schema;
 }
 

@@ -40,7 +40,7 @@ const symcr::Schema& reader_schema() {
              &symcr::ops::container<std::vector<Big>>::table),
   };
   static const symcr::RootInfo roots[] = {{"bigs", 3, &bigs, 0, nullptr}};
-  static const symcr::Schema schema{types, 4, roots, 1};
+  static const symcr::Schema schema{types, 4, roots, 1, nullptr};
   return schema;
 }
 
@@ -52,7 +52,7 @@ const symcr::Schema& writer_schema() {
              &symcr::ops::container<std::vector<Empty>>::table),
   };
   static const symcr::RootInfo roots[] = {{"bigs", 1, &empties, 0, nullptr}};
-  static const symcr::Schema schema{types, 2, roots, 1};
+  static const symcr::Schema schema{types, 2, roots, 1, nullptr};
   return schema;
 }
 

@@ -54,7 +54,7 @@ inline const symcr::Schema& frame_schema() {
       record("reliability::Frame", sizeof(Frame), alignof(Frame), fields, 3),
   };
   static const symcr::RootInfo roots[] = {{"frame", 3, &frame, 0, nullptr}};
-  static const symcr::Schema schema{types, 4, roots, 1};
+  static const symcr::Schema schema{types, 4, roots, 1, nullptr};
   return schema;
 }
 
@@ -82,7 +82,7 @@ inline const symcr::Schema& list_schema() {
       record("reliability::List", sizeof(List), alignof(List), list_fields, 2),
   };
   static const symcr::RootInfo roots[] = {{"list", 3, &list, 0, nullptr}};
-  static const symcr::Schema schema{types, 4, roots, 1};
+  static const symcr::Schema schema{types, 4, roots, 1, nullptr};
   return schema;
 }
 
@@ -104,7 +104,7 @@ inline const symcr::Schema& chain_schema() {
              &symcr::ops::lifecycle<Chain>::table),
   };
   static const symcr::RootInfo roots[] = {{"chain", 2, &chain, 0, nullptr}};
-  static const symcr::Schema schema{types, 3, roots, 1};
+  static const symcr::Schema schema{types, 3, roots, 1, nullptr};
   return schema;
 }
 

@@ -77,7 +77,7 @@ const symcr::Schema& vehicle_schema() {
       record("reliability::Vehicle", sizeof(Vehicle), alignof(Vehicle), vehicle_fields, 5),
   };
   static const symcr::RootInfo roots[] = {{"vehicle", 9, &vehicle, 0, nullptr}};
-  static const symcr::Schema schema{types, 10, roots, 1};
+  static const symcr::Schema schema{types, 10, roots, 1, nullptr};
   return schema;
 }
 

@@ -41,7 +41,7 @@ const symcr::RootInfo roots[] = {
     {"c_tick_count", kUInt32, &c_tick_count, 0, nullptr},
 };
 
-const symcr::Schema schema{types, kTypes, roots, 2};
+const symcr::Schema schema{types, kTypes, roots, 2, nullptr};
 
 }  // namespace
 

@@ -47,7 +47,7 @@ const symcr::Schema& vroot_schema() {
       record("VRoot", sizeof(VRoot), alignof(VRoot), fields, 4),
   };
   static const symcr::RootInfo roots[] = {{"vroot", 7, &vroot, 0, nullptr}};
-  static const symcr::Schema schema{types, 8, roots, 1};
+  static const symcr::Schema schema{types, 8, roots, 1, nullptr};
   return schema;
 }
 
@@ -131,7 +131,7 @@ const symcr::Schema& flat_schema() {
       record("Flat", sizeof(Flat), alignof(Flat), fields, 5),
   };
   static const symcr::RootInfo roots[] = {{"flat", 6, &flat, 0, nullptr}};
-  static const symcr::Schema schema{types, 7, roots, 1};
+  static const symcr::Schema schema{types, 7, roots, 1, nullptr};
   return schema;
 }
 
@@ -194,7 +194,7 @@ const symcr::Schema& flat_moved_schema() {
   };
   static const symcr::RootInfo roots[] = {{"counter", 0, &counter_root, 0, nullptr},
                                           {"flat", 6, &flat_moved, 0, nullptr}};
-  static const symcr::Schema schema{types, 8, roots, 2};
+  static const symcr::Schema schema{types, 8, roots, 2, nullptr};
   return schema;
 }
 
@@ -331,7 +331,7 @@ const symcr::Schema& bits_schema() {
       record("Bits", sizeof(Bits), alignof(Bits), fields, 5),
   };
   static const symcr::RootInfo roots[] = {{"bits", 4, &bits, 0, nullptr}};
-  static const symcr::Schema schema{types, 5, roots, 1};
+  static const symcr::Schema schema{types, 5, roots, 1, nullptr};
   return schema;
 }
 

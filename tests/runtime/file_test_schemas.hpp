@@ -152,9 +152,9 @@ inline const symcr::RootInfo blob_roots[] = {{"blob", 1, &big_blob, 0, nullptr}}
 
 }  // namespace tables
 
-inline const symcr::Schema schema_a{tables::types_a, tables::kTypeCount, tables::roots_a, 2};
-inline const symcr::Schema schema_b{tables::types_b, tables::kTypeCount, tables::roots_b, 2};
-inline const symcr::Schema blob_schema{tables::blob_types, 2, tables::blob_roots, 1};
+inline const symcr::Schema schema_a{tables::types_a, tables::kTypeCount, tables::roots_a, 2, nullptr};
+inline const symcr::Schema schema_b{tables::types_b, tables::kTypeCount, tables::roots_b, 2, nullptr};
+inline const symcr::Schema blob_schema{tables::blob_types, 2, tables::blob_roots, 1, nullptr};
 
 // Byte offset of copter.mission.active in build A's payload (docs/format.md §3: values in
 // schema order at their wire widths): ticks 4 + mode 4 + items 4 × (8 + 8 + 4 + 2) + current 1.

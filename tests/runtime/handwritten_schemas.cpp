@@ -65,7 +65,7 @@ const Schema& schema() {
   static const RootInfo roots[] = {{"basic", 13, &basic, 0, nullptr},
                                    {"old_counter", 1, &old_counter, 0, nullptr},
                                    {"gone_root", 1, &gone_root, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace a0
@@ -127,7 +127,7 @@ const Schema& schema() {
   static const RootInfo roots[] = {{"basic", 13, &basic, 0, nullptr},
                                    {"counter", 1, &counter, 0, counter_aliases},
                                    {"new_root", 1, &new_root, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace a1
@@ -190,7 +190,7 @@ const Schema& schema() {
       record("Bag", sizeof(Bag), alignof(Bag), bag_fields, SYMCR_COUNT(bag_fields)),
   };
   static const RootInfo roots[] = {{"bag", 17, &bag, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace b0
@@ -248,7 +248,7 @@ const Schema& schema() {
       record("Bag", sizeof(Bag), alignof(Bag), bag_fields, SYMCR_COUNT(bag_fields)),
   };
   static const RootInfo roots[] = {{"bag", 14, &bag, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace b1
@@ -298,7 +298,7 @@ const Schema& schema() {
       record("World", sizeof(World), alignof(World), world_fields, SYMCR_COUNT(world_fields)),
   };
   static const RootInfo roots[] = {{"world", 12, &world, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace c0
@@ -350,7 +350,7 @@ const Schema& schema() {
       scalar("int64", Kind::Int, 8),
   };
   static const RootInfo roots[] = {{"world", 12, &world, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace c1
@@ -372,7 +372,7 @@ const Schema& schema() {
       record("Holder", sizeof(Holder), alignof(Holder), holder_fields, SYMCR_COUNT(holder_fields)),
   };
   static const RootInfo roots[] = {{"holder", 4, &holder, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace c_bad
@@ -393,7 +393,7 @@ const Schema& schema() {
       record("Derived", sizeof(Derived), alignof(Derived), derived_fields, 3),
   };
   static const RootInfo roots[] = {{"derived", 3, &derived, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace d0
@@ -414,7 +414,7 @@ const Schema& schema() {
       record("Derived", sizeof(Derived), alignof(Derived), derived_fields, 3),
   };
   static const RootInfo roots[] = {{"derived", 3, &derived, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace d1
@@ -451,7 +451,7 @@ const Schema& schema() {
   static const RootInfo roots[] = {{"small", 10, &small, 0, nullptr},
                                    {"good", 11, &good, 0, nullptr},
                                    {"bad", 11, &bad, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace e0
@@ -492,7 +492,7 @@ const Schema& schema() {
   static const RootInfo roots[] = {{"small", 10, &small, 0, nullptr},
                                    {"good", 11, &good, 0, nullptr},
                                    {"bad", 11, &bad, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace e1
@@ -514,7 +514,7 @@ const Schema& schema() {
       record("Graph", sizeof(Graph), alignof(Graph), graph_fields, 2),
   };
   static const RootInfo roots[] = {{"graph", 4, &graph, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace g
@@ -551,7 +551,7 @@ const Schema& schema() {
       record("State", sizeof(State), alignof(State), state_fields, SYMCR_COUNT(state_fields)),
   };
   static const RootInfo roots[] = {{"state", 9, &state, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace p
@@ -571,7 +571,7 @@ const Schema& schema() {
              &symcr::ops::container<std::vector<std::int32_t>>::table),
   };
   static const RootInfo roots[] = {{"tree", 2, &tree, 0, nullptr}, {"many", 3, &many, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace t0
@@ -592,7 +592,7 @@ const Schema& schema() {
       scalar("int8", Kind::Int, 1),
   };
   static const RootInfo roots[] = {{"tree", 2, &tree, 0, nullptr}, {"many", 3, &many, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace t1

@@ -113,7 +113,7 @@ const Schema& schema() {
       record("Old", sizeof(Old), alignof(Old), old_fields, SYMCR_COUNT(old_fields)),
   };
   static const RootInfo roots[] = {{"old", kOld, &old, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace ov
@@ -367,7 +367,7 @@ const Schema& schema() {
   };
   static const RootInfo roots[] = {{"batch", 4, &batch, 0, nullptr},
                                    {"same", 5, &same, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace m0
@@ -458,7 +458,7 @@ const Schema& schema(Variant variant) {
   static Schema schemas[3];
   Schema& schema = schemas[static_cast<int>(variant)];
   schema = Schema{types.data(), static_cast<std::uint32_t>(types.size()), roots,
-                  SYMCR_COUNT(roots)};
+                  SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace m1
@@ -587,7 +587,7 @@ const Schema& schema() {
       record("Tree", sizeof(Tree), alignof(Tree), tree_fields, 1),
   };
   static const RootInfo roots[] = {{"tree", 3, &tree, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace r0
@@ -616,7 +616,7 @@ const Schema& schema() {
              &migrate_tree),
   };
   static const RootInfo roots[] = {{"tree", 3, &tree, 0, nullptr}};
-  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots)};
+  static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
 }  // namespace r1

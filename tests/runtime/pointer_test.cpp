@@ -246,7 +246,7 @@ struct ReaderWithoutFields {
     }
     types[type].fields = fields;
     types[type].field_count = kept;
-    schema = symcr::Schema{types, base.type_count, base.roots, base.root_count};
+    schema = symcr::Schema{types, base.type_count, base.roots, base.root_count, nullptr};
   }
 };
 
@@ -303,7 +303,7 @@ const symcr::Schema& shared_only_schema() {
       record("SharedOnly", sizeof(SharedOnly), alignof(SharedOnly), fields, 4),
   };
   static const symcr::RootInfo roots[] = {{"shared", 3, &shared_only, 0, nullptr}};
-  static const symcr::Schema schema{types, 4, roots, 1};
+  static const symcr::Schema schema{types, 4, roots, 1, nullptr};
   return schema;
 }
 
@@ -368,7 +368,7 @@ const symcr::Schema& uroot_schema() {
       record("URoot", sizeof(URoot), alignof(URoot), root_fields, 4),
   };
   static const symcr::RootInfo roots[] = {{"uroot", 6, &uroot, 0, nullptr}};
-  static const symcr::Schema schema{types, 7, roots, 1};
+  static const symcr::Schema schema{types, 7, roots, 1, nullptr};
   return schema;
 }
 
@@ -493,7 +493,7 @@ const symcr::Schema& mroot_schema() {
       record("MRoot", sizeof(MRoot), alignof(MRoot), root_fields, 2),
   };
   static const symcr::RootInfo roots[] = {{"mroot", 7, &mroot, 0, nullptr}};
-  static const symcr::Schema schema{types, 8, roots, 1};
+  static const symcr::Schema schema{types, 8, roots, 1, nullptr};
   return schema;
 }
 

@@ -21,7 +21,7 @@ const TypeInfo kTypes[] = {
     scalar("float64", Kind::Float, 8),  enumeration("Colour", 1, 2, kColours, 2),
     scalar("float80", Kind::Float, 16),
 };
-const symcr::Schema kSchema{kTypes, 9, nullptr, 0};
+const symcr::Schema kSchema{kTypes, 9, nullptr, 0, nullptr};
 enum { kBool, kInt8, kUInt8, kInt64, kUInt64, kFloat32, kFloat64, kColour, kFloat80 };
 
 Number integer(std::int64_t v) {

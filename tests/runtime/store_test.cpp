@@ -341,7 +341,7 @@ TEST_F(StoreTest, NewBuildRestoresThePreviousBuildsCheckpointAndKeepsItUntilItSa
 
 TEST_F(StoreTest, AThirdBuildReplacesOnlyTheOlderSchemaArea) {
   // Build C: B's types with only the "copter" root, so its schema (and hash) differ.
-  const symcr::Schema schema_c{tables::types_b, tables::kTypeCount, tables::roots_b, 1};
+  const symcr::Schema schema_c{tables::types_b, tables::kTypeCount, tables::roots_b, 1, nullptr};
   save_seeds(1, 2);  // A: 1, 2
   {
     symcr::Store store;
@@ -580,6 +580,37 @@ TEST_F(StoreTest, AFileThatIsNotAStoreIsLeftAlone) {
   const symcr::Status status = symcr::Store::open(path.c_str(), schema_a, options, store);
   EXPECT_EQ(status.error(), Error::NotACheckpoint);
   EXPECT_EQ(read_file(path), std::vector<std::uint8_t>(5000, 'x'));
+}
+
+TEST_F(StoreTest, AnotherProgramsCheckpointIsRefusedUnlessAccepted) {
+  static symcr::Schema rover = schema_a;
+  static symcr::Schema copter = schema_a;
+  rover.program = "rover";
+  copter.program = "copter";
+  {
+    symcr::Store store;
+    open(store, rover);
+    fill_a(4);
+    ASSERT_TRUE(store.save().ok());
+  }
+  scramble_a();
+  const std::vector<std::uint8_t> scrambled = state_a();
+  symcr::Store store;
+  open(store, copter);
+  const symcr::Report refused = store.restore_latest();
+  EXPECT_EQ(refused.status().error(), Error::Incompatible);
+  EXPECT_NE(std::string(refused.status().message()).find("another program"), std::string::npos)
+      << refused.status().message();
+  EXPECT_EQ(state_a(), scrambled) << "a refused restore wrote into the state";
+  symcr::RestoreOptions accept;
+  accept.accept_other_program = true;
+  ASSERT_TRUE(store.restore_latest(accept).ok());
+  expect_a(4);
+  // An anonymous program (no name) accepts it, as before programs were named.
+  store.close();
+  scramble_a();
+  ASSERT_TRUE(restore_latest(schema_a).ok());
+  expect_a(4);
 }
 
 TEST_F(StoreTest, ACorruptStoreHeaderIsRecoveredFromTheSlots) {

@@ -193,6 +193,10 @@ struct Schema {
   std::uint32_t type_count;
   const RootInfo* roots;
   std::uint32_t root_count;
+  // The program's name (symcr-gen --program; the CMake project's name by default). Its hash is
+  // written into every checkpoint, and a restore refuses a checkpoint of another program. Null:
+  // an anonymous program, whose checkpoints any program accepts and which accepts any.
+  const char* program;
 };
 
 }  // namespace symcr

@@ -69,10 +69,16 @@ int symcr_checkpoint_with(const symcr_schema* schema, const char* path, int fdat
 /* The restore report: opaque, owned by the caller, freed with symcr_report_free. */
 typedef struct symcr_report symcr_report;
 
-/* Restores `path`; strict != 0 refuses any lossy decision. When `report` is not NULL it
+/* Restore options, or-ed into the `flags` of the restore functions: SYMCR_RESTORE_STRICT
+ * refuses any lossy decision (RestoreOptions::strict); SYMCR_RESTORE_ACCEPT_OTHER_PROGRAM
+ * restores a checkpoint written by another program (RestoreOptions::accept_other_program). */
+#define SYMCR_RESTORE_STRICT 1
+#define SYMCR_RESTORE_ACCEPT_OTHER_PROGRAM 2
+
+/* Restores `path` with `flags` (SYMCR_RESTORE_*, 0 for none). When `report` is not NULL it
  * receives a report (also on failure) to free with symcr_report_free. */
-int symcr_restore(const char* path, int strict, symcr_report** report);
-int symcr_restore_with(const symcr_schema* schema, const char* path, int strict,
+int symcr_restore(const char* path, int flags, symcr_report** report);
+int symcr_restore_with(const symcr_schema* schema, const char* path, int flags,
                        symcr_report** report);
 
 int symcr_report_ok(const symcr_report* report);
@@ -98,7 +104,7 @@ void symcr_store_options_init(symcr_store_options* options);
 int symcr_store_open(const char* path, const symcr_schema* schema,
                      const symcr_store_options* options, symcr_store** store);
 int symcr_store_save(symcr_store* store);
-int symcr_store_restore_latest(symcr_store* store, int strict, symcr_report** report);
+int symcr_store_restore_latest(symcr_store* store, int flags, symcr_report** report);
 uint64_t symcr_store_last_sequence(const symcr_store* store);
 void symcr_store_close(symcr_store* store);
 

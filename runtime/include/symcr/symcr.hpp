@@ -138,6 +138,9 @@ class Report {
 
 struct RestoreOptions {
   bool strict = false;  // refuse any lossy decision: nothing is written if one exists
+  // Restore a checkpoint written by another program (another Schema::program) instead of
+  // refusing it (Error::Incompatible): for a program renamed on purpose.
+  bool accept_other_program = false;
 };
 
 enum class Durability : std::uint8_t {
