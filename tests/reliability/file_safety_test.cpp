@@ -11,13 +11,16 @@
 //   - temp files left by a checkpoint() whose process was killed are removed by the next one;
 //   - a store whose creation fails (the file size limit) leaves no empty file behind.
 #include <signal.h>
+#include <sys/mount.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -142,6 +145,40 @@ TEST(FileSafety, TempFilesOfAKilledCheckpointAreRemovedByTheNextOne) {
   EXPECT_TRUE(exists(other_name)) << "another checkpoint's temp file was removed";
   EXPECT_TRUE(exists(not_ours));
   EXPECT_TRUE(symcr::restore(frame_schema(), path.c_str()).ok());
+}
+
+// A file system remounted read-only after a fault (ext4's errors=remount-ro): the patched build
+// still restores the last good checkpoint with the ordinary Store::open.
+TEST(FileSafety, AStoreOnAReadOnlyFileSystemStillRestores) {
+  TempDir dir;
+  const std::string mountpoint = dir.file("mnt");
+  ASSERT_EQ(::mkdir(mountpoint.c_str(), 0700), 0);
+  if (::mount("tmpfs", mountpoint.c_str(), "tmpfs", 0, "size=4m") != 0) {
+    GTEST_SKIP() << "cannot mount a tmpfs here (" << std::strerror(errno)
+                 << "): the read-only file system case needs CAP_SYS_ADMIN";
+  }
+  const std::string path = mountpoint + "/store";
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), frame_schema(), small_store(), store).ok());
+    fill_frame(5);
+    ASSERT_TRUE(store.save().ok());
+  }
+  ASSERT_EQ(::mount(nullptr, mountpoint.c_str(), nullptr, MS_REMOUNT | MS_RDONLY, nullptr), 0)
+      << std::strerror(errno);
+  {
+    symcr::Store store;
+    const symcr::Status opened =
+        symcr::Store::open(path.c_str(), frame_schema(), small_store(), store);
+    ASSERT_TRUE(opened.ok()) << opened.message();
+    EXPECT_TRUE(store.read_only());
+    fill_frame(9);
+    const symcr::Report report = store.restore_latest();
+    EXPECT_TRUE(report.ok()) << report.status().message();
+    EXPECT_TRUE(frame_is(5));
+    EXPECT_EQ(store.save().error(), symcr::Error::Io);
+  }
+  EXPECT_EQ(::umount(mountpoint.c_str()), 0);
 }
 
 TEST(FileSafety, AStoreWhoseCreationFailsLeavesNoFile) {
