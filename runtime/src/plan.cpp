@@ -366,8 +366,11 @@ class Planner {
       }
     }
     // Sorted by writer value: restore looks values up by binary search.
-    std::sort(n.enum_map.begin(), n.enum_map.end(),
-              [](const EnumMapping& a, const EnumMapping& b) { return a.writer_value < b.writer_value; });
+    std::stable_sort(n.enum_map.begin(), n.enum_map.end(),
+                     [](const EnumMapping& a, const EnumMapping& b) {
+                       return a.writer_value < b.writer_value;
+                     });
+    collapse_enum_aliases(n.enum_map);
     if (n.identical) return;
     n.decision = Decision::Converted;
     n.detail = pair_text(wt, rt);
@@ -383,6 +386,31 @@ class Planner {
       n.lossy = true;  // precision is rounded away, not rejected
       n.detail += " (precision rounded)";
     }
+  }
+
+  // A writer value with several names (an alias kept while renaming: `Loiter = 3, Hold = 3`)
+  // maps through whichever of its names the reader has, whatever their declaration order: one
+  // entry per value, mapped when its names that the reader knows agree on one reader value.
+  static void collapse_enum_aliases(std::vector<EnumMapping>& map) {
+    std::vector<EnumMapping> collapsed;
+    for (std::size_t i = 0; i < map.size();) {
+      std::size_t end = i;
+      const EnumMapping* chosen = &map[i];
+      bool conflicting = false;
+      for (; end < map.size() && map[end].writer_value == map[i].writer_value; ++end) {
+        const EnumMapping& alias = map[end];
+        if (!alias.mapped) continue;
+        if (!chosen->mapped) {
+          chosen = &alias;
+        } else if (alias.reader_value != chosen->reader_value) {
+          conflicting = true;  // the names part ways in the reader: which one is meant?
+        }
+      }
+      collapsed.push_back(*chosen);
+      if (conflicting) collapsed.back().mapped = false;
+      i = end;
+    }
+    map.swap(collapsed);
   }
 
   __attribute__((cold)) void fill_struct(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
