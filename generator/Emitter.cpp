@@ -489,10 +489,11 @@ std::string renderReport(const ProgramModel &Program) {
       if (Type.Element != symcr::kNoType)
         Pending.push_back(Type.Element);
     }
-    std::size_t FieldCount = 0, SkipCount = 0;
+    std::size_t FieldCount = 0, SkipCount = 0, LeftCount = 0;
     for (std::uint32_t T : Order) {
       FieldCount += Program.Types[T].Fields.size();
       SkipCount += Program.Types[T].Skipped.size();
+      LeftCount += Program.Types[T].LeftToNewBuild.size();
     }
     std::set<std::uint32_t> Stack;
     const TypeModel &RootType = Program.Types[Root.Type];
@@ -501,7 +502,8 @@ std::string renderReport(const ProgramModel &Program) {
        << RootType.Name << ", " << RootType.Size << " bytes in memory, "
        << payloadBytes(Program, Root.Type, Stack) << " bytes of fixed payload\n"
        << "  reaches " << Order.size() << " type(s), " << FieldCount
-       << " field(s); skips " << SkipCount << "\n";
+       << " field(s); skips " << SkipCount << "; leaves " << LeftCount
+       << " to the new build\n";
     if (Root.Where.valid())
       OS << "  defined at " << Root.Where.File << ":" << Root.Where.Line
          << "\n";
@@ -527,6 +529,13 @@ std::string renderReport(const ProgramModel &Program) {
       }
       for (const std::string &S : Type.Skipped)
         OS << "    skipped " << S << "\n";
+    }
+    // A heading of their own: what the new build re-creates, which needs no skip line.
+    if (LeftCount) {
+      OS << "  left to the new build (never restored, no annotation needed):\n";
+      for (std::uint32_t T : Order)
+        for (const std::string &Left : Program.Types[T].LeftToNewBuild)
+          OS << "    " << Program.Types[T].Name << "::" << Left << "\n";
     }
   }
   return OS.str();

@@ -117,6 +117,9 @@ struct TypeModel {
   std::string FirstSeenIn;
   /// Members left out of this type and why ("raw: SYMCR_SKIP"), for --report.
   std::vector<std::string> Skipped;
+  /// Members the new build re-creates by itself, never restored and needing no annotation
+  /// (const and reference members, function and member pointers) and why, for --report.
+  std::vector<std::string> LeftToNewBuild;
 };
 
 struct RootModel {

@@ -258,6 +258,7 @@ private:
                         bool &Fresh);
   void store(std::uint32_t Index, TypeModel Model, const WalkContext &C);
   std::string fingerprint(const TypeModel &Model) const;
+  const char *leftToNewBuild(QualType Type) const;
   std::string canonicalName(QualType Type, const WalkContext &C);
   std::string recordName(const RecordDecl *RD, const WalkContext &C);
   std::string templateArgumentsName(const ClassTemplateSpecializationDecl *Spec,
@@ -543,6 +544,25 @@ std::string TypeWalker::canonicalName(QualType Type, const WalkContext &C) {
   return Type.getAsString(*Policy);
 }
 
+/// Why a member of type \p Type is never restored and left to the new build, or null. A
+/// const member is the new build's constant (writing it would be undefined behaviour, and would
+/// undo a patch that changed it); a reference is bound by the new build's constructor; a
+/// function or member pointer is code of the old build (restoring one would be an arc-injection
+/// vector).
+const char *TypeWalker::leftToNewBuild(QualType Type) const {
+  QualType Canonical = Type.getCanonicalType();
+  if (Canonical->isReferenceType())
+    return "reference member: bound by the new build";
+  QualType Element = Context.getBaseElementType(Canonical);
+  if (Element.isConstQualified())
+    return "const member: the new build's value is kept";
+  if (Element->isMemberPointerType())
+    return "member pointer: code of the old build";
+  if (Element->isFunctionPointerType())
+    return "function pointer: code of the old build";
+  return nullptr;
+}
+
 std::string TypeWalker::fingerprint(const TypeModel &Model) const {
   std::string F =
       Model.Name + "|" + std::to_string(static_cast<int>(Model.Kind)) + "|" +
@@ -567,6 +587,8 @@ std::string TypeWalker::fingerprint(const TypeModel &Model) const {
   }
   for (const auto &E : Model.Enumerators)
     F += "|" + E.first + "=" + std::to_string(E.second);
+  for (const std::string &Left : Model.LeftToNewBuild)
+    F += "|left " + Left;
   for (std::uint32_t A : Model.Alternatives)
     F += "|" + NameOf(A);
   return F;
@@ -1151,6 +1173,10 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
     F.Shallow = false;
     F.AnonymousName.clear();
     std::string Why;
+    if (const char *Why = leftToNewBuild(FD->getType())) {
+      Model.LeftToNewBuild.push_back(Name + ": " + Why);
+      continue;
+    }
     if (hasAnnotation(FD, "skip")) {
       Model.Skipped.push_back(Name + ": SYMCR_SKIP");
       continue;
