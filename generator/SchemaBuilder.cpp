@@ -307,6 +307,33 @@ const RecordDecl *TypeWalker::completeDefinition(const RecordDecl *RD,
   return nullptr;
 }
 
+/// Old names of a root or type resolve like its new name: an unqualified old name is in the same
+/// scope (`SYMCR_RENAMED_FROM("g_log")` on `robot::g_journal` is `robot::g_log`), as for a
+/// field. A leading `::` names the global scope.
+static void qualifyLike(const std::string &Name, std::vector<std::string> &OldNames) {
+  std::string::size_type Cut = Name.rfind("::");
+  // The scope of the new name, not counting "::" inside template arguments.
+  if (Name.find('<') != std::string::npos && Name.find('<') < Cut) {
+    int Depth = 0;
+    Cut = std::string::npos;
+    for (std::string::size_type I = 0; I + 1 < Name.size(); ++I) {
+      if (Name[I] == '<')
+        ++Depth;
+      else if (Name[I] == '>')
+        --Depth;
+      else if (Depth == 0 && Name.compare(I, 2, "::") == 0)
+        Cut = I;
+    }
+  }
+  std::string Scope = Cut == std::string::npos ? "" : Name.substr(0, Cut + 2);
+  for (std::string &Old : OldNames) {
+    if (Old.compare(0, 2, "::") == 0)
+      Old.erase(0, 2);
+    else if (Old.find("::") == std::string::npos)
+      Old = Scope + Old;
+  }
+}
+
 std::string TypeWalker::spelling(QualType Type) {
   Type = Type.getCanonicalType().getUnqualifiedType();
   if (const auto *RT = Type->getAs<TagType>()) {
@@ -729,6 +756,7 @@ std::uint32_t TypeWalker::enumeration(QualType Type, const EnumDecl *ED,
   if (ED->isScoped())
     Model.Flags |= symcr::kTypeScopedEnum;
   Model.RenamedFrom = renamedFromAnnotations(ED);
+  qualifyLike(Model.Name, Model.RenamedFrom);
   for (const EnumConstantDecl *E : ED->enumerators()) {
     const llvm::APSInt &Value = E->getInitVal();
     std::int64_t Stored = Value.isSigned()
@@ -1328,6 +1356,7 @@ std::uint32_t TypeWalker::record(QualType Type, const RecordDecl *Decl,
       Model.RenamedFrom.insert(Model.RenamedFrom.end(), It->second.begin(),
                                It->second.end());
   }
+  qualifyLike(Model.Name, Model.RenamedFrom);
   if (RD->isUnion()) {
     Model.Kind = symcr::Kind::Union;
     if (CRD && !CRD->isTriviallyCopyable())
@@ -1836,6 +1865,7 @@ void SchemaBuilder::addTranslationUnit(
           It != Select.RootRenames.end())
         Root.RenamedFrom.insert(Root.RenamedFrom.end(), It->second.begin(),
                                 It->second.end());
+      qualifyLike(Root.Name, Root.RenamedFrom);
       Root.HomeTU = TUIndex;
       Root.Where = Where;
       std::uint32_t RootNumber =
