@@ -1920,7 +1920,7 @@ void SchemaBuilder::addTranslationUnit(
   }
 }
 
-void SchemaBuilder::finish() {
+void SchemaBuilder::finish(bool CheckUnmatched) {
   // Recorded in the schema (and its file) so that a plan without the program's code knows
   // which heap objects the build can rebuild.
   for (TypeModel &Type : Program.Types) {
@@ -1929,7 +1929,7 @@ void SchemaBuilder::finish() {
     if (Type.hasValidate(Program))
       Type.Flags |= symcr::kTypeValidated;
   }
-  for (std::size_t I = 0; I < Sidecar.size(); ++I)
+  for (std::size_t I = 0; I < Sidecar.size() && CheckUnmatched; ++I)
     for (std::size_t A = 0; A < Sidecar[I].Arguments.size(); ++A) {
       if (SidecarMatched[I][A] ||
           (Sidecar[I].Kind == DirectiveKind::Renamed && A == 1) ||
@@ -1941,7 +1941,7 @@ void SchemaBuilder::finish() {
                       "translation unit");
     }
   for (const auto &Pending : PendingDeclaredRoots)
-    if (!DefinedRootNames.count(Pending.first))
+    if (CheckUnmatched && !DefinedRootNames.count(Pending.first))
       Diags.error(
           Pending.second,
           "root '" + Pending.first +

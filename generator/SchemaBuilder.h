@@ -40,7 +40,9 @@ public:
 
   /// Reports directives that matched nothing in any TU and builds the
   /// per-root reports. Call once after every TU.
-  void finish();
+  /// Diagnoses what the annotations named and nothing matched (unless
+  /// \p CheckUnmatched is false: some sources could not be parsed).
+  void finish(bool CheckUnmatched = true);
 
 private:
   struct DirectiveState;

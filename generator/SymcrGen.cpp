@@ -9,6 +9,7 @@
 //===----------------------------------------------------------------------===//
 
 #include "Annotations.h"
+#include "CompileCommand.h"
 #include "Emitter.h"
 #include "SchemaBuilder.h"
 #include "SchemaFile.h"
@@ -147,29 +148,6 @@ private:
   std::map<std::string, std::string> SourceToWrapper;
   std::set<std::string> Known;
 };
-
-/// Drops arguments Clang's driver does not know (g++-only flags in a
-/// compile_commands.json written for g++).
-CommandLineArguments dropUnknownArguments(const CommandLineArguments &Args,
-                                          llvm::StringRef) {
-  if (Args.empty())
-    return Args;
-  const llvm::opt::OptTable &Table = driver::getDriverOptTable();
-  std::vector<const char *> Raw;
-  for (std::size_t I = 1; I < Args.size(); ++I)
-    Raw.push_back(Args[I].c_str());
-  unsigned MissingIndex = 0, MissingCount = 0;
-  llvm::opt::InputArgList Parsed = Table.ParseArgs(
-      Raw, MissingIndex, MissingCount, driver::options::CC1Option | 0, 0);
-  std::set<unsigned> Unknown;
-  for (const llvm::opt::Arg *A : Parsed.filtered(driver::options::OPT_UNKNOWN))
-    Unknown.insert(A->getIndex());
-  CommandLineArguments Result{Args[0]};
-  for (std::size_t I = 1; I < Args.size(); ++I)
-    if (!Unknown.count(static_cast<unsigned>(I - 1)))
-      Result.push_back(Args[I]);
-  return Result;
-}
 
 /// TUs are parsed in parallel but handed to the SchemaBuilder one at a time in
 /// command-line order, so type indices, home TUs and diagnostics are the same
@@ -315,7 +293,8 @@ int main(int argc, const char **argv) {
   // merged after the join.
   std::vector<std::set<std::string>> TUDependencies(Sources.size());
   std::atomic<unsigned> NextSource{0};
-  std::atomic<bool> FrontEndFailed{false};
+  std::atomic<unsigned> UnparsedSources{0};
+  CompileCommandAdapter Adapter;
   std::mutex OutputLock;
   TurnOrder Turns;
   auto Worker = [&] {
@@ -325,7 +304,10 @@ int main(int argc, const char **argv) {
       Tool.clearArgumentsAdjusters();
       Tool.appendArgumentsAdjuster(getClangStripOutputAdjuster());
       Tool.appendArgumentsAdjuster(getClangStripDependencyFileAdjuster());
-      Tool.appendArgumentsAdjuster(dropUnknownArguments);
+      Tool.appendArgumentsAdjuster(
+          [&Adapter](const CommandLineArguments &Args, llvm::StringRef File) {
+            return Adapter.adapt(Args, File);
+          });
       Tool.appendArgumentsAdjuster(getClangSyntaxOnlyAdjuster());
       Tool.appendArgumentsAdjuster(getInsertArgumentAdjuster(
           {"-DSYMCR_GENERATOR=1", "-resource-dir=" SYMCR_CLANG_RESOURCE_DIR,
@@ -340,8 +322,8 @@ int main(int argc, const char **argv) {
       std::lock_guard<std::mutex> Guard(OutputLock);
       if (Failed) {
         llvm::errs() << "symcr-gen: error: Clang could not parse '"
-                     << Sources[I] << "'\n";
-        FrontEndFailed = true;
+                     << Sources[I] << "' (its errors are above)\n";
+        ++UnparsedSources;
       }
       if (Timing)
         llvm::errs() << "symcr-gen: " << Sources[I] << ": "
@@ -363,10 +345,25 @@ int main(int argc, const char **argv) {
     T.join();
   for (const std::set<std::string> &Files : TUDependencies)
     Dependencies.insert(Files.begin(), Files.end());
-  Builder.finish();
-  if (FrontEndFailed || Diags.errorCount()) {
-    llvm::errs() << "symcr-gen: " << Diags.errorCount()
-                 << " error(s); nothing generated\n";
+  std::set<std::string> Dropped = Adapter.droppedFlags();
+  if (!Dropped.empty()) {
+    std::string List;
+    for (const std::string &Flag : Dropped)
+      List += " " + Flag;
+    llvm::errs() << "symcr-gen: warning: ignored compiler flag(s) Clang does not "
+                    "know:"
+                 << List << "\n";
+  }
+  // A source that could not be parsed defines roots and types nothing else
+  // sees: "matches nothing" would then be a false lead.
+  Builder.finish(/*CheckUnmatched=*/UnparsedSources == 0);
+  if (UnparsedSources || Diags.errorCount()) {
+    llvm::errs() << "symcr-gen: " << Diags.errorCount() + UnparsedSources
+                 << " error(s)";
+    if (UnparsedSources)
+      llvm::errs() << " (" << UnparsedSources.load()
+                   << " source(s) Clang could not parse)";
+    llvm::errs() << "; nothing generated\n";
     return 1;
   }
 
