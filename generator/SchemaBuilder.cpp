@@ -137,8 +137,18 @@ public:
   /// Qualified name without anonymous or inline namespaces and without
   /// template arguments ("ns::Outer::Inner").
   static std::string qualifiedDeclName(const NamedDecl *ND) {
+    std::string Result = qualifiedScope(ND);
+    if (ND->getIdentifier())
+      return Result + ND->getName().str();
+    if (const auto *R = dyn_cast<RecordDecl>(ND))
+      if (const TypedefNameDecl *T = R->getTypedefNameForAnonDecl())
+        return Result + T->getName().str();
+    return "";
+  }
+  /// The scope \p D is declared in, as a prefix ("ns::Outer::", or "").
+  static std::string qualifiedScope(const Decl *D) {
     std::vector<std::string> Parts;
-    for (const DeclContext *DC = ND->getDeclContext(); DC;
+    for (const DeclContext *DC = D->getDeclContext(); DC;
          DC = DC->getParent()) {
       if (const auto *NS = dyn_cast<NamespaceDecl>(DC)) {
         if (NS->isAnonymousNamespace() || NS->isInline())
@@ -156,12 +166,7 @@ public:
     std::string Result;
     for (auto It = Parts.rbegin(); It != Parts.rend(); ++It)
       Result += *It + "::";
-    if (ND->getIdentifier())
-      return Result + ND->getName().str();
-    if (const auto *R = dyn_cast<RecordDecl>(ND))
-      if (const TypedefNameDecl *T = R->getTypedefNameForAnonDecl())
-        return Result + T->getName().str();
-    return "";
+    return Result;
   }
   static std::string qualifiedName(const RecordDecl *RD) {
     return qualifiedDeclName(RD);
@@ -555,16 +560,27 @@ std::string TypeWalker::canonicalName(QualType Type, const WalkContext &C) {
            Element.substr(Suffix);
   }
   if (const auto *ET = Type->getAs<EnumType>()) {
+    // An unnamed enum takes its typedef's name (`typedef enum {...} mode_t;` is
+    // `mode_t`, as for structs), else its first enumerator's, which no other
+    // enum of the same scope can have: two unnamed enums never share a name.
     const EnumDecl *ED = ET->getDecl();
-    std::string Scope;
-    if (const auto *Parent = dyn_cast<RecordDecl>(ED->getDeclContext()))
-      Scope = recordName(Parent, C) + "::";
-    else {
-      std::string Q = NameIndex::qualifiedDeclName(ED);
-      return Q.empty() ? "(anonymous enum)" : Q;
+    const NamedDecl *Named = ED;
+    std::string Unnamed;
+    if (!ED->getIdentifier()) {
+      if (const TypedefNameDecl *TD = ED->getTypedefNameForAnonDecl())
+        Named = TD;
+      else
+        Unnamed = ED->enumerator_begin() == ED->enumerator_end()
+                      ? "(anonymous enum)"
+                      : "(anonymous enum " +
+                            ED->enumerator_begin()->getName().str() + ")";
     }
-    return Scope +
-           (ED->getIdentifier() ? ED->getName().str() : "(anonymous enum)");
+    if (const auto *Parent = dyn_cast<RecordDecl>(ED->getDeclContext()))
+      return recordName(Parent, C) + "::" +
+             (Unnamed.empty() ? Named->getName().str() : Unnamed);
+    if (!Unnamed.empty())
+      return NameIndex::qualifiedScope(ED) + Unnamed;
+    return NameIndex::qualifiedDeclName(Named);
   }
   if (const auto *RT = Type->getAs<RecordType>())
     return recordName(RT->getDecl(), C);
@@ -642,8 +658,18 @@ void TypeWalker::store(std::uint32_t Index, TypeModel Model,
   TypeModel &Slot = Program.Types[Index];
   Model.Fingerprint = fingerprint(Model);
   if (!Slot.Fingerprint.empty()) {
-    if (Slot.Fingerprint != Model.Fingerprint &&
-        Model.Name.find("(anonymous namespace)") != std::string::npos) {
+    const bool SameUnit =
+        Slot.FirstSeenIn == Program.TranslationUnits[TUIndex].Source;
+    if (Slot.Fingerprint != Model.Fingerprint && SameUnit) {
+      // Two types of one translation unit share a canonical name: no annotation
+      // placement can fix that, only a name.
+      Diags.error(C.Where,
+                  "two different types are named '" + Model.Name +
+                      "' (the second reached by '" + C.Path +
+                      "'): give one of them a distinct name (a typedef or a "
+                      "tag) to checkpoint both");
+    } else if (Slot.Fingerprint != Model.Fingerprint &&
+               Model.Name.find("(anonymous namespace)") != std::string::npos) {
       Diags.error(
           C.Where,
           "two different types are named '" + Model.Name + "' (reached by '" +
