@@ -1634,6 +1634,25 @@ const HookForm MigrationHook = {
       return "void symcr_migrate(" + Class + "&, const symcr::OldValues&)";
     }};
 
+/// The base class of \p RD (at any depth) that declares \p Member, or null.
+const CXXRecordDecl *baseDeclaring(const RecordDecl *RD,
+                                   const std::string &Member) {
+  const auto *CRD = dyn_cast_or_null<CXXRecordDecl>(RD->getDefinition());
+  if (!CRD)
+    return nullptr;
+  for (const CXXBaseSpecifier &B : CRD->bases()) {
+    const CXXRecordDecl *Base = B.getType()->getAsCXXRecordDecl();
+    if (!Base || !Base->getDefinition())
+      continue;
+    for (const FieldDecl *F : Base->getDefinition()->fields())
+      if (F->getName() == Member)
+        return Base;
+    if (const CXXRecordDecl *Deeper = baseDeclaring(Base, Member))
+      return Deeper;
+  }
+  return nullptr;
+}
+
 bool recordHasMember(const RecordDecl *RD, const std::string &Member) {
   const RecordDecl *Def = RD->getDefinition();
   if (!Def)
@@ -1764,6 +1783,20 @@ void SchemaBuilder::addTranslationUnit(
         bool HasMember = false;
         for (const RecordDecl *RD : Records)
           HasMember |= recordHasMember(RD, Member);
+        if (!HasMember) {
+          // C++ qualified-name lookup: `Copter::ahrs` names a member Copter
+          // inherits, declared in a base; the directive is the base's.
+          const CXXRecordDecl *Declaring = nullptr;
+          for (const RecordDecl *RD : Records)
+            if (!Declaring)
+              Declaring = baseDeclaring(RD, Member);
+          if (Declaring) {
+            Keys.clear();
+            Records.clear();
+            HasMember = resolveTypeName(Index, CanonicalName(Declaring), Keys,
+                                        &Records, CanonicalName);
+          }
+        }
         if (!HasMember) {
           Report("type '" + Owner + "' has no member '" + Member + "'");
           break;
