@@ -3,6 +3,8 @@
 
 #include "Annotations.h"
 
+#include <algorithm>
+
 #include "clang/Basic/SourceManager.h"
 #include "clang/Lex/Pragma.h"
 #include "clang/Lex/Preprocessor.h"
@@ -47,6 +49,62 @@ void Diagnostics::warning(const Location &Loc, const std::string &Message) {
 void Diagnostics::note(const Location &Loc, const std::string &Message) {
   std::lock_guard<std::mutex> Guard(Lock);
   print(Loc, "note", Message);
+}
+
+void Diagnostics::unrestorable(const Location &Where, const std::string &Message,
+                               const std::string &LeafSkip,
+                               const MemberRef *Group) {
+  const std::string &Fix = Group ? Group->SkipHint : LeafSkip;
+  {
+    std::lock_guard<std::mutex> Guard(Lock);
+    if (!Fix.empty() &&
+        std::find(Fixes.begin(), Fixes.end(), Fix) == Fixes.end())
+      Fixes.push_back(Fix);
+    if (Group) {
+      auto &Entry = Groups[Group->SkipHint];
+      if (Entry.Member.empty())
+        Entry.Member = *Group;
+      for (const Leaf &Existing : Entry.Leaves)
+        if (Existing.Message == Message)
+          return; // the same leaf reached again (a header seen twice)
+      Entry.Leaves.push_back(Leaf{Where, Message});
+      return;
+    }
+  }
+  std::string Text = Message;
+  if (!LeafSkip.empty())
+    Text += "; skip it: SYMCR_SKIP on the member, or '#pragma symcr skip(" +
+            LeafSkip + ")'";
+  error(Where, Text);
+}
+
+void Diagnostics::flushUnrestorable() {
+  std::map<std::string, Group> Pending;
+  std::vector<std::string> AllFixes;
+  {
+    std::lock_guard<std::mutex> Guard(Lock);
+    Pending.swap(Groups);
+    AllFixes = Fixes;
+  }
+  for (const auto &Entry : Pending) {
+    const Group &G = Entry.second;
+    error(G.Member.Where,
+          std::to_string(G.Leaves.size()) +
+              " unrestorable value(s) in an object reached through '" +
+              G.Member.Path + "' (" + G.Member.SkipHint + ", type " +
+              G.Member.TypeName + "): '#pragma symcr skip(" +
+              G.Member.SkipHint + ")' (or 'skip(" + G.Member.SkipHint +
+              ")' in the annotation file) removes all of them");
+    for (const Leaf &L : G.Leaves)
+      note(L.Where, L.Message);
+  }
+  if (AllFixes.empty() || Errors == 0)
+    return;
+  std::string List;
+  for (const std::string &Fix : AllFixes)
+    List += (List.empty() ? "skip(" : ", ") + Fix;
+  note(Location(), "these skip lines remove every unrestorable value above: " +
+                       List + ")");
 }
 
 static bool directiveKindFromName(const std::string &Name,

@@ -27,6 +27,15 @@ struct Location {
   bool valid() const { return !File.empty(); }
 };
 
+/// A member on a selection's path, as diagnostics name it.
+struct MemberRef {
+  std::string Path;     ///< "vehicle.ahrs.sim_backend"
+  std::string SkipHint; ///< "Ahrs::sim_backend"
+  std::string TypeName; ///< its type, "SimBackend"
+  Location Where;       ///< its declaration
+  bool empty() const { return SkipHint.empty(); }
+};
+
 /// Collects diagnostics from every TU; a diagnostic repeated by several TUs (a
 /// header seen twice) is printed once. Thread-safe: TUs are parsed in parallel.
 class Diagnostics {
@@ -36,12 +45,34 @@ public:
   void note(const Location &Loc, const std::string &Message);
   unsigned errorCount() const { return Errors; }
 
+  /// Something unrestorable at \p Where, fixed by skipping \p LeafSkip. When
+  /// the selection reached it through another object (\p Group: the member
+  /// that leads there), it is held back and reported under that member by
+  /// flushUnrestorable(), since skipping that one member removes every such
+  /// leaf, where the leaves' own skips would drag the other object's type into
+  /// the schema.
+  void unrestorable(const Location &Where, const std::string &Message,
+                    const std::string &LeafSkip, const MemberRef *Group);
+  /// Prints the held-back leaves grouped by member, then a closing line with
+  /// the skip lines that remove every unrestorable error.
+  void flushUnrestorable();
+
 private:
   void print(const Location &Loc, const char *Severity,
              const std::string &Message);
+  struct Leaf {
+    Location Where;
+    std::string Message;
+  };
+  struct Group {
+    MemberRef Member;
+    std::vector<Leaf> Leaves;
+  };
   std::mutex Lock;
   std::map<std::string, bool> Seen;
   unsigned Errors = 0;
+  std::map<std::string, Group> Groups; ///< by the member's skip hint
+  std::vector<std::string> Fixes;      ///< skip lines, in order of first need
 };
 
 /// Which symcr::ops template a type's operation table comes from.

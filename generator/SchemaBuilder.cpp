@@ -216,6 +216,11 @@ struct WalkContext {
   std::string SkipHint;      ///< "AP_AHRS::backend", for the fix in diagnostics
   std::string AnonymousName; ///< name for an unnamed record held by this field
   bool Shallow = false;
+  /// The member whose value holds the current one (empty at a root's top level).
+  MemberRef Enclosing;
+  /// Where the walk left the selected object for another one through a pointer:
+  /// the member to skip for everything unrestorable beyond (empty until then).
+  MemberRef Group;
 };
 
 /// Walks the types reachable from one TU's roots into the ProgramModel.
@@ -291,13 +296,28 @@ private:
 
 std::uint32_t TypeWalker::fail(const WalkContext &C, const std::string &What,
                                const std::string &Why) {
-  std::string Fix;
-  if (!C.SkipHint.empty())
-    Fix = "; skip it: SYMCR_SKIP on the member, or '#pragma symcr skip(" +
-          C.SkipHint + ")'";
-  Diags.error(C.Where, "'" + C.Path + "' reaches " + What +
-                           ", which cannot be " + "checkpointed: " + Why + Fix);
+  bool Grouped = !C.Group.empty() && C.Group.SkipHint != C.SkipHint;
+  Diags.unrestorable(C.Where,
+                     "'" + C.Path + "' reaches " + What + ", which cannot be " +
+                         "checkpointed: " + Why,
+                     C.SkipHint, Grouped ? &C.Group : nullptr);
   return symcr::kNoType;
+}
+
+/// The context for the object a pointer (raw or smart) at \p C points to. The
+/// first such crossing marks the group: the member holding the pointer (or the
+/// pointer itself at a root's top level), whose skip removes all beyond.
+static WalkContext intoPointee(const WalkContext &C,
+                               const std::string &PointerType) {
+  WalkContext Target = C;
+  Target.Path += "->";
+  Target.Shallow = false;
+  Target.AnonymousName.clear();
+  if (Target.Group.empty())
+    Target.Group = !C.Enclosing.empty()
+                       ? C.Enclosing
+                       : MemberRef{C.Path, C.SkipHint, PointerType, C.Where};
+  return Target;
 }
 
 const RecordDecl *TypeWalker::completeDefinition(const RecordDecl *RD,
@@ -876,11 +896,7 @@ std::uint32_t TypeWalker::pointer(QualType Type, const PointerType *PT,
   bool Fresh;
   std::uint32_t Index = reserve(Model.Name, Model.Name, Fresh);
   Walked[{Type.getTypePtr(), false}] = Index;
-  WalkContext Target = C;
-  Target.Path += "->";
-  Target.Shallow = false;
-  Target.AnonymousName.clear();
-  Model.Element = walk(Pointee, Target);
+  Model.Element = walk(Pointee, intoPointee(C, Model.Name));
   if (Model.Element == symcr::kNoType)
     return symcr::kNoType;
   Program.Types[Model.Element].NeedsLifecycle = true;
@@ -1118,7 +1134,7 @@ std::uint32_t TypeWalker::stdRecord(QualType Type, const RecordDecl *RD,
         Name == "unique_ptr" ? symcr::Kind::UniquePtr : symcr::Kind::SharedPtr;
     Model.Ops = Name == "unique_ptr" ? OpsKind::UniquePtr : OpsKind::SharedPtr;
     std::uint32_t Index = Reserve();
-    Model.Element = Element(Pointee, "->");
+    Model.Element = walk(Pointee, intoPointee(C, Model.Name));
     if (Model.Element == symcr::kNoType)
       return symcr::kNoType;
     store(Index, std::move(Model), C);
@@ -1221,7 +1237,11 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
              std::to_string(FieldIndex) + ")";
     }
     WalkContext F = C;
-    F.Path = C.Path + "." + Name;
+    // "sim->lock", not "sim->.lock"
+    F.Path = C.Path + (llvm::StringRef(C.Path).endswith("->") ? "" : ".") + Name;
+    F.Enclosing = C.SkipHint.empty()
+                      ? MemberRef()
+                      : MemberRef{C.Path, C.SkipHint, Model.Name, C.Where};
     F.Where = locationOf(Context, FD->getLocation());
     F.SkipHint = OwnerName + "::" + Name;
     F.Shallow = false;
@@ -1980,6 +2000,7 @@ void SchemaBuilder::addTranslationUnit(
 }
 
 void SchemaBuilder::finish(bool CheckUnmatched) {
+  Diags.flushUnrestorable();
   // Recorded in the schema (and its file) so that a plan without the program's code knows
   // which heap objects the build can rebuild.
   for (TypeModel &Type : Program.Types) {
