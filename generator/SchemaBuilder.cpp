@@ -869,8 +869,13 @@ bool TypeWalker::checkPointee(QualType Pointee, const WalkContext &C,
            "its layout is unknown here");
       return false;
     }
+    // A raw pointer to a polymorphic class is a reference to a checkpointed
+    // object (a member, an element), whose dynamic type is its declared one;
+    // one pointing anywhere else is refused when saving (kTypePolymorphic). An
+    // owning pointer's object would have to be rebuilt, by an unknown type.
     if (const auto *CRD = dyn_cast<CXXRecordDecl>(RD))
-      if (CRD->isPolymorphic() && !CRD->hasAttr<FinalAttr>()) {
+      if (CRD->isPolymorphic() && !CRD->hasAttr<FinalAttr>() &&
+          llvm::StringRef(Holder) != "pointer") {
         fail(C,
              std::string("a ") + Holder + " to polymorphic class '" +
                  Pointee.getAsString(*Policy) + "'",
@@ -899,7 +904,10 @@ std::uint32_t TypeWalker::pointer(QualType Type, const PointerType *PT,
   Model.Element = walk(Pointee, intoPointee(C, Model.Name));
   if (Model.Element == symcr::kNoType)
     return symcr::kNoType;
-  Program.Types[Model.Element].NeedsLifecycle = true;
+  // A polymorphic pointee is never created by restore (its dynamic type is
+  // unknown), and may be abstract: no Lifecycle.
+  if (!(Program.Types[Model.Element].Flags & symcr::kTypePolymorphic))
+    Program.Types[Model.Element].NeedsLifecycle = true;
   store(Index, std::move(Model), C);
   return Index;
 }
@@ -1430,6 +1438,8 @@ std::uint32_t TypeWalker::record(QualType Type, const RecordDecl *Decl,
     return Index;
   }
   Model.Kind = symcr::Kind::Struct;
+  if (CRD && CRD->isPolymorphic() && !CRD->hasAttr<FinalAttr>())
+    Model.Flags |= symcr::kTypePolymorphic;
   std::string Key = Model.Name;
   if (C.Shallow) {
     Model.Flags |= symcr::kTypeShallow;

@@ -548,6 +548,15 @@ class Encoder {
   }
 
   std::uint32_t new_heap_object(const Reference& reference) {
+    if (types_[reference.type].flags & kTypePolymorphic) {
+      // Its dynamic type is unknown: a heap object of the static type would be sliced.
+      fail_unsupported("a pointer to polymorphic class %s at %p that points to no checkpointed "
+                       "object (only members and elements of the state have a known dynamic "
+                       "type): point it at one, or skip it",
+                       types_[reference.type].name,
+                       reinterpret_cast<const void*>(reference.address));
+      return 0;
+    }
     const std::uint32_t object = schema_.root_count + static_cast<std::uint32_t>(s_.heap.size());
     const std::uint32_t region = add_region(Region{reference.address,
                                                    reference.address + size_of(reference.type),

@@ -56,6 +56,9 @@ enum : std::uint32_t {
                               // foresees heap objects rebuilt through raw pointers
   kTypeValidated = 1u << 4,   // the build has a symcr_validate for the type; recorded in schema
                               // files so that `symcr plan` says it cannot foresee the verdict
+  kTypePolymorphic = 1u << 5, // a class with virtual functions (not final): a raw pointer to it
+                              // must target a checkpointed object, whose dynamic type is its
+                              // declared one; save refuses one that would need a heap object
 };
 
 // FieldInfo::flags

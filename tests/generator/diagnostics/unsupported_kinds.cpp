@@ -1,5 +1,6 @@
 // Everything that cannot be restored meaningfully, each reached from one root.
 #include <atomic>
+#include <memory>
 #include <mutex>
 #include <thread>
 
@@ -25,7 +26,7 @@ struct State {
   std::atomic<int> counter;
   int& alias;
   void (*callback)(int);
-  Shape* shape;
+  std::unique_ptr<Shape> shape;  // owning: its dynamic type would have to be rebuilt
   Diamond diamond;
   Raw raw;
   void* opaque;
