@@ -338,25 +338,31 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
   // access-check exemption of [temp.spec]); friend functions defined by them
   // export a root's address or a type, so private nested types and private
   // static members need no edit of the class.
+  // The code below is compiled in the source's own dialect, C++11 or later.
+  // Private types are named through friend functions with deduced return types
+  // (C++14); in a C++11 source only accessible types are named, and private
+  // ones that need code are diagnosed (SchemaBuilder::finish).
+  const bool Deduces = TU.DeducesReturnTypes;
   OS << "namespace symcr_gen_access {\n"
-        "template <typename Tag, auto* Target>\n"
+        "template <typename Tag, typename Pointer, Pointer Target>\n"
         "struct export_address {\n"
         "  friend void* address(Tag) {\n"
         "    return const_cast<void*>(static_cast<const volatile "
         "void*>(Target));\n"
         "  }\n"
-        "};\n"
-        "template <typename Tag, typename T>\n"
-        "struct export_type {\n"
-        "  friend auto type_of(Tag) { return static_cast<T*>(nullptr); }\n"
         "};\n";
+  if (Deduces)
+    OS << "template <typename Tag, typename T>\n"
+          "struct export_type {\n"
+          "  friend auto type_of(Tag) { return static_cast<T*>(nullptr); }\n"
+          "};\n";
   auto IsScalar = [](const TypeModel &T) {
     return T.Kind == symcr::Kind::Bool || T.Kind == symcr::Kind::Int ||
            T.Kind == symcr::Kind::UInt || T.Kind == symcr::Kind::Float;
   };
   for (std::uint32_t I : Home) {
     const TypeModel &T = Program.Types[I];
-    if (T.Spelling.empty() || IsScalar(T))
+    if (T.Spelling.empty() || IsScalar(T) || !Deduces)
       continue;
     OS << "struct type_tag_" << I << " { friend auto type_of(type_tag_" << I
        << "); };\n"
@@ -367,16 +373,18 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
   OS << "namespace symcr_gen {\n";
   for (std::uint32_t I : Home) {
     const TypeModel &T = Program.Types[I];
-    if (T.Spelling.empty())
+    if (T.Spelling.empty() || (!Deduces && !T.Accessible))
       continue;
     std::string Type = T.Spelling;
     if (!IsScalar(T)) {
       Type = "type_" + std::to_string(I);
-      OS << "// " << T.Name << "\n"
-         << "using " << Type
-         << " = std::remove_pointer_t<decltype(type_of(symcr_gen_access::"
-            "type_tag_"
-         << I << "{}))>;\n";
+      OS << "// " << T.Name << "\n";
+      if (Deduces)
+        OS << "typedef std::remove_pointer<decltype(type_of(symcr_gen_access::"
+              "type_tag_"
+           << I << "{}))>::type " << Type << ";\n";
+      else
+        OS << "typedef " << T.Spelling << " " << Type << ";\n";
     }
     OS << "static_assert(sizeof(" << Type << ") == " << T.Size << " && alignof("
        << Type << ") == " << T.Align << ", \"symcr-gen: layout of " << T.Name

@@ -123,6 +123,10 @@ struct TypeModel {
   /// A C++ (or C) spelling usable in the home TU, empty if the type cannot be
   /// named there (unnamed or function-local types).
   std::string Spelling;
+  /// The spelling may be used at namespace scope: nothing in it is private or
+  /// protected. (Otherwise the wrapper names the type through an explicit
+  /// instantiation, which needs C++14's deduced return types.)
+  bool Accessible = true;
   std::vector<std::string> RenamedFrom;
   /// The program declares `bool symcr_validate(const T&)`: the home TU's
   /// wrapper defines a thunk calling it for TypeInfo::validate.
@@ -171,6 +175,8 @@ struct TranslationUnitModel {
   std::string Source;  ///< absolute path of the user's source file
   std::string Wrapper; ///< generated file that includes Source and adds exports
   bool IsC = false;
+  /// Parsed as C++14 or later: the wrapper may use deduced return types.
+  bool DeducesReturnTypes = true;
 };
 
 /// Per-root summary for --report.

@@ -239,6 +239,10 @@ public:
 
   std::uint32_t walk(QualType Type, const WalkContext &C);
   std::string spelling(QualType Type);
+  /// Whether code at namespace scope may name \p Type: no part of it (the
+  /// class, a class it is nested in, a template argument) is private or
+  /// protected.
+  static bool accessible(QualType Type);
   std::string canonicalRecordName(const RecordDecl *RD) {
     return recordName(RD, WalkContext());
   }
@@ -357,6 +361,28 @@ static void qualifyLike(const std::string &Name, std::vector<std::string> &OldNa
     else if (Old.find("::") == std::string::npos)
       Old = Scope + Old;
   }
+}
+
+bool TypeWalker::accessible(QualType Type) {
+  Type = Type.getCanonicalType();
+  if (const auto *PT = Type->getAs<PointerType>())
+    return accessible(PT->getPointeeType());
+  if (const auto *AT = dyn_cast<ArrayType>(Type.getTypePtr()))
+    return accessible(AT->getElementType());
+  const auto *TT = Type->getAs<TagType>();
+  if (!TT)
+    return true;
+  for (const Decl *D = TT->getDecl(); D && !isa<TranslationUnitDecl>(D);
+       D = dyn_cast<Decl>(D->getDeclContext())) {
+    if (D->getAccess() == AS_private || D->getAccess() == AS_protected)
+      return false;
+    if (const auto *Spec = dyn_cast<ClassTemplateSpecializationDecl>(D))
+      for (const TemplateArgument &Arg : Spec->getTemplateArgs().asArray())
+        if (Arg.getKind() == TemplateArgument::Type &&
+            !accessible(Arg.getAsType()))
+          return false;
+  }
+  return true;
 }
 
 std::string TypeWalker::spelling(QualType Type) {
@@ -797,6 +823,7 @@ std::uint32_t TypeWalker::enumeration(QualType Type, const EnumDecl *ED,
   Model.Kind = symcr::Kind::Enum;
   Model.Name = canonicalName(Type, C);
   Model.Spelling = spelling(Type);
+  Model.Accessible = accessible(Type);
   Model.Size = Context.getTypeSizeInChars(Type).getQuantity();
   Model.Align = Context.getTypeAlignInChars(Type).getQuantity();
   if (ED->isScoped())
@@ -926,6 +953,7 @@ std::uint32_t TypeWalker::synthesizedPair(QualType Key, QualType Value,
   std::string KeySpelling = spelling(Key), ValueSpelling = spelling(Value);
   if (!KeySpelling.empty() && !ValueSpelling.empty())
     Model.Spelling = "::std::pair<" + KeySpelling + ", " + ValueSpelling + ">";
+  Model.Accessible = accessible(Key) && accessible(Value);
   std::uint64_t KeySize = Context.getTypeSizeInChars(Key).getQuantity();
   std::uint64_t ValueSize = Context.getTypeSizeInChars(Value).getQuantity();
   std::uint64_t KeyAlign = Context.getTypeAlignInChars(Key).getQuantity();
@@ -996,6 +1024,7 @@ std::uint32_t TypeWalker::stdRecord(QualType Type, const RecordDecl *RD,
   TypeModel Model;
   Model.Name = canonicalName(Type, C);
   Model.Spelling = spelling(Type);
+  Model.Accessible = accessible(Type);
   Model.Size = Context.getTypeSizeInChars(Type).getQuantity();
   Model.Align = Context.getTypeAlignInChars(Type).getQuantity();
   bool Fresh;
@@ -1401,6 +1430,7 @@ std::uint32_t TypeWalker::record(QualType Type, const RecordDecl *Decl,
   TypeModel Model;
   Model.Name = canonicalName(Type, C);
   Model.Spelling = spelling(Type);
+  Model.Accessible = accessible(Type);
   Model.Size = Context.getTypeSizeInChars(Type).getQuantity();
   Model.Align = Context.getTypeAlignInChars(Type).getQuantity();
   Model.RenamedFrom = renamedFromAnnotations(RD);
@@ -1708,6 +1738,8 @@ void SchemaBuilder::addTranslationUnit(
   NameIndex Index(Context);
   Index.TraverseDecl(Context.getTranslationUnitDecl());
   Selections Select;
+  Program.TranslationUnits[TUIndex].DeducesReturnTypes =
+      Context.getLangOpts().CPlusPlus14;
 
   if (Context.getLangOpts().CPlusPlus) {
     findHooks(Context, Index.Validators, ValidationHook, Select.Validated,
@@ -1999,7 +2031,8 @@ void SchemaBuilder::addTranslationUnit(
           Root.AddressPrelude = "namespace symcr_gen_access {\nstruct " + Tag +
                                 " { friend void* address(" + Tag +
                                 "); };\ntemplate struct export_address<" + Tag +
-                                ", " + Target + ">;\n}\n";
+                                ", decltype(" + Target + "), " + Target +
+                                ">;\n}\n";
           Root.AddressExpression =
               "address(symcr_gen_access::" + Tag + "{})"; // by ADL
         }
@@ -2011,6 +2044,21 @@ void SchemaBuilder::addTranslationUnit(
 
 void SchemaBuilder::finish(bool CheckUnmatched) {
   Diags.flushUnrestorable();
+  // A C++11 wrapper can only name accessible types; one that needs code (ops,
+  // a Lifecycle, hooks) and is private cannot be served in that dialect.
+  for (const TypeModel &Type : Program.Types) {
+    const TranslationUnitModel &Home = Program.TranslationUnits[Type.HomeTU];
+    if (Home.IsC || Home.DeducesReturnTypes || Type.Accessible ||
+        Type.Spelling.empty())
+      continue;
+    if (Type.Ops != OpsKind::None || Type.hasLifecycle() ||
+        Type.hasValidate(Program) || Type.HasMigrate)
+      Diags.error(Location(),
+                  "type '" + Type.Name + "' is private or protected, and the code "
+                  "generated for it must name it, which C++11 cannot do from "
+                  "outside its class: compile '" + Home.Source +
+                  "' as C++14 or later, or skip the members that reach it");
+  }
   // Recorded in the schema (and its file) so that a plan without the program's code knows
   // which heap objects the build can rebuild.
   for (TypeModel &Type : Program.Types) {

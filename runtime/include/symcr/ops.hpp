@@ -2,22 +2,28 @@
 //   static const symcr::ContainerOps* ops = &symcr::ops::container<std::vector<int>>::table;
 // These are the only pieces of generated code that are not plain data: everything else the
 // runtime derives from offsets and sizes in the schema.
+// C++11 and every later dialect: the program's own code includes this header through the
+// generated wrappers, in the program's dialect. std::optional and std::variant exist, and are
+// supported, from C++17 on.
 #ifndef SYMCR_OPS_HPP
 #define SYMCR_OPS_HPP
 
 #include <cstddef>
 #include <iterator>
 #include <memory>
-#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
-#include <variant>
 #include <vector>
+#if __cplusplus >= 201703L
+#include <optional>
+#include <variant>
+#endif
 
 #include "symcr/schema.hpp"
 
-namespace symcr::ops {
+namespace symcr {
+namespace ops {
 
 template <typename T>
 struct lifecycle {
@@ -28,7 +34,7 @@ struct lifecycle {
 
 template <typename S>
 struct string {
-  using Char = typename S::value_type;
+  typedef typename S::value_type Char;
   static std::size_t size(const void* s) { return static_cast<const S*>(s)->size(); }
   static const void* data(const void* s) { return static_cast<const S*>(s)->data(); }
   static void assign(void* s, const void* chars, std::size_t n) {
@@ -38,20 +44,27 @@ struct string {
 };
 
 namespace detail {
+template <typename... T>
+struct make_void {
+  typedef void type;
+};
+template <typename... T>
+using void_t = typename make_void<T...>::type;
+
 template <typename C, typename = void>
 struct has_push_back : std::false_type {};
 template <typename C>
-struct has_push_back<C, std::void_t<decltype(std::declval<C&>().emplace_back())>>
+struct has_push_back<C, void_t<decltype(std::declval<C&>().emplace_back())>>
     : std::true_type {};
 template <typename C, typename = void>
 struct has_reserve : std::false_type {};
 template <typename C>
-struct has_reserve<C, std::void_t<decltype(std::declval<C&>().reserve(std::size_t{}))>>
+struct has_reserve<C, void_t<decltype(std::declval<C&>().reserve(std::size_t{}))>>
     : std::true_type {};
 template <typename C, typename = void>
 struct has_size : std::false_type {};
 template <typename C>
-struct has_size<C, std::void_t<decltype(std::declval<const C&>().size())>> : std::true_type {};
+struct has_size<C, void_t<decltype(std::declval<const C&>().size())>> : std::true_type {};
 
 template <typename C>
 struct is_contiguous_vector : std::false_type {};
@@ -62,12 +75,23 @@ struct is_contiguous_vector<std::vector<T, A>> : std::true_type {};
 // pair<K, V> so the key can be filled in before insertion.
 template <typename V>
 struct staged {
-  using type = V;
+  typedef V type;
 };
 template <typename K, typename V>
 struct staged<std::pair<const K, V>> {
-  using type = std::pair<K, V>;
+  typedef std::pair<K, V> type;
 };
+
+// What an associative insert returned: an iterator (multi-containers, always inserted) or
+// (iterator, inserted).
+template <typename Iterator>
+void* inserted_element(Iterator it) {
+  return const_cast<void*>(static_cast<const void*>(&*it));
+}
+template <typename Iterator>
+void* inserted_element(std::pair<Iterator, bool> result) {
+  return result.second ? const_cast<void*>(static_cast<const void*>(&*result.first)) : nullptr;
+}
 }  // namespace detail
 
 // The type the generator must describe (and give a Lifecycle) as a container's element:
@@ -75,78 +99,48 @@ struct staged<std::pair<const K, V>> {
 template <typename C>
 using element_t = typename detail::staged<typename C::value_type>::type;
 
+// Each operation that only some containers have is chosen by overload on a constant (tag
+// dispatch), so that only the one that applies is instantiated.
 template <typename C>
 struct container {
-  using Value = typename C::value_type;
-  static constexpr bool is_sequence = detail::has_push_back<C>::value;
+  typedef typename C::value_type Value;
+  typedef std::integral_constant<bool, detail::has_push_back<C>::value> Sequence;
+  typedef std::integral_constant<bool, detail::is_contiguous_vector<C>::value &&
+                                           !std::is_same<Value, bool>::value>
+      Contiguous;
+  static constexpr bool is_sequence = Sequence::value;
+  static constexpr bool is_contiguous = Contiguous::value;
 
   static std::size_t size(const void* c) {
-    const C& self = *static_cast<const C*>(c);
-    if constexpr (detail::has_size<C>::value) {
-      return self.size();
-    } else {
-      return static_cast<std::size_t>(std::distance(self.begin(), self.end()));
-    }
+    return size_of(*static_cast<const C*>(c), detail::has_size<C>());
   }
   static void for_each(const void* c, void (*visit)(void*, const void*), void* context) {
-    for (const Value& element : *static_cast<const C*>(c)) visit(context, &element);
+    const C& self = *static_cast<const C*>(c);
+    for (typename C::const_iterator it = self.begin(); it != self.end(); ++it) {
+      visit(context, &*it);
+    }
   }
   static void* element_at(void* c, std::size_t i) {
     C& self = *static_cast<C*>(c);
     if (i >= size(c)) return nullptr;
-    auto it = self.begin();
-    std::advance(it, static_cast<typename std::iterator_traits<decltype(it)>::difference_type>(i));
+    typename C::iterator it = self.begin();
+    std::advance(it, static_cast<typename std::iterator_traits<typename C::iterator>::difference_type>(i));
     // Associative elements are const (keys); restore only writes through pointers it owns.
     return const_cast<void*>(static_cast<const void*>(&*it));
   }
   static void clear(void* c) { static_cast<C*>(c)->clear(); }
   static void reserve(void* c, std::size_t n) {
-    if constexpr (detail::has_reserve<C>::value) static_cast<C*>(c)->reserve(n);
-    (void)c;
-    (void)n;
+    reserve_in(*static_cast<C*>(c), n, detail::has_reserve<C>());
   }
-  static void* append(void* c) {
-    if constexpr (is_sequence) {
-      return &static_cast<C*>(c)->emplace_back();
-    } else {
-      (void)c;
-      return nullptr;
-    }
-  }
+  static void* append(void* c) { return append_to(*static_cast<C*>(c), Sequence()); }
   static void* insert(void* c, void* staged) {
-    if constexpr (is_sequence) {
-      (void)c;
-      (void)staged;
-      return nullptr;
-    } else {
-      auto result = static_cast<C*>(c)->insert(std::move(*static_cast<element_t<C>*>(staged)));
-      if constexpr (std::is_same_v<decltype(result), typename C::iterator>) {
-        return const_cast<void*>(static_cast<const void*>(&*result));  // multi-containers
-      } else {
-        return result.second ? const_cast<void*>(static_cast<const void*>(&*result.first))
-                             : nullptr;
-      }
-    }
+    return insert_into(*static_cast<C*>(c), staged, Sequence());
   }
-  static constexpr bool is_contiguous =
-      detail::is_contiguous_vector<C>::value && !std::is_same_v<Value, bool>;
   static const void* contiguous_data(const void* c) {
-    if constexpr (is_contiguous) {
-      return static_cast<const C*>(c)->data();
-    } else {
-      (void)c;
-      return nullptr;
-    }
+    return data_of(*static_cast<const C*>(c), Contiguous());
   }
   static void* resize_default(void* c, std::size_t n) {
-    if constexpr (is_contiguous) {
-      static_cast<C*>(c)->resize(n);
-      return static_cast<C*>(c)->data();
-    } else {
-      (void)c;
-      (void)n;
-      return nullptr;
-    }
+    return resize(*static_cast<C*>(c), n, Contiguous());
   }
   static constexpr ContainerOps table{&size,
                                       &for_each,
@@ -157,8 +151,33 @@ struct container {
                                       is_sequence ? nullptr : &insert,
                                       is_contiguous ? &contiguous_data : nullptr,
                                       is_contiguous ? &resize_default : nullptr};
+
+ private:
+  static std::size_t size_of(const C& self, std::true_type) { return self.size(); }
+  static std::size_t size_of(const C& self, std::false_type) {
+    return static_cast<std::size_t>(std::distance(self.begin(), self.end()));
+  }
+  static void reserve_in(C& self, std::size_t n, std::true_type) { self.reserve(n); }
+  static void reserve_in(C&, std::size_t, std::false_type) {}
+  static void* append_to(C& self, std::true_type) {
+    self.emplace_back();  // returns void before C++17
+    return &self.back();
+  }
+  static void* append_to(C&, std::false_type) { return nullptr; }
+  static void* insert_into(C&, void*, std::true_type) { return nullptr; }
+  static void* insert_into(C& self, void* staged, std::false_type) {
+    return detail::inserted_element(self.insert(std::move(*static_cast<element_t<C>*>(staged))));
+  }
+  static const void* data_of(const C& self, std::true_type) { return self.data(); }
+  static const void* data_of(const C&, std::false_type) { return nullptr; }
+  static void* resize(C& self, std::size_t n, std::true_type) {
+    self.resize(n);
+    return self.data();
+  }
+  static void* resize(C&, std::size_t, std::false_type) { return nullptr; }
 };
 
+#if __cplusplus >= 201703L
 template <typename O>
 struct optional {
   static const void* get(const void* o) {
@@ -196,10 +215,11 @@ struct variant {
   }
   static constexpr VariantOps table{&index, &get, &emplace};
 };
+#endif
 
 template <typename P>
 struct unique_ptr {
-  using T = typename P::element_type;
+  typedef typename P::element_type T;
   static const void* get(const void* p) { return static_cast<const P*>(p)->get(); }
   static void* make(void* p) {
     static_cast<P*>(p)->reset(new T());
@@ -211,7 +231,7 @@ struct unique_ptr {
 
 template <typename P>
 struct shared_ptr {
-  using T = typename P::element_type;
+  typedef typename P::element_type T;
   static const void* get(const void* p) { return static_cast<const P*>(p)->get(); }
   static void* make_holder() { return new P(std::make_shared<T>()); }
   static void* holder_get(void* holder) { return static_cast<P*>(holder)->get(); }
@@ -224,6 +244,25 @@ struct shared_ptr {
                                       &assign_from_holder, &destroy_holder, &reset};
 };
 
+// Before C++17 a static constexpr member that is odr-used (its address taken) needs a
+// definition outside the class; from C++17 on it is inline and this would be redundant.
+#if __cplusplus < 201703L
+template <typename T>
+constexpr Lifecycle lifecycle<T>::table;
+template <typename S>
+constexpr StringOps string<S>::table;
+template <typename C>
+constexpr ContainerOps container<C>::table;
+template <typename C>
+constexpr bool container<C>::is_sequence;
+template <typename C>
+constexpr bool container<C>::is_contiguous;
+template <typename P>
+constexpr UniquePtrOps unique_ptr<P>::table;
+template <typename P>
+constexpr SharedPtrOps shared_ptr<P>::table;
+#endif
+
 // Byte offset of a member given by a member pointer, for private members reached through the
 // explicit-instantiation access technique (offsetof cannot name them).
 template <typename Class, typename Member>
@@ -234,6 +273,7 @@ std::uint32_t offset_of(Member Class::*member) {
                                     storage);
 }
 
-}  // namespace symcr::ops
+}  // namespace ops
+}  // namespace symcr
 
 #endif  // SYMCR_OPS_HPP

@@ -43,7 +43,7 @@ enum class ContainerKind : std::uint8_t {
   Map, MultiMap, UnorderedMap, UnorderedMultiMap,
 };
 
-inline constexpr std::uint32_t kNoType = 0xFFFFFFFFu;
+constexpr std::uint32_t kNoType = 0xFFFFFFFFu;
 
 // TypeInfo::flags
 enum : std::uint32_t {
