@@ -10,13 +10,17 @@
 
 namespace xv {
 
-inline int failures = 0;
+// The number of failed checks (a function, not an inline variable: the helpers are C++11).
+inline int& failures() {
+  static int count = 0;
+  return count;
+}
 
 #define XV_CHECK(condition)                                                        \
   do {                                                                             \
     if (!(condition)) {                                                            \
       std::fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #condition); \
-      ++xv::failures;                                                              \
+      ++xv::failures();                                                            \
     }                                                                              \
   } while (0)
 
@@ -81,8 +85,8 @@ inline bool restored(const symcr::Report& report, const char* path) {
 }
 
 inline int verdict() {
-  if (failures) std::fprintf(stderr, "%d check(s) failed\n", failures);
-  return failures ? 1 : 0;
+  if (failures()) std::fprintf(stderr, "%d check(s) failed\n", failures());
+  return failures() ? 1 : 0;
 }
 
 }  // namespace xv

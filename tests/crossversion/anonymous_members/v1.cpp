@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   for (const symcr::ReportEntry& e : report.entries()) {
     if (e.decision == symcr::Decision::Dropped) {
       std::fprintf(stderr, "dropped: %s\n", e.path.c_str());
-      ++xv::failures;
+      ++xv::failures();
     }
   }
   return xv::verdict();

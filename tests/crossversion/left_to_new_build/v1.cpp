@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
                       e.path == "copter.on_update";
     if (left) {
       std::fprintf(stderr, "'%s' is in the schema: %s\n", e.path.c_str(), e.detail.c_str());
-      ++xv::failures;
+      ++xv::failures();
     }
   }
   return xv::verdict();
