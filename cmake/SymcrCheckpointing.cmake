@@ -26,6 +26,10 @@
 # keeps only the runtime functions it reaches. Setting the variable false turns it off. The
 # generated tables stay: they are reached from symcr_program_schema, which the runtime calls.
 #
+# Roots must be defined in <target>'s own sources: the sources of the static libraries it links
+# (targets of this project, at any depth, as linked when the function is called) are checked,
+# and a root defined there fails the build with a diagnostic naming it.
+#
 # PROGRAM names the program in its checkpoints (default: the calling project's PROJECT_NAME), so
 # that a restore refuses a checkpoint of another program whose roots happen to have the same
 # names. Builds of one program (v0 and its patched v1) must share the name.
@@ -97,6 +101,51 @@ function(symcr_add_checkpointing target)
   if(NOT program)
     set(program "${PROJECT_NAME}")
   endif()
+  # Sources of the static libraries the target links (in this project, at any depth): symcr-gen
+  # checks them for roots, which it could not export from there, so that such a root is a build
+  # error naming it rather than silently absent from every checkpoint.
+  set(library_args)
+  set(library_inputs)
+  set(pending_libraries)
+  get_target_property(linked ${target} LINK_LIBRARIES)
+  if(linked)
+    list(APPEND pending_libraries ${linked})
+  endif()
+  set(seen_libraries)
+  while(pending_libraries)
+    list(POP_FRONT pending_libraries library)
+    if(NOT TARGET ${library} OR library IN_LIST seen_libraries)
+      continue()
+    endif()
+    list(APPEND seen_libraries ${library})
+    get_target_property(aliased ${library} ALIASED_TARGET)
+    if(aliased)
+      list(APPEND pending_libraries ${aliased})
+      continue()
+    endif()
+    get_target_property(library_type ${library} TYPE)
+    get_target_property(imported ${library} IMPORTED)
+    if(NOT library_type STREQUAL "STATIC_LIBRARY" OR imported OR library STREQUAL "symcr_runtime")
+      continue()
+    endif()
+    set_target_properties(${library} PROPERTIES EXPORT_COMPILE_COMMANDS ON)
+    get_target_property(library_sources ${library} SOURCES)
+    get_target_property(library_dir ${library} SOURCE_DIR)
+    foreach(source IN LISTS library_sources)
+      get_filename_component(extension "${source}" LAST_EXT)
+      if(source MATCHES "^\\$<" OR NOT extension MATCHES "^\\.(c|cc|cpp|cxx|c\\+\\+|C)$")
+        continue()
+      endif()
+      get_filename_component(path "${source}" ABSOLUTE BASE_DIR "${library_dir}")
+      list(APPEND library_args --library-source "${path}")
+      list(APPEND library_inputs "${path}")
+    endforeach()
+    get_target_property(library_links ${library} LINK_LIBRARIES)
+    if(library_links)
+      list(APPEND pending_libraries ${library_links})
+    endif()
+  endwhile()
+
   set(schema "${out_dir}/symcr_schema.cpp")
   set(schema_file "${out_dir}/${target}.symcr-schema")
   set(annotation_args)
@@ -108,8 +157,8 @@ function(symcr_add_checkpointing target)
     COMMAND "${generator}" -p "${CMAKE_BINARY_DIR}" --out-dir "${out_dir}"
             --schema-file "${schema_file}" --program "${program}"
             --depfile "${out_dir}/symcr-gen.d" --depfile-target "${schema}"
-            --report-file "${out_dir}/report.txt" ${annotation_args} ${inputs}
-    DEPENDS ${generator_dependency} ${inputs} ${annotations}
+            --report-file "${out_dir}/report.txt" ${annotation_args} ${library_args} ${inputs}
+    DEPENDS ${generator_dependency} ${inputs} ${library_inputs} ${annotations}
     DEPFILE "${out_dir}/symcr-gen.d"
     COMMENT "symcr-gen: generating checkpoint code for ${target}"
     VERBATIM)

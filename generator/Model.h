@@ -177,6 +177,9 @@ struct TranslationUnitModel {
   bool IsC = false;
   /// Parsed as C++14 or later: the wrapper may use deduced return types.
   bool DeducesReturnTypes = true;
+  /// A source of a static library the program links (--library-source): only
+  /// checked for roots, which cannot be served there; no wrapper.
+  bool LibraryOnly = false;
 };
 
 /// Per-root summary for --report.

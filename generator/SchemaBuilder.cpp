@@ -1910,6 +1910,19 @@ void SchemaBuilder::addTranslationUnit(
       }
       if (VD->isThisDeclarationADefinition() == VarDecl::DeclarationOnly)
         continue;
+      if (Program.TranslationUnits[TUIndex].LibraryOnly) {
+        // The program links this source's object from a library: the code that
+        // exports the root's address cannot be compiled into it from here.
+        DefinedRootNames.insert(Entry.first);
+        Diags.error(Where,
+                    "root '" + Entry.first + "' is defined in '" +
+                        Program.TranslationUnits[TUIndex].Source +
+                        "', a source of a static library the program links, "
+                        "so it would not be checkpointed: define it in one of "
+                        "the program's own sources, or compile this source as "
+                        "part of the program");
+        continue;
+      }
       bool Shallow = hasAnnotation(VD, "checkpoint_shallow") ||
                      (Request != Select.Roots.end() && Request->second.Shallow);
       const std::string &Name = Entry.first;

@@ -70,6 +70,11 @@ static llvm::cl::opt<std::string> ProgramName(
     llvm::cl::desc("The program's name, written into its checkpoints: a restore refuses a "
                    "checkpoint of another program (default: none, accepted by any)"),
     llvm::cl::value_desc("name"), llvm::cl::cat(Category));
+static llvm::cl::list<std::string> LibrarySources(
+    "library-source",
+    llvm::cl::desc("A source of a static library the program links: a root "
+                   "defined there is an error (repeatable)"),
+    llvm::cl::value_desc("file"), llvm::cl::cat(Category));
 static llvm::cl::opt<std::string>
     Depfile("depfile", llvm::cl::desc("Write a Makefile-style depfile"),
             llvm::cl::value_desc("file"), llvm::cl::cat(Category));
@@ -271,12 +276,16 @@ int main(int argc, const char **argv) {
   Program.Name = ProgramName;
   std::map<std::string, std::string> SourceToWrapper;
   std::vector<std::string> Sources;
-  for (const std::string &Path : Parser->getSourcePathList()) {
+  std::vector<std::string> AllSources = Parser->getSourcePathList();
+  AllSources.insert(AllSources.end(), LibrarySources.begin(), LibrarySources.end());
+  for (std::size_t SourceIndex = 0; SourceIndex < AllSources.size(); ++SourceIndex) {
+    const std::string &Path = AllSources[SourceIndex];
     TranslationUnitModel TU;
     TU.Source = absolute(Path);
+    TU.LibraryOnly = SourceIndex >= Parser->getSourcePathList().size();
     llvm::StringRef Extension = llvm::sys::path::extension(TU.Source);
     TU.IsC = Extension == ".c";
-    if (!OutDir.empty()) {
+    if (!OutDir.empty() && !TU.LibraryOnly) {
       TU.Wrapper = absolute(wrapperPath(
           OutDir, static_cast<unsigned>(Sources.size()), TU.Source));
       SourceToWrapper[TU.Source] = TU.Wrapper;
@@ -389,7 +398,8 @@ int main(int argc, const char **argv) {
     if (!writeFileIfChanged(Schema, emitSchemaSource(Program), Diags))
       return 1;
     for (unsigned I = 0; I < Program.TranslationUnits.size(); ++I)
-      if (!writeFileIfChanged(Program.TranslationUnits[I].Wrapper,
+      if (!Program.TranslationUnits[I].LibraryOnly &&
+          !writeFileIfChanged(Program.TranslationUnits[I].Wrapper,
                               emitWrapper(Program, I), Diags))
         return 1;
     if (!Depfile.empty()) {
