@@ -474,7 +474,10 @@ Status Store::open_descriptor(const char* path, const Schema& schema,
     fd = ::open(path, O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
     created = fd >= 0;
     if (fd < 0 && (errno == EEXIST || is_permission_error(errno))) {
+      const int create_error = errno;
       fd = ::open(path, O_RDWR | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+      // Absent and not creatable (a read-only directory): the creation's error says why.
+      if (fd < 0 && errno == ENOENT) return open_error(path, create_error);
     }
     if (fd < 0 && is_permission_error(errno)) {
       read_only_reason = std::string("store ") + path + " was opened read-only (" +
