@@ -366,10 +366,10 @@ class Planner {
       }
     }
     // Sorted by writer value: restore looks values up by binary search.
-    std::stable_sort(n.enum_map.begin(), n.enum_map.end(),
-                     [](const EnumMapping& a, const EnumMapping& b) {
-                       return a.writer_value < b.writer_value;
-                     });
+    std::sort(n.enum_map.begin(), n.enum_map.end(),
+              [](const EnumMapping& a, const EnumMapping& b) {
+                return a.writer_value < b.writer_value;
+              });
     collapse_enum_aliases(n.enum_map);
     if (n.identical) return;
     n.decision = Decision::Converted;
