@@ -101,6 +101,9 @@ class StoreTest : public ::testing::Test {
   // Scrambles the live state, reopens the store and restores: the checkpoint of `sequence`,
   // which saved seed `sequence`, must come back.
   void expect_restores_sequence(int sequence);
+  // Scrambles the live state and restores the newest slot of the open `store`, which must
+  // hold seed `seed`.
+  void expect_store_restores(symcr::Store& store, int seed);
 };
 
 void expect_a(int seed) {
@@ -108,6 +111,13 @@ void expect_a(int seed) {
   EXPECT_EQ(copter_a.mission.items[2].speed, seed * 10 + 2);
   EXPECT_EQ(copter_a.armed_ms, 5000000000ull + static_cast<std::uint64_t>(seed));
   EXPECT_EQ(telemetry_a.frames, static_cast<std::uint32_t>(7 * seed));
+}
+
+void StoreTest::expect_store_restores(symcr::Store& store, int seed) {
+  scramble_a();
+  const symcr::Report report = store.restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  expect_a(seed);
 }
 
 void StoreTest::expect_restores_sequence(int sequence) {
@@ -410,10 +420,7 @@ TEST_F(StoreTest, DifferentGeometryWithCheckpointsRestoresThemAndRewritesTheStor
     open(store);
     EXPECT_EQ(read_file(path), before) << "opening wrote into the store";
     EXPECT_EQ(store.options().slots, 4u) << "reads with the file's own geometry";
-    scramble_a();
-    const symcr::Report report = store.restore_latest();
-    ASSERT_TRUE(report.ok()) << report.status().message();
-    expect_a(3);
+    expect_store_restores(store, 3);
     fill_a(4);
     const symcr::Status saved = store.save();
     ASSERT_TRUE(saved.ok()) << saved.message();
@@ -472,10 +479,7 @@ TEST_F(StoreTest, ACorruptHeaderWithAnotherGeometryRequestedOpensRestoreOnly) {
   symcr::Store store;
   open(store);
   EXPECT_TRUE(store.read_only());
-  scramble_a();
-  const symcr::Report report = store.restore_latest();
-  ASSERT_TRUE(report.ok()) << report.status().message();
-  expect_a(3);
+  expect_store_restores(store, 3);
   fill_a(4);
   const symcr::Status saved = store.save();
   EXPECT_EQ(saved.error(), Error::Io);
