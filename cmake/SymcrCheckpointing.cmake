@@ -7,6 +7,10 @@
 # target only (other targets may still compile the same sources). One generated
 # symcr_schema.cpp holds the program's schema. Call it after all sources have been added.
 #
+# A source that holds a program point (checkpoint_at, restore_at) is compiled as a copy with the
+# point's calls inserted, <binary dir>/symcr/<target>/tu<N>_points_<file>, which its wrapper
+# includes in place of the source (generator/README.md, "Program points").
+#
 # The generator is, in order: the cache variable SYMCR_GEN_EXECUTABLE (a prebuilt symcr-gen,
 # e.g. for sanitizer builds), or the target symcr::gen (built in this project, or imported by
 # find_package(symcr)). It reads the target's flags from compile_commands.json, which this

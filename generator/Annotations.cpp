@@ -119,6 +119,12 @@ static bool directiveKindFromName(const std::string &Name,
     Kind = DirectiveKind::Include;
   else if (Name == "range")
     Kind = DirectiveKind::Range;
+  else if (Name == "checkpoint_at")
+    Kind = DirectiveKind::CheckpointAt;
+  else if (Name == "restore_at")
+    Kind = DirectiveKind::RestoreAt;
+  else if (Name == "store")
+    Kind = DirectiveKind::Store;
   else
     return false;
   return true;
@@ -127,6 +133,36 @@ static bool directiveKindFromName(const std::string &Name,
 static bool isNameChar(char C) {
   return std::isalnum(static_cast<unsigned char>(C)) || C == '_' || C == ':' ||
          C == '<' || C == '>' || C == ',' || C == '*' || C == ' ';
+}
+
+/// The directive as one writes it, whatever the spacing (a macro's tokens
+/// arrive spaced apart): a space only between two words and after commas.
+static std::string normalizedSpelling(const std::string &Text) {
+  auto IsWord = [](char C) {
+    return std::isalnum(static_cast<unsigned char>(C)) || C == '_';
+  };
+  std::string Out;
+  bool InQuotes = false;
+  bool PendingSpace = false;
+  for (char C : Text) {
+    if (InQuotes) {
+      Out += C;
+      InQuotes = C != '"';
+      continue;
+    }
+    if (std::isspace(static_cast<unsigned char>(C))) {
+      PendingSpace = true;
+      continue;
+    }
+    if (PendingSpace && !Out.empty() && IsWord(Out.back()) && IsWord(C))
+      Out += ' ';
+    PendingSpace = false;
+    Out += C;
+    InQuotes = C == '"';
+    if (C == ',')
+      Out += ' ';
+  }
+  return Out;
 }
 
 bool parseDirectiveText(const std::string &Text, const Location &Where,
@@ -154,7 +190,8 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
   if (!directiveKindFromName(Name, D.Kind)) {
     Diags.error(At(NameBegin),
                 "unknown symcr directive '" + Name +
-                    "' (expected checkpoint, skip, renamed, include or range)");
+                    "' (expected checkpoint, skip, renamed, include, range, "
+                    "checkpoint_at, restore_at or store)");
     return false;
   }
   SkipSpace();
@@ -163,25 +200,33 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
     return false;
   }
   ++I;
-  // Arguments are separated by commas outside template angle brackets.
+  // Arguments are separated by commas outside template angle brackets and
+  // quotes; whitespace is dropped outside quotes.
   int AngleDepth = 0;
+  bool InQuotes = false;
   std::string Current;
   std::size_t CurrentBegin = I;
   bool Closed = false;
   auto Flush = [&]() {
-    std::string Compact;
-    for (char C : Current)
-      if (!std::isspace(static_cast<unsigned char>(C)))
-        Compact += C;
     std::size_t Lead = 0;
     while (CurrentBegin + Lead < Text.size() &&
            std::isspace(static_cast<unsigned char>(Text[CurrentBegin + Lead])))
       ++Lead;
-    D.Arguments.push_back({Compact, At(CurrentBegin + Lead)});
+    D.Arguments.push_back({Current, At(CurrentBegin + Lead)});
     Current.clear();
   };
   for (; I < Text.size(); ++I) {
     char C = Text[I];
+    if (InQuotes) {
+      Current += C;
+      InQuotes = C != '"';
+      continue;
+    }
+    if (C == '"') {
+      InQuotes = true;
+      Current += C;
+      continue;
+    }
     if (C == '<')
       ++AngleDepth;
     else if (C == '>')
@@ -197,9 +242,10 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
       CurrentBegin = I + 1;
       continue;
     }
-    if (C != '"' && !isNameChar(C) &&
-        !std::isspace(static_cast<unsigned char>(C)) && C != '.' && C != '-' &&
-        C != '+') {
+    if (std::isspace(static_cast<unsigned char>(C)))
+      continue;
+    if (!isNameChar(C) && C != '.' && C != '-' && C != '+' && C != '=' &&
+        C != '/') {
       Diags.error(At(I), std::string("unexpected character '") + C +
                              "' in symcr directive");
       return false;
@@ -210,6 +256,7 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
     Diags.error(At(Text.size()), "expected ')' to end the symcr directive");
     return false;
   }
+  D.Spelling = normalizedSpelling(Text.substr(NameBegin, I - NameBegin));
   SkipSpace();
   if (I < Text.size()) {
     Diags.error(At(I), "unexpected text after the symcr directive");

@@ -29,10 +29,15 @@ enum class DirectiveKind {
   Renamed,    ///< renamed(Type::field | Type | var, old_name)
   Include,    ///< include(Type::field, ...): selected for a shallow root
   Range,      ///< range(Type::field, lo, hi): as SYMCR_RANGE(lo, hi)
+  CheckpointAt, ///< checkpoint_at(function, entry|exit [, every N])
+  RestoreAt,    ///< restore_at(function, entry|exit [, on_failure=continue|stop] ...)
+  Store,        ///< store(path [, slots=N] [, slot_size=N] [, durability=...])
 };
 
 struct DirectiveArgument {
-  std::string Text; ///< "Copter::mission", whitespace removed
+  /// "Copter::mission", whitespace removed outside quotes; the quotes of a
+  /// quoted argument are removed.
+  std::string Text;
   Location Where;
 };
 
@@ -42,6 +47,7 @@ struct Directive {
   bool Shallow = false;
   bool FromSidecar = false;
   Location Where;
+  std::string Spelling; ///< the directive as written, "skip(A::b)"
 };
 
 /// Parses a sidecar annotation file: one directive per line, written as in a

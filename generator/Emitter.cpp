@@ -10,8 +10,6 @@
 
 namespace symcr_gen {
 
-namespace {
-
 std::string quoted(const std::string &Text) {
   std::string Out = "\"";
   for (char C : Text) {
@@ -25,6 +23,8 @@ std::string quoted(const std::string &Text) {
   }
   return Out + "\"";
 }
+
+namespace {
 
 std::string number(double Value) {
   char Buffer[64];
@@ -278,7 +278,8 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
      << "// The source is compiled through this wrapper so that the code below "
         "sees its\n"
      << "// internal declarations (anonymous namespaces, statics).\n"
-     << "#include " << quoted(TU.Source) << "\n\n";
+     << "#include " << quoted(TU.hasPoints() ? TU.PointedCopy : TU.Source)
+     << "\n\n";
   std::vector<std::uint32_t> Home;
   for (std::uint32_t I = 0; I < Program.Types.size(); ++I)
     if (Program.Types[I].HomeTU == TUIndex)

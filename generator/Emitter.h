@@ -16,6 +16,9 @@
 
 namespace symcr_gen {
 
+/// \p Text as a C and C++ string literal.
+std::string quoted(const std::string &Text);
+
 /// The schema source: tables and symcr_program_schema().
 std::string emitSchemaSource(const ProgramModel &Program);
 

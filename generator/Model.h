@@ -171,6 +171,38 @@ struct RootModel {
   Location Where;
 };
 
+/// A checkpoint_at or restore_at directive, and the store all points use.
+struct PointModel {
+  bool Restore = false; ///< restore_at (else checkpoint_at)
+  std::string Function; ///< as written, "Copter::fast_loop" (no leading ::)
+  bool AtExit = false;  ///< exit (every return path), else entry
+  unsigned Every = 1;   ///< checkpoint_at: save on every N-th pass
+  bool StopOnFailure = false; ///< restore_at: on_failure=stop
+  bool Strict = false;        ///< restore_at: strict
+  std::string Spelling;       ///< the directive as written
+  Location Where;             ///< of the directive
+  /// Where the function was found defined, for the report and diagnostics.
+  std::vector<std::string> InsertedAt;
+};
+
+struct PointStoreModel {
+  std::string Path;
+  unsigned Slots = 0;    ///< 0: the runtime's default
+  unsigned SlotSize = 0; ///< 0: the runtime's default
+  bool Fdatasync = false;
+  std::string Spelling;
+  Location Where; ///< invalid when no store directive was given
+};
+
+/// A text edit of a source's copy (a point's call, an include made absolute).
+struct SourceEdit {
+  unsigned Offset = 0; ///< in the source's text
+  unsigned Length = 0; ///< replaced characters (0: an insertion)
+  std::string Text;
+  unsigned Point = 0;  ///< the PointModel an insertion serves (else unused)
+  bool IsPoint = false;
+};
+
 struct TranslationUnitModel {
   std::string Source;  ///< absolute path of the user's source file
   std::string Wrapper; ///< generated file that includes Source and adds exports
@@ -180,6 +212,12 @@ struct TranslationUnitModel {
   /// A source of a static library the program links (--library-source): only
   /// checked for roots, which cannot be served there; no wrapper.
   bool LibraryOnly = false;
+  /// Program points defined in this source: the wrapper then includes
+  /// PointedCopy, a copy of SourceText with Edits applied, instead of Source.
+  std::vector<SourceEdit> Edits;
+  std::string SourceText;
+  std::string PointedCopy;
+  bool hasPoints() const { return !PointedCopy.empty(); }
 };
 
 /// Per-root summary for --report.
@@ -200,6 +238,8 @@ struct ProgramModel {
   std::vector<TranslationUnitModel> TranslationUnits;
   std::vector<RootReport> Reports;
   std::vector<std::string> Dependencies; ///< every file read (for the depfile)
+  std::vector<PointModel> Points;
+  PointStoreModel PointStore;
 };
 
 inline bool TypeModel::hasValidate(const ProgramModel &Program) const {

@@ -1878,6 +1878,10 @@ void SchemaBuilder::addTranslationUnit(
         }
         break;
       }
+      case DirectiveKind::CheckpointAt:
+      case DirectiveKind::RestoreAt:
+      case DirectiveKind::Store:
+        return; // program points: ProgramPoints
       }
       if (Found && Matched)
         (*Matched)[I] = true;

@@ -11,6 +11,7 @@
 #include "Annotations.h"
 #include "CompileCommand.h"
 #include "Emitter.h"
+#include "ProgramPoints.h"
 #include "SchemaBuilder.h"
 #include "SchemaFile.h"
 
@@ -18,6 +19,7 @@
 #include "clang/Frontend/CompilerInstance.h"
 #include "clang/Frontend/FrontendActions.h"
 #include "clang/Frontend/Utils.h"
+#include "clang/Lex/PPCallbacks.h"
 #include "clang/Lex/Preprocessor.h"
 #include "clang/Sema/SemaConsumer.h"
 #include "clang/Tooling/ArgumentsAdjusters.h"
@@ -182,16 +184,47 @@ private:
   unsigned Next = 0;
 };
 
+/// Records the source's own quoted #includes as resolved, for a copy of the
+/// source in another directory (ProgramPoints).
+class IncludeRecorder : public PPCallbacks {
+public:
+  IncludeRecorder(const SourceManager &SM, std::vector<ResolvedInclude> &Out)
+      : SM(SM), Out(Out) {}
+  void InclusionDirective(SourceLocation HashLoc, const Token &,
+                          StringRef, bool IsAngled,
+                          CharSourceRange FilenameRange, const FileEntry *File,
+                          StringRef, StringRef, const Module *,
+                          SrcMgr::CharacteristicKind) override {
+    if (IsAngled || !File || FilenameRange.getBegin().isMacroID() ||
+        !SM.isWrittenInMainFile(HashLoc))
+      return;
+    unsigned Begin = SM.getFileOffset(FilenameRange.getBegin());
+    unsigned End = SM.getFileOffset(FilenameRange.getEnd());
+    if (End <= Begin)
+      return;
+    Out.push_back({Begin, End - Begin, absolute(File->tryGetRealPathName().empty()
+                                               ? File->getName().str()
+                                               : File->tryGetRealPathName().str())});
+  }
+
+private:
+  const SourceManager &SM;
+  std::vector<ResolvedInclude> &Out;
+};
+
 class GenerateAction : public ASTFrontendAction {
 public:
-  GenerateAction(SchemaBuilder &Builder, Diagnostics &Diags, TurnOrder &Turns,
-                 unsigned TUIndex, std::set<std::string> &Dependencies)
-      : Builder(Builder), Diags(Diags), Turns(Turns), TUIndex(TUIndex),
-        Dependencies(Dependencies) {}
+  GenerateAction(SchemaBuilder &Builder, ProgramPoints &Points,
+                 Diagnostics &Diags, TurnOrder &Turns, unsigned TUIndex,
+                 std::set<std::string> &Dependencies)
+      : Builder(Builder), Points(Points), Diags(Diags), Turns(Turns),
+        TUIndex(TUIndex), Dependencies(Dependencies) {}
 
   bool BeginSourceFileAction(CompilerInstance &CI) override {
     CI.getPreprocessor().AddPragmaHandler(
         createPragmaHandler(Pragmas, Diags).release());
+    CI.getPreprocessor().addPPCallbacks(std::make_unique<IncludeRecorder>(
+        CI.getSourceManager(), Includes));
     Collector = std::make_shared<DependencyCollector>();
     Collector->attachToPreprocessor(CI.getPreprocessor());
     return true;
@@ -209,8 +242,14 @@ public:
           return; // the front end already failed; no schema from a broken AST
         if (!Action.Turns.await(Action.TUIndex))
           return;
+        std::vector<Directive> SchemaPragmas;
+        for (const Directive &D : Action.Pragmas)
+          if (!isPointDirective(D))
+            SchemaPragmas.push_back(D);
         Action.Builder.addTranslationUnit(Context, TheSema, Action.TUIndex,
-                                          Action.Pragmas);
+                                          SchemaPragmas);
+        Action.Points.addTranslationUnit(Context, Action.TUIndex,
+                                         Action.Pragmas, Action.Includes);
         Action.Turns.done(Action.TUIndex);
       }
 
@@ -228,28 +267,31 @@ public:
 
 private:
   SchemaBuilder &Builder;
+  ProgramPoints &Points;
   Diagnostics &Diags;
   TurnOrder &Turns;
   unsigned TUIndex;
   std::set<std::string> &Dependencies;
   std::vector<Directive> Pragmas;
+  std::vector<ResolvedInclude> Includes;
   std::shared_ptr<DependencyCollector> Collector;
 };
 
 class GenerateActionFactory : public FrontendActionFactory {
 public:
-  GenerateActionFactory(SchemaBuilder &Builder, Diagnostics &Diags,
-                        TurnOrder &Turns, unsigned TUIndex,
+  GenerateActionFactory(SchemaBuilder &Builder, ProgramPoints &Points,
+                        Diagnostics &Diags, TurnOrder &Turns, unsigned TUIndex,
                         std::set<std::string> &Dependencies)
-      : Builder(Builder), Diags(Diags), Turns(Turns), TUIndex(TUIndex),
-        Dependencies(Dependencies) {}
+      : Builder(Builder), Points(Points), Diags(Diags), Turns(Turns),
+        TUIndex(TUIndex), Dependencies(Dependencies) {}
   std::unique_ptr<FrontendAction> create() override {
-    return std::make_unique<GenerateAction>(Builder, Diags, Turns, TUIndex,
-                                            Dependencies);
+    return std::make_unique<GenerateAction>(Builder, Points, Diags, Turns,
+                                            TUIndex, Dependencies);
   }
 
 private:
   SchemaBuilder &Builder;
+  ProgramPoints &Points;
   Diagnostics &Diags;
   TurnOrder &Turns;
   unsigned TUIndex;
@@ -295,6 +337,9 @@ int main(int argc, const char **argv) {
   }
 
   WrapperAwareDatabase Database(Parser->getCompilations(), SourceToWrapper);
+  ProgramPoints Points(Program, Diags, Sidecar);
+  Sidecar.erase(std::remove_if(Sidecar.begin(), Sidecar.end(), isPointDirective),
+                Sidecar.end());
   SchemaBuilder Builder(Program, Diags, std::move(Sidecar));
   std::set<std::string> Dependencies(AnnotationFiles.begin(),
                                      AnnotationFiles.end());
@@ -322,7 +367,7 @@ int main(int argc, const char **argv) {
           {"-DSYMCR_GENERATOR=1", "-resource-dir=" SYMCR_CLANG_RESOURCE_DIR,
            "-w", "-Wno-unknown-warning-option"},
           ArgumentInsertPosition::END));
-      GenerateActionFactory Factory(Builder, Diags, Turns, I,
+      GenerateActionFactory Factory(Builder, Points, Diags, Turns, I,
                                     TUDependencies[I]);
       bool Failed = Tool.run(&Factory) != 0;
       // A TU that failed (or had no command) still passes on its turn.
@@ -366,6 +411,7 @@ int main(int argc, const char **argv) {
   // A source that could not be parsed defines roots and types nothing else
   // sees: "matches nothing" would then be a false lead.
   Builder.finish(/*CheckUnmatched=*/UnparsedSources == 0);
+  Points.finish(/*CheckUnmatched=*/UnparsedSources == 0);
   if (UnparsedSources || Diags.errorCount()) {
     llvm::errs() << "symcr-gen: " << Diags.errorCount() + UnparsedSources
                  << " error(s)";
@@ -380,7 +426,7 @@ int main(int argc, const char **argv) {
     Diags.warning(Location(),
                   "no roots: nothing is annotated with SYMCR_CHECKPOINT "
                   "or a checkpoint directive; the schema is empty");
-  std::string ReportText = renderReport(Program);
+  std::string ReportText = renderReport(Program) + renderPointsReport(Program);
   if (Report)
     llvm::outs() << ReportText;
   if (!ReportFile.empty() && !writeFileIfChanged(ReportFile, ReportText, Diags))
@@ -394,6 +440,18 @@ int main(int argc, const char **argv) {
   }
   if (!OutDir.empty()) {
     llvm::sys::fs::create_directories(OutDir);
+    // A source with points is compiled as a copy with their calls inserted.
+    for (unsigned I = 0; I < Program.TranslationUnits.size(); ++I) {
+      TranslationUnitModel &TU = Program.TranslationUnits[I];
+      if (TU.Edits.empty() || TU.LibraryOnly)
+        continue;
+      TU.PointedCopy = absolute(wrapperPath(OutDir, I, TU.Source));
+      TU.PointedCopy.insert(TU.PointedCopy.size() -
+                                llvm::sys::path::filename(TU.Source).size(),
+                            "points_");
+      if (!writeFileIfChanged(TU.PointedCopy, emitPointedCopy(Program, I), Diags))
+        return 1;
+    }
     std::string Schema = absolute(OutDir + "/symcr_schema.cpp");
     if (!writeFileIfChanged(Schema, emitSchemaSource(Program), Diags))
       return 1;

@@ -6,6 +6,7 @@
 #include <new>
 #include <string>
 
+#include "c_handles.hpp"
 #include "symcr/symcr.hpp"
 
 static_assert(SYMCR_ERROR_TOO_LARGE == static_cast<int>(symcr::Error::TooLarge),
@@ -16,16 +17,6 @@ static_assert(SYMCR_ERROR_IO == static_cast<int>(symcr::Error::Io),
               "C error codes mirror symcr::Error");
 static_assert(SYMCR_REJECTED == static_cast<int>(symcr::Decision::Rejected),
               "C decisions mirror symcr::Decision");
-
-struct symcr_report {
-  symcr::Report report;
-  std::string text;  // renderings kept alive for the caller
-  std::string json;
-};
-
-struct symcr_store {
-  symcr::Store store;
-};
 
 namespace {
 

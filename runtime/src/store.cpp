@@ -408,6 +408,13 @@ void Store::close() {
 
 bool Store::read_only() const { return impl_ != nullptr && !impl_->read_only_reason.empty(); }
 
+bool Store::holds_checkpoints() const {
+  if (impl_ == nullptr) return false;
+  for (const Impl::Slot& slot : impl_->slots)
+    if (slot.state != StoreSlotState::Empty) return true;
+  return false;
+}
+
 Status Store::open(const char* path, const StoreOptions& options, Store& out) {
   const Schema* schema = nullptr;
   Status status = detail::program_schema(schema);

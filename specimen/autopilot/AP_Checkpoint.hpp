@@ -6,6 +6,12 @@
 //              them, restored with memcpy: correct only if the new build's layout is the same
 //   symcr      symcr's checkpoint store: saved by schema, restored by source-level names
 //              (available when the build ran symcr_add_checkpointing on this target)
+//   symcr-points
+//              the same store, with no symcr call in the autopilot: the annotation file
+//              points.symcr puts a checkpoint at the exit of points_save() and a restore at the
+//              exit of points_restore(), the places where the vehicle's state is consistent
+//              (after a loop; before the first loop). The store's path reaches symcr through
+//              the SYMCR_STORE environment variable.
 //
 // Every save and restore is reported to the world as a SIM_CHECKPOINT frame (duration, size),
 // so the experiment measures the cost inside the vehicle's loop.
@@ -16,7 +22,7 @@
 
 class AP_Checkpoint {
  public:
-  enum class Method : std::uint8_t { None, RawImage, Symcr };
+  enum class Method : std::uint8_t { None, RawImage, Symcr, SymcrPoints };
 
   static bool parse_method(const char* name, Method& out);
   static bool symcr_available();
@@ -36,6 +42,8 @@ class AP_Checkpoint {
   bool symcr_open();
   bool symcr_save();
   bool symcr_restore();
+  static void points_save();
+  static void points_restore();
   void report(std::uint8_t event, std::uint64_t nanos);
 
   Method _method = Method::None;

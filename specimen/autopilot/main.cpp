@@ -2,7 +2,7 @@
 // ends of its links as file descriptors and drives it in lock-step: one SIM_SENSORS frame in,
 // one loop, one SIM_MOTORS frame out.
 //
-//   copter --sim-fd 3 --gcs-fd 4 [--checkpoint none|raw-image|symcr --checkpoint-path FILE
+//   copter --sim-fd 3 --gcs-fd 4 [--checkpoint none|raw-image|symcr|symcr-points --checkpoint-path FILE
 //          --checkpoint-every LOOPS] [--restore]
 #include <cstdio>
 #include <cstdlib>
@@ -18,7 +18,7 @@ constexpr int kSensorTimeoutMs = 30000;
 
 void usage() {
   std::fprintf(stderr,
-               "usage: copter --sim-fd N --gcs-fd N [--checkpoint none|raw-image|symcr]\n"
+               "usage: copter --sim-fd N --gcs-fd N [--checkpoint none|raw-image|symcr|symcr-points]\n"
                "              [--checkpoint-path FILE] [--checkpoint-every LOOPS] [--restore]\n");
 }
 

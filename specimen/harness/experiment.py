@@ -3,7 +3,9 @@
 which V0 flies to a preselected random point, is checkpointed and killed (SIGKILL), and the
 patched build Vk is started, restores, and must finish the mission.
 
-Methods: baseline (V0 flies the whole mission, no checkpoint), symcr, raw-image (the root
+Methods: baseline (V0 flies the whole mission, no checkpoint), symcr (the autopilot calls
+symcr's store), symcr-points (builds whose sources carry no symcr call: the program points of an
+annotation file save and restore), raw-image (the root
 object's bytes restored with memcpy, standing for whole-memory C/R), criu (only where
 `criu check` passes). Red team: the vulnerable build is checkpointed periodically, the exploit
 frame crashes it, and the latest checkpoint is restored into the repaired build.
@@ -39,7 +41,7 @@ def parse_args():
     p.add_argument("--missions", nargs="+", help="mission files (default: ISTAR and BusRoute)")
     # V0 -> V0 (the same build restored) is the control: every method must succeed there.
     p.add_argument("--versions", nargs="+", default=["V0", "V1", "V2", "V3", "V4"])
-    p.add_argument("--methods", nargs="+", default=["symcr", "raw-image", "criu"])
+    p.add_argument("--methods", nargs="+", default=["symcr", "symcr-points", "raw-image", "criu"])
     p.add_argument("--no-redteam", action="store_true")
     p.add_argument("--seed", type=int, default=2020)
     p.add_argument("--outage", type=float, default=0.2, help="seconds without autopilot")
@@ -56,7 +58,7 @@ def find_build(build_dir):
     found = {}
     for name in ("copter_v0", "copter_v1", "copter_v2", "copter_v3", "copter_v4",
                  "copter_redteam", "copter_redteam_repaired"):
-        for variant in (name, name + "_symcr"):
+        for variant in (name, name + "_symcr", name + "_points"):
             path = os.path.join(base, variant)
             if os.access(path, os.X_OK):
                 found[variant] = path
@@ -121,8 +123,9 @@ class Progress:
 
 
 def autopilot(exe, name, method):
-    """The build of `name` for `method`: symcr flies the builds with generated code."""
-    return exe[name + "_symcr" if method == "symcr" else name]
+    """The build of `name` for `method`: symcr flies the builds that call symcr, symcr-points
+    the builds checkpointed by program points alone (no symcr call in their sources)."""
+    return exe[name + {"symcr": "_symcr", "symcr-points": "_points"}.get(method, "")]
 
 
 def fly(exe, mission_path, workdir, seed, autopilot, resume=None, method="none",
@@ -175,13 +178,13 @@ def main():
     symcr_built = bool(config.get("symcr")) and "copter_v0_symcr" in exe
     criu_ok, criu_reason = criu_status() if "criu" in args.methods else (False, "")
     notes = []
-    if "symcr" in args.methods and not symcr_built:
+    if any(m.startswith("symcr") for m in args.methods) and not symcr_built:
         notes.append("symcr: not measured: the autopilots of this build have no symcr-generated "
                      "code (no symcr_add_checkpointing or no working symcr-gen at build time)")
     if "criu" in args.methods and not criu_ok:
         notes.append("criu: unavailable on this machine: " + criu_reason)
     methods = [m for m in args.methods
-               if (m != "symcr" or symcr_built) and (m != "criu" or criu_ok)]
+               if (not m.startswith("symcr") or symcr_built) and (m != "criu" or criu_ok)]
     versions = [v for v in args.versions if "copter_" + v.lower() in exe]
     if symcr_built:
         versions = [v for v in versions if "copter_%s_symcr" % v.lower() in exe]
@@ -253,19 +256,19 @@ def main():
     progress.finish()
     pool.shutdown()
 
-    if not symcr_built and "symcr" in args.methods:
+    for method in [m for m in args.methods if m.startswith("symcr") and not symcr_built]:
         for mission_path in missions:
             base = os.path.basename(mission_path)
             name = MISSION_NAMES.get(base, os.path.splitext(base)[0])
             for version in versions:
-                rows.append(report.make_row(name, version, "symcr", []))
+                rows.append(report.make_row(name, version, method, []))
     if "criu" in args.methods and not criu_ok:
         for mission_path in missions:
             base = os.path.basename(mission_path)
             name = MISSION_NAMES.get(base, os.path.splitext(base)[0])
             for version in versions:
                 rows.append(report.make_row(name, version, "criu", []))
-    order = {"baseline": 0, "symcr": 1, "raw-image": 2, "criu": 3}
+    order = {"baseline": 0, "symcr": 1, "symcr-points": 2, "raw-image": 3, "criu": 4}
     mission_order = {MISSION_NAMES.get(os.path.basename(m), os.path.splitext(os.path.basename(m))[0]): i
                      for i, m in enumerate(missions)}
     rows.sort(key=lambda r: (mission_order.get(r["mission"], 99), r["version"] == "RT", r["version"],

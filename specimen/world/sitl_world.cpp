@@ -42,7 +42,7 @@ struct Options {
   std::string autopilot;         // the build that starts the mission (V0)
   std::string resume_autopilot;  // the build restarted after the checkpoint (Vk)
   std::string mission_path;
-  std::string method = "none";   // none | raw-image | symcr
+  std::string method = "none";   // none | raw-image | symcr | symcr-points
   std::string workdir = ".";
   std::string track_path;
   unsigned seed = 1;
@@ -79,7 +79,7 @@ struct Result {
   std::fprintf(stderr,
                "sitl_world: %s\n"
                "usage: sitl_world --autopilot EXE --mission FILE [--resume-autopilot EXE]\n"
-               "  [--method none|raw-image|symcr] [--checkpoint-at S] [--exploit-at S]\n"
+               "  [--method none|raw-image|symcr|symcr-points] [--checkpoint-at S] [--exploit-at S]\n"
                "  [--checkpoint-every LOOPS] [--outage S] [--seed N] [--time-limit S]\n"
                "  [--speedup X] [--wind M/S] [--workdir DIR] [--track FILE]\n",
                message);
@@ -110,7 +110,9 @@ Options parse(int argc, char** argv) {
     else usage(("unknown option " + arg).c_str());
   }
   if (o.autopilot.empty() || o.mission_path.empty()) usage("--autopilot and --mission are required");
-  if (o.method != "none" && o.method != "raw-image" && o.method != "symcr") usage("unknown method");
+  if (o.method != "none" && o.method != "raw-image" && o.method != "symcr" &&
+      o.method != "symcr-points")
+    usage("unknown method");
   if (o.resume_autopilot.empty()) o.resume_autopilot = o.autopilot;
   return o;
 }
@@ -162,7 +164,7 @@ class World {
     std::vector<std::string> args;
     if (options_.method != "none") {
       args = {"--checkpoint", options_.method, "--checkpoint-path",
-              options_.workdir + "/checkpoint." + (options_.method == "symcr" ? "store" : "img"),
+              options_.workdir + "/checkpoint." + (options_.method == "raw-image" ? "img" : "store"),
               "--checkpoint-every", std::to_string(options_.checkpoint_every)};
     }
     return args;

@@ -213,6 +213,9 @@ class Store {
   bool is_open() const { return fd_ >= 0; }
   // True when save() refuses: opened read-only, or a damaged store recovered for restoring.
   bool read_only() const;
+  // False when every slot is empty (a new store): a restore then has nothing to restore. A
+  // slot that is torn, corrupt or of an unknown schema counts as holding a checkpoint.
+  bool holds_checkpoints() const;
   std::uint64_t last_sequence() const { return last_sequence_; }
   const StoreOptions& options() const { return options_; }  // the geometry in use
   void close();

@@ -1,0 +1,21 @@
+// Internal: what the C API's opaque handles hold, shared by the C API and the program points
+// (which hand a restore's report to the program's hook as a symcr_report).
+#ifndef SYMCR_SRC_C_HANDLES_HPP
+#define SYMCR_SRC_C_HANDLES_HPP
+
+#include <string>
+
+#include "symcr/symcr.h"
+#include "symcr/symcr.hpp"
+
+struct symcr_report {
+  symcr::Report report;
+  std::string text;  // renderings kept alive for the caller
+  std::string json;
+};
+
+struct symcr_store {
+  symcr::Store store;
+};
+
+#endif  // SYMCR_SRC_C_HANDLES_HPP

@@ -1,0 +1,160 @@
+// Program points (<symcr/points.h>): what the calls symcr-gen inserts at checkpoint_at and
+// restore_at points do. All points of a program share one store, opened at the first point
+// that needs it and kept open; a mutex serialises the points of all threads.
+#include "symcr/points.h"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <mutex>
+#include <string>
+
+#include "c_handles.hpp"
+#include "symcr/symcr.hpp"
+
+extern "C" void symcr_on_restore_point(const struct symcr_point* point,
+                                       struct symcr_report* report) __attribute__((weak));
+
+namespace {
+
+struct PointState {
+  std::mutex lock;
+  symcr::Store store;
+  std::string path;              // of the open store
+  std::string last_save_error;   // logged once until a save succeeds again
+  symcr_restore_hook hook = nullptr;
+  void* hook_context = nullptr;
+};
+
+// Never destroyed: a point reached while static objects are destroyed still finds it.
+PointState& state() {
+  static PointState* const instance = new PointState;
+  return *instance;
+}
+
+std::string store_path(const symcr_point_store& store) {
+  const char* from_environment = std::getenv("SYMCR_STORE");
+  return from_environment != nullptr && *from_environment != '\0' ? from_environment
+                                                                  : store.path;
+}
+
+symcr::Status open_store(PointState& s, const symcr_point_store& where) {
+  const std::string path = store_path(where);
+  if (s.store.is_open() && s.path == path) return symcr::Status();
+  s.store.close();
+  symcr::StoreOptions options;
+  if (where.slots != 0) options.slots = where.slots;
+  if (where.slot_size != 0) options.slot_size = where.slot_size;
+  options.durability =
+      where.fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
+  symcr::Status status = symcr::Store::open(path.c_str(), options, s.store);
+  if (status.ok()) s.path = path;
+  return status;
+}
+
+void checkpoint(PointState& s, symcr_point& point) {
+  const unsigned every = point.every == 0 ? 1 : point.every;
+  if (point.passes % every != 0) return;
+  symcr::Status status = open_store(s, *point.store);
+  if (status.ok()) status = s.store.save();
+  if (status.ok()) {
+    s.last_save_error.clear();
+    return;
+  }
+  // A failing save at every loop would flood the log: say it once until it recovers.
+  if (status.message() == s.last_save_error) return;
+  s.last_save_error = status.message();
+  std::fprintf(stderr, "symcr: %s: checkpoint failed: %s\n", point.inserted_at,
+               status.message());
+}
+
+[[noreturn]] void stop(const symcr_point& point) {
+  std::fprintf(stderr, "symcr: %s: stopping the program (%s asks for on_failure=stop)\n",
+               point.inserted_at, point.directive);
+  std::exit(EXIT_FAILURE);
+}
+
+// Restores on the point's first pass; true when `report` holds a restore's outcome for the
+// program's hook (false: not the first pass, or nothing to restore yet).
+bool restore(PointState& s, symcr_point& point, symcr_report& report) {
+  if (point.passes != 1) return false;  // a restore point restores once per process
+  const std::string path = store_path(*point.store);
+  struct stat info;
+  if (::stat(path.c_str(), &info) != 0 && errno == ENOENT) {
+    std::fprintf(stderr, "symcr: %s: no store at %s yet; starting from the initial state\n",
+                 point.inserted_at, path.c_str());
+    return false;
+  }
+  const symcr::Status opened = open_store(s, *point.store);
+  if (opened.ok() && !s.store.holds_checkpoints()) {
+    std::fprintf(stderr, "symcr: %s: %s holds no checkpoint yet; starting from the initial state\n",
+                 point.inserted_at, path.c_str());
+    return false;
+  }
+  if (opened.ok()) {
+    symcr::RestoreOptions options;
+    options.strict = (point.restore_flags & SYMCR_RESTORE_STRICT) != 0;
+    options.accept_other_program = (point.restore_flags & SYMCR_RESTORE_ACCEPT_OTHER_PROGRAM) != 0;
+    report.report = s.store.restore_latest(options);
+  } else {
+    report.report.set_status(opened);
+  }
+  if (report.report.ok()) {
+    std::fprintf(stderr, "symcr: %s: restored checkpoint #%llu of %s\n", point.inserted_at,
+                 static_cast<unsigned long long>(report.report.sequence()), path.c_str());
+  } else {
+    std::fprintf(stderr, "symcr: %s: restore failed; %s:\n%s", point.inserted_at,
+                 point.on_failure == SYMCR_POINT_STOP ? "stopping"
+                                                      : "carrying on from the initial state",
+                 report.report.to_text().c_str());
+  }
+  return true;
+}
+
+}  // namespace
+
+extern "C" {
+
+void symcr_set_restore_hook(symcr_restore_hook hook, void* context) {
+  PointState& s = state();
+  std::lock_guard<std::mutex> guard(s.lock);
+  s.hook = hook;
+  s.hook_context = context;
+}
+
+void symcr_point_reached(struct symcr_point* point) {
+  if (point == nullptr || point->store == nullptr) return;
+  PointState& s = state();
+  symcr_report report;
+  symcr_restore_hook hook = nullptr;
+  void* hook_context = nullptr;
+  {
+    std::lock_guard<std::mutex> guard(s.lock);
+    ++point->passes;
+    if (point->kind != SYMCR_POINT_RESTORE) {
+      checkpoint(s, *point);
+      return;
+    }
+    if (!restore(s, *point, report)) return;
+    hook = s.hook;
+    hook_context = s.hook_context;
+  }
+  // The program's hook runs unlocked: it may reach a point or set another hook.
+  if (hook != nullptr) {
+    hook(point, &report, hook_context);
+  } else if (symcr_on_restore_point != nullptr) {
+    symcr_on_restore_point(point, &report);
+  }
+  if (!report.report.ok() && point->on_failure == SYMCR_POINT_STOP) stop(*point);
+}
+
+int symcr_point_exceptions_in_flight(void) { return std::uncaught_exceptions(); }
+
+void symcr_point_at_scope_exit(struct symcr_point** point) {
+  if (point != nullptr) symcr_point_reached(*point);
+}
+
+}  // extern "C"
