@@ -157,6 +157,26 @@ TEST_F(StoreTest, EmptyStoreHasNoValidSlot) {
   EXPECT_EQ(state_a(), before);
 }
 
+// A restore point tells a first start (nothing saved yet) from a store whose checkpoints are
+// all damaged: only the second is a failed restore.
+TEST_F(StoreTest, HoldsCheckpointsIsFalseOnlyWhileEverySlotIsEmpty) {
+  {
+    symcr::Store store;
+    open(store);
+    EXPECT_FALSE(store.holds_checkpoints());
+    fill_a(1);
+    ASSERT_TRUE(store.save().ok());
+    EXPECT_TRUE(store.holds_checkpoints());
+  }
+  StoreFile file(path);
+  file.slot(file.slot_with_sequence(1))[60] ^= 0x04;  // the only checkpoint, damaged
+  file.write();
+  symcr::Store reopened;
+  open(reopened);
+  EXPECT_TRUE(reopened.holds_checkpoints());
+  EXPECT_EQ(reopened.restore_latest().status().error(), Error::NoValidSlot);
+}
+
 TEST_F(StoreTest, SavesWrapTheRingAndRestoreTheNewest) {
   {
     symcr::Store store;
