@@ -35,14 +35,15 @@ PointState& state() {
   return *instance;
 }
 
-std::string store_path(const symcr_point_store& store) {
+const char* store_path(const symcr_point_store& store) {
   const char* from_environment = std::getenv("SYMCR_STORE");
   return from_environment != nullptr && *from_environment != '\0' ? from_environment
                                                                   : store.path;
 }
 
+// Opens the store once; a checkpoint point then reaches save() without allocating.
 symcr::Status open_store(PointState& s, const symcr_point_store& where) {
-  const std::string path = store_path(where);
+  const char* path = store_path(where);
   if (s.store.is_open() && s.path == path) return symcr::Status();
   s.store.close();
   symcr::StoreOptions options;
@@ -50,7 +51,7 @@ symcr::Status open_store(PointState& s, const symcr_point_store& where) {
   if (where.slot_size != 0) options.slot_size = where.slot_size;
   options.durability =
       where.fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
-  symcr::Status status = symcr::Store::open(path.c_str(), options, s.store);
+  symcr::Status status = symcr::Store::open(path, options, s.store);
   if (status.ok()) s.path = path;
   return status;
 }
@@ -81,17 +82,17 @@ void checkpoint(PointState& s, symcr_point& point) {
 // program's hook (false: not the first pass, or nothing to restore yet).
 bool restore(PointState& s, symcr_point& point, symcr_report& report) {
   if (point.passes != 1) return false;  // a restore point restores once per process
-  const std::string path = store_path(*point.store);
+  const char* path = store_path(*point.store);
   struct stat info;
-  if (::stat(path.c_str(), &info) != 0 && errno == ENOENT) {
+  if (::stat(path, &info) != 0 && errno == ENOENT) {
     std::fprintf(stderr, "symcr: %s: no store at %s yet; starting from the initial state\n",
-                 point.inserted_at, path.c_str());
+                 point.inserted_at, path);
     return false;
   }
   const symcr::Status opened = open_store(s, *point.store);
   if (opened.ok() && !s.store.holds_checkpoints()) {
     std::fprintf(stderr, "symcr: %s: %s holds no checkpoint yet; starting from the initial state\n",
-                 point.inserted_at, path.c_str());
+                 point.inserted_at, path);
     return false;
   }
   if (opened.ok()) {
@@ -104,7 +105,7 @@ bool restore(PointState& s, symcr_point& point, symcr_report& report) {
   }
   if (report.report.ok()) {
     std::fprintf(stderr, "symcr: %s: restored checkpoint #%llu of %s\n", point.inserted_at,
-                 static_cast<unsigned long long>(report.report.sequence()), path.c_str());
+                 static_cast<unsigned long long>(report.report.sequence()), path);
   } else {
     std::fprintf(stderr, "symcr: %s: restore failed; %s:\n%s", point.inserted_at,
                  point.on_failure == SYMCR_POINT_STOP ? "stopping"
@@ -128,16 +129,18 @@ void symcr_set_restore_hook(symcr_restore_hook hook, void* context) {
 void symcr_point_reached(struct symcr_point* point) {
   if (point == nullptr || point->store == nullptr) return;
   PointState& s = state();
+  if (point->kind != SYMCR_POINT_RESTORE) {
+    std::lock_guard<std::mutex> guard(s.lock);
+    ++point->passes;
+    checkpoint(s, *point);
+    return;
+  }
   symcr_report report;
   symcr_restore_hook hook = nullptr;
   void* hook_context = nullptr;
   {
     std::lock_guard<std::mutex> guard(s.lock);
     ++point->passes;
-    if (point->kind != SYMCR_POINT_RESTORE) {
-      checkpoint(s, *point);
-      return;
-    }
     if (!restore(s, *point, report)) return;
     hook = s.hook;
     hook_context = s.hook_context;
