@@ -22,8 +22,9 @@ const symcr::Schema& program_schema();
 // Header fields of a single-file checkpoint (docs/format.md §1).
 std::uint32_t schema_size(const std::vector<std::uint8_t>& record);
 std::uint32_t payload_size(const std::vector<std::uint8_t>& record);
-// The values alone: the payload less its two u32 counts of heap objects and references
-// (docs/format.md §3; `copter` holds no pointers, so both are 0 and nothing else follows).
+// The values alone, about: the payload less its two u32 counts of heap objects and references
+// (docs/format.md §3). `copter`'s few pointers (its flight mode, the mission's callbacks) are
+// references, counted here as values.
 std::uint32_t value_bytes(const std::vector<std::uint8_t>& record);
 // A file name under $TMPDIR (else /tmp), unique to this process.
 std::string scratch_path(const char* name);

@@ -15,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include "serializers.hpp"
+#include "initial_state.hpp"
 #include "state.hpp"
 
 namespace specimen_bench {
@@ -70,7 +71,7 @@ void BM_CerealLoad(benchmark::State& state) {
   reset_to_flight_state();
   FixedBuffer buffer;
   const std::size_t size = cereal_save_once(buffer);
-  copter = Copter{};  // the loads must bring every value back
+  reset_copter();  // the loads must bring every value back
   std::istream stream(&buffer);
   for (auto _ : state) {
     buffer.rewind_input(size);
@@ -103,7 +104,7 @@ void BM_BoostLoad(benchmark::State& state) {
   reset_to_flight_state();
   FixedBuffer buffer;
   const std::size_t size = boost_save_once(buffer, kBoostFlags);
-  copter = Copter{};
+  reset_copter();
   for (auto _ : state) {
     buffer.rewind_input(size);
     boost::archive::binary_iarchive archive(buffer, kBoostFlags);

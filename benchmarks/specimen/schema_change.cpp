@@ -1,7 +1,7 @@
 // Restore across a schema change, with the specimen's real builds: the checkpoint the V0 build
 // wrote in flight (symcr_bench_specimen --write-fixture, run at build time) restored into this
-// program, built from a patched autopilot (V3 by default: `control_mode` renamed
-// `flight_mode`, `_baro_offset` float -> double, AP_Mission's and AP_AHRS's fields reordered;
+// program, built from a patched autopilot (V3 by default: `prev_control_mode` renamed
+// `prev_flight_mode`, `_baro_offset` float -> double, AP_Mission's and AP_AHRS's fields reordered;
 // specimen/README.md), with the resolution plan cached and not cached, and from the store the
 // V0 build wrote. A separate program because one process holds one build of `copter`;
 // benchmarks/run reports its rows beside symcr_bench_specimen's.
@@ -21,6 +21,7 @@
 
 #include "Copter.hpp"
 #include "common.hpp"
+#include "initial_state.hpp"
 #include "symcr/symcr.hpp"
 
 #ifndef SPECIMEN_BENCH_FIXTURE_DIR
@@ -61,7 +62,7 @@ bool restored() {
          copter.mission.num_commands() == v0_mission_commands() && v0_mission_commands() > 0;
 }
 
-void reset() { copter = Copter{}; }
+void reset() { reset_copter(); }
 
 void report_counters(benchmark::State& state, const symcr::Report& report, std::size_t bytes) {
   state.counters["bytes"] = static_cast<double>(bytes);

@@ -48,7 +48,12 @@ SPECIMEN_BENCH_GRANT(AP_Mission, _prev_nav_cmd_wp_index)
 SPECIMEN_BENCH_GRANT(AP_Mission, _last_change_time_ms)
 SPECIMEN_BENCH_GRANT(AP_Mission, _items)
 
-SPECIMEN_BENCH_GRANT(Copter, control_mode)
+SPECIMEN_BENCH_GRANT(Copter, mode_stabilize)
+SPECIMEN_BENCH_GRANT(Copter, mode_auto)
+SPECIMEN_BENCH_GRANT(Copter, mode_loiter)
+SPECIMEN_BENCH_GRANT(Copter, mode_rtl)
+SPECIMEN_BENCH_GRANT(Copter, mode_land)
+SPECIMEN_BENCH_GRANT(Copter, flightmode)
 SPECIMEN_BENCH_GRANT(Copter, control_mode_reason)
 SPECIMEN_BENCH_GRANT(Copter, prev_control_mode)
 SPECIMEN_BENCH_GRANT(Copter, auto_mode)
@@ -61,8 +66,6 @@ SPECIMEN_BENCH_GRANT(Copter, takeoff_alt_m)
 SPECIMEN_BENCH_GRANT(Copter, rtl_alt_m)
 SPECIMEN_BENCH_GRANT(Copter, wp_speed_ms)
 SPECIMEN_BENCH_GRANT(Copter, wp_radius_m)
-SPECIMEN_BENCH_GRANT(Copter, land_speed_ms)
-SPECIMEN_BENCH_GRANT(Copter, land_speed_high_ms)
 SPECIMEN_BENCH_GRANT(Copter, auto_yaw_rad)
 SPECIMEN_BENCH_GRANT(Copter, arm_time_ms)
 SPECIMEN_BENCH_GRANT(Copter, mode_change_time_ms)
@@ -147,11 +150,30 @@ void fields(A& ar, AP_Mission& m) {
      member(m, AP_Mission__last_change_time_ms{}), member(m, AP_Mission__items{}));
 }
 
+// The flight mode points at one of the vehicle's mode objects: saved by its mode number and
+// pointed at the object with that number on load (symcr saves it as a reference by path).
+template <class A>
+void flight_mode(A& ar, Copter& c) {
+  using namespace access;
+  Mode*& flightmode = member(c, Copter_flightmode{});
+  std::uint8_t number = flightmode->mode_number();
+  io(ar, number);
+  Mode* const modes[] = {&member(c, Copter_mode_stabilize{}), &member(c, Copter_mode_auto{}),
+                         &member(c, Copter_mode_loiter{}), &member(c, Copter_mode_rtl{}),
+                         &member(c, Copter_mode_land{})};
+  for (Mode* mode : modes) {
+    if (mode->mode_number() == number) flightmode = mode;
+  }
+}
+
+// The constants (land speeds), the modes' references and the mission's callbacks are the
+// build's own: not saved, as symcr leaves them out.
 template <class A>
 void fields(A& ar, Copter& c) {
   using namespace access;
-  io(ar, c.ahrs, c.mission, member(c, Copter_control_mode{}),
-     member(c, Copter_control_mode_reason{}), member(c, Copter_prev_control_mode{}),
+  io(ar, c.ahrs, c.mission);
+  flight_mode(ar, c);
+  io(ar, member(c, Copter_control_mode_reason{}), member(c, Copter_prev_control_mode{}),
      member(c, Copter_auto_mode{}), member(c, Copter_rtl_state{}));
   auto& ap = member(c, Copter_ap{});
   io(ar, ap.motor_armed, ap.home_is_set, ap.auto_armed, ap.land_complete, ap.land_complete_maybe,
@@ -159,8 +181,7 @@ void fields(A& ar, Copter& c) {
   io(ar, member(c, Copter_home{}), member(c, Copter_wp_target{}),
      member(c, Copter_loiter_target{}), member(c, Copter_takeoff_alt_m{}),
      member(c, Copter_rtl_alt_m{}), member(c, Copter_wp_speed_ms{}),
-     member(c, Copter_wp_radius_m{}), member(c, Copter_land_speed_ms{}),
-     member(c, Copter_land_speed_high_ms{}), member(c, Copter_auto_yaw_rad{}),
+     member(c, Copter_wp_radius_m{}), member(c, Copter_auto_yaw_rad{}),
      member(c, Copter_arm_time_ms{}), member(c, Copter_mode_change_time_ms{}),
      member(c, Copter_land_detector_count{}), member(c, Copter_flight_time_ms{}));
   auto& failsafe = member(c, Copter_failsafe{});

@@ -15,6 +15,7 @@
 #include <benchmark/benchmark.h>
 
 #include "Copter.hpp"
+#include "initial_state.hpp"
 #include "state.hpp"
 #include "symcr/symcr.hpp"
 
@@ -75,7 +76,7 @@ BENCHMARK(BM_CheckpointToBuffer);
 void BM_RestoreFromBuffer(benchmark::State& state) {
   reset_to_flight_state();
   const std::vector<std::uint8_t>& buffer = flight_checkpoint();
-  copter = Copter{};  // the restores must bring every value back
+  reset_copter();  // the restores must bring every value back
   for (auto _ : state) {
     const symcr::Report report =
         symcr::restore_from_buffer(program_schema(), buffer.data(), buffer.size());
@@ -127,7 +128,7 @@ void BM_StoreRestoreLatest(benchmark::State& state) {
     status = store.save();
     if (!status.ok()) return fail(state, "save", status.message());
   }
-  copter = Copter{};
+  reset_copter();
   for (auto _ : state) {
     const symcr::Report report = store.restore_latest();
     if (!report.ok() || report.sequence() != options.slots) {
@@ -163,7 +164,7 @@ void BM_RestoreFile(benchmark::State& state) {
   const std::string path = scratch_path("restore.ckpt");
   const symcr::Status saved = symcr::checkpoint(program_schema(), path.c_str());
   if (!saved.ok()) return fail(state, "checkpoint", saved.message());
-  copter = Copter{};
+  reset_copter();
   for (auto _ : state) {
     const symcr::Report report = symcr::restore(program_schema(), path.c_str());
     if (!report.ok()) {

@@ -312,6 +312,14 @@ class Planner {
         }
         n.action = wt.kind == Kind::Pointer ? Action::Pointer : Action::SharedPtr;
         n.element = node(wt.element, rt.element);
+        // A raw pointer is restored by what it pointed at: a checkpointed object becomes a
+        // reference to the new build's object at the same path. A polymorphic pointee is
+        // never on the heap (saving refused it), so such a pointer is always a reference.
+        if (n.action == Action::Pointer) {
+          n.detail = (rp.flags & kTypePolymorphic)
+                         ? "reference to the object at the same path"
+                         : "reference to the object at the same path, or a heap object rebuilt";
+        }
         return;
       }
       default:
@@ -821,9 +829,13 @@ class Planner {
       for (const RootPlan& root : plan_.roots) matched = matched || root.reader_root == rr;
       if (!matched) add(r_.roots[rr].name, Decision::Kept, "root added in this build", false);
     }
-    // Pointees once each, named by type: their fields are reached through any pointer.
+    // Pointees once each, named by type: their fields are reached through any pointer. One
+    // of a root's type was listed under the root already.
     for (std::size_t i = 0; i < pointees_.size(); ++i) {
       const PlanNode* pointee = pointees_[i];
+      bool listed = false;
+      for (const RootPlan& root : plan_.roots) listed = listed || root.node == pointee;
+      if (listed) continue;
       const std::string path = std::string("(") + w_.types[pointee->writer].name + ")";
       add_migration_entry(pointee, path);
       expand(pointee, path);

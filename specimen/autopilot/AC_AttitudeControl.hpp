@@ -6,6 +6,7 @@
 #include "AP_Math.hpp"
 
 struct AC_PID {
+  AC_PID(float p, float i, float d, float integrator_max) : kp(p), ki(i), kd(d), imax(integrator_max) {}
   float kp, ki, kd, imax;
   float integrator = 0;
   float last_error = 0;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdint>
 
-inline constexpr float GRAVITY_MSS = 9.80665f;
-inline constexpr float M_PI_F = 3.14159265f;
+constexpr float GRAVITY_MSS = 9.80665f;
+constexpr float M_PI_F = 3.14159265f;
 
 template <class T>
 T constrain_value(T value, T low, T high) {

@@ -51,7 +51,7 @@ void AP_Mission::resume() {
     if (!advance_current_nav_cmd(1)) complete();
     return;
   }
-  copter.start_command(_nav_cmd);
+  _cmd_start_fn(_nav_cmd);
 }
 
 void AP_Mission::update() {
@@ -63,7 +63,7 @@ void AP_Mission::update() {
     }
     return;
   }
-  if (copter.verify_command(_nav_cmd)) {
+  if (_cmd_verify_fn(_nav_cmd)) {
     copter.gcs_send_mission_item_reached(_nav_cmd.index);
     _flags.nav_cmd_loaded = 0;
     if (!advance_current_nav_cmd(_nav_cmd.index + 1)) complete();
@@ -77,7 +77,7 @@ bool AP_Mission::advance_current_nav_cmd(std::uint16_t start_index) {
       // "Do" commands run as the mission passes them.
       _do_cmd = cmd;
       _flags.do_cmd_loaded = 1;
-      copter.start_command(cmd);
+      _cmd_start_fn(cmd);
       continue;
     }
     if (_flags.nav_cmd_loaded) {
@@ -92,7 +92,7 @@ bool AP_Mission::advance_current_nav_cmd(std::uint16_t start_index) {
     _flags.nav_cmd_loaded = 1;
     _last_change_time_ms = hal.millis();
     copter.gcs_send_mission_current(index);
-    copter.start_command(_nav_cmd);
+    _cmd_start_fn(_nav_cmd);
     return true;
   }
   _flags.do_cmd_all_done = 1;
@@ -102,5 +102,5 @@ bool AP_Mission::advance_current_nav_cmd(std::uint16_t start_index) {
 void AP_Mission::complete() {
   _flags.state = MISSION_COMPLETE;
   _flags.nav_cmd_loaded = 0;
-  copter.exit_mission();
+  _mission_complete_fn();
 }

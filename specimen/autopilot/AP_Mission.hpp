@@ -8,7 +8,10 @@
 
 #include <symcr/symcr.hpp>
 
+#include "AP_Functor.hpp"
 #include "Location.hpp"
+
+class Copter;
 
 class AP_Mission {
  public:
@@ -39,6 +42,17 @@ class AP_Mission {
     Content content;
   };
 
+  // The vehicle's callbacks: start a navigation command, verify that it is done (true moves
+  // the mission on), and the mission's end.
+  using mission_cmd_fn_t = Functor<Copter, bool, const Mission_Command&>;
+  using mission_complete_fn_t = Functor<Copter, void>;
+
+  AP_Mission(mission_cmd_fn_t cmd_start_fn, mission_cmd_fn_t cmd_verify_fn,
+             mission_complete_fn_t mission_complete_fn)
+      : _cmd_start_fn(cmd_start_fn),
+        _cmd_verify_fn(cmd_verify_fn),
+        _mission_complete_fn(mission_complete_fn) {}
+
   // Replaces the command list (ground-station upload). Refused while running.
   bool clear();
   bool add_cmd(const Mission_Command& cmd);
@@ -60,6 +74,10 @@ class AP_Mission {
  private:
   bool advance_current_nav_cmd(std::uint16_t start_index);
   void complete();
+
+  mission_cmd_fn_t _cmd_start_fn;
+  mission_cmd_fn_t _cmd_verify_fn;
+  mission_complete_fn_t _mission_complete_fn;
 
   struct Mission_Flags {
     mission_state state;

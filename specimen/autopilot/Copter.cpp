@@ -63,13 +63,7 @@ void Copter::update_flight_mode_task() {
     motors.output();
     return;
   }
-  switch (c.control_mode) {
-    case Mode::AUTO: c.auto_run(); break;
-    case Mode::LOITER: c.loiter_run(); break;
-    case Mode::RTL: c.rtl_run(); break;
-    case Mode::LAND: c.land_run(false); break;
-    case Mode::STABILIZE: c.hold_position_here(); break;
-  }
+  c.flightmode->run();
   pos_control.update(c.G_Dt, c.auto_yaw_rad);
   attitude_control.rate_controller_run(c.G_Dt);
   motors.set_armed(true);
@@ -85,10 +79,10 @@ void Copter::update_land_detector_task() {
     return;
   }
   const float hover_n = motors.params.mass_kg * GRAVITY_MSS;
-  const bool descending_phase = (c.control_mode == Mode::LAND) ||
-                                (c.control_mode == Mode::AUTO && c.auto_mode == AutoMode::LAND &&
+  const bool descending_phase = (c.get_mode() == Mode::LAND) ||
+                                (c.get_mode() == Mode::AUTO && c.auto_mode == AutoMode::LAND &&
                                  !c.ap.land_repositioning) ||
-                                (c.control_mode == Mode::RTL &&
+                                (c.get_mode() == Mode::RTL &&
                                  c.rtl_state == RTLState::FinalDescent);
   const bool still = std::fabs(c.ahrs.get_velocity_NED().z) < 0.3f;
   if (descending_phase && still && pos_control.get_thrust_n() < kLandedThrustRatio * hover_n) {
@@ -99,7 +93,7 @@ void Copter::update_land_detector_task() {
     c.ap.land_complete = false;
     c.ap.land_complete_maybe = false;
   }
-  if (c.ap.land_complete && (c.control_mode == Mode::LAND || c.control_mode == Mode::RTL)) {
+  if (c.ap.land_complete && (c.get_mode() == Mode::LAND || c.get_mode() == Mode::RTL)) {
     c.disarm();
   }
 }
@@ -110,7 +104,7 @@ void Copter::failsafe_check_task() {
   c.failsafe.ekf = c.ap.motor_armed && !c.ahrs.healthy();
   const bool gcs_lost =
       c.failsafe.last_heartbeat_ms != 0 && now - c.failsafe.last_heartbeat_ms > kGcsFailsafeMs;
-  if (gcs_lost && !c.failsafe.gcs && c.ap.motor_armed && c.control_mode != Mode::AUTO) {
+  if (gcs_lost && !c.failsafe.gcs && c.ap.motor_armed && c.get_mode() != Mode::AUTO) {
     c.gcs.send_text("Failsafe: GCS lost, RTL");
     c.set_mode(Mode::RTL, ModeReason::FAILSAFE);
   }
@@ -123,7 +117,7 @@ bool Copter::arm() {
     gcs.send_text("Arm: AHRS not healthy");
     return false;
   }
-  if (mission.num_commands() < 2 && control_mode == Mode::AUTO) {
+  if (mission.num_commands() < 2 && get_mode() == Mode::AUTO) {
     gcs.send_text("Arm: no mission");
     return false;
   }
@@ -140,7 +134,7 @@ bool Copter::arm() {
   auto_yaw_rad = ahrs.yaw;
   pos_control.init_at_current_position();
   gcs.send_text("Armed");
-  if (control_mode == Mode::AUTO) mode_enter(Mode::AUTO);
+  if (get_mode() == Mode::AUTO) mode_auto.init();
   return true;
 }
 
@@ -152,11 +146,13 @@ void Copter::disarm() {
   gcs.send_text("Disarmed");
 }
 
-bool Copter::set_mode(Mode mode, ModeReason reason) {
-  if (mode == control_mode) return true;
-  if (!mode_enter(mode)) return false;
-  prev_control_mode = control_mode;
-  control_mode = mode;
+bool Copter::set_mode(Mode::Number number, ModeReason reason) {
+  Mode* new_mode = mode_from_number(number);
+  if (new_mode == nullptr) return false;
+  if (new_mode == flightmode) return true;
+  if (!new_mode->init()) return false;
+  prev_control_mode = flightmode->mode_number();
+  flightmode = new_mode;
   control_mode_reason = reason;
   mode_change_time_ms = hal.millis();
   return true;
@@ -178,7 +174,7 @@ void Copter::resume_after_restore() {
   wp_nav.set_radius(wp_radius_m);
   if (!ap.motor_armed) return;
   pos_control.init_at_current_position();
-  switch (control_mode) {
+  switch (get_mode()) {
     case Mode::AUTO:
       if (auto_mode == AutoMode::WP || (auto_mode == AutoMode::LAND && ap.land_repositioning)) {
         wp_nav.set_wp_destination(wp_target);

@@ -17,15 +17,6 @@
 #include "GCS_Copter.hpp"
 #include "Location.hpp"
 
-// ArduCopter's flight mode numbers.
-enum class Mode : std::uint8_t {
-  STABILIZE = 0,
-  AUTO = 3,
-  LOITER = 5,
-  RTL = 6,
-  LAND = 9,
-};
-
 enum class ModeReason : std::uint8_t {
   UNKNOWN = 0,
   GCS_COMMAND = 2,
@@ -46,6 +37,79 @@ enum class RTLState : std::uint8_t {
   FinalDescent,
 };
 
+class AC_PosControl;
+class AC_WPNav;
+class Copter;
+
+// A flight mode (ArduCopter's Mode): one object per mode, each a member of Copter, and
+// Copter::flightmode points at the one flying. The references bind a mode to the vehicle and
+// to the controllers it drives; the new build binds them again, so they are not saved.
+class Mode {
+ public:
+  // ArduCopter's mode numbers (MAVLink's custom_mode).
+  enum Number : std::uint8_t {
+    STABILIZE = 0,
+    AUTO = 3,
+    LOITER = 5,
+    RTL = 6,
+    LAND = 9,
+  };
+
+  explicit Mode(Copter& vehicle);
+  virtual ~Mode() = default;
+
+  virtual Number mode_number() const = 0;
+  // Entering the mode; false refuses it, and the vehicle stays in its current mode.
+  virtual bool init() = 0;
+  // One 100 Hz loop in the mode.
+  virtual void run() = 0;
+
+ protected:
+  Copter& copter;
+  AC_PosControl& pos_control;
+  AC_WPNav& wp_nav;
+};
+
+class ModeStabilize : public Mode {
+ public:
+  using Mode::Mode;
+  Number mode_number() const override { return STABILIZE; }
+  bool init() override;
+  void run() override;
+};
+
+class ModeAuto : public Mode {
+ public:
+  using Mode::Mode;
+  Number mode_number() const override { return AUTO; }
+  bool init() override;
+  void run() override;
+};
+
+class ModeLoiter : public Mode {
+ public:
+  using Mode::Mode;
+  Number mode_number() const override { return LOITER; }
+  bool init() override;
+  void run() override;
+};
+
+class ModeRTL : public Mode {
+ public:
+  using Mode::Mode;
+  Number mode_number() const override { return RTL; }
+  bool init() override;
+  void run() override;
+};
+
+class ModeLand : public Mode {
+ public:
+  using Mode::Mode;
+  Number mode_number() const override { return LAND; }
+  bool init() override;
+  void run() override;
+};
+
 class Copter {
  public:
   // Start-up: scheduler tasks, parameters.
@@ -55,12 +119,12 @@ class Copter {
   // After a checkpoint was restored: rebuild what is derived from the critical state.
   void resume_after_restore();
 
-  bool set_mode(Mode mode, ModeReason reason);
+  bool set_mode(Mode::Number number, ModeReason reason);
   bool arm();
   void disarm();
 
-  // AP_Mission callbacks.
-  void start_command(const AP_Mission::Mission_Command& cmd);
+  // AP_Mission's callbacks.
+  bool start_command(const AP_Mission::Mission_Command& cmd);
   bool verify_command(const AP_Mission::Mission_Command& cmd);
   void exit_mission();
   void gcs_send_mission_current(std::uint16_t seq) { gcs.send_mission_current(seq); }
@@ -74,19 +138,26 @@ class Copter {
   static void failsafe_check_task();
   static void gcs_heartbeat_task();
 
-  Mode get_mode() const { return control_mode; }
+  Mode::Number get_mode() const { return flightmode->mode_number(); }
   bool armed() const { return ap.motor_armed; }
   bool mission_complete() const { return ap.mission_complete; }
 
   AP_AHRS ahrs;
-  AP_Mission mission;
+  AP_Mission mission{{this, &Copter::start_command}, {this, &Copter::verify_command},
+                     {this, &Copter::exit_mission}};
   GCS_Copter gcs SYMCR_SKIP;
 
  private:
   friend class GCS_Copter;
+  friend class ModeStabilize;
+  friend class ModeAuto;
+  friend class ModeLoiter;
+  friend class ModeRTL;
+  friend class ModeLand;
 
-  // Mode implementations (modes.cpp).
-  bool mode_enter(Mode mode);
+  Mode* mode_from_number(Mode::Number number);
+
+  // What the modes fly (modes.cpp).
   void auto_run();
   void auto_takeoff_start(float alt_m);
   void auto_wp_start(const Location& destination);
@@ -99,10 +170,15 @@ class Copter {
   void hold_position_here();
   bool reached_altitude(float alt_m) const;
 
-  // Flight mode.
-  Mode control_mode = Mode::STABILIZE;
+  // Flight modes, and the one flying: restored as a reference to the same mode's object.
+  ModeStabilize mode_stabilize{*this};
+  ModeAuto mode_auto{*this};
+  ModeLoiter mode_loiter{*this};
+  ModeRTL mode_rtl{*this};
+  ModeLand mode_land{*this};
+  Mode* flightmode = &mode_stabilize;
   ModeReason control_mode_reason = ModeReason::UNKNOWN;
-  Mode prev_control_mode = Mode::STABILIZE;
+  Mode::Number prev_control_mode = Mode::STABILIZE;
   AutoMode auto_mode = AutoMode::TAKEOFF;
   RTLState rtl_state = RTLState::InitialClimb;
 
@@ -126,8 +202,9 @@ class Copter {
   float rtl_alt_m = 15.0f;
   float wp_speed_ms = 5.0f;
   float wp_radius_m = 2.0f;
-  float land_speed_ms = 0.5f;
-  float land_speed_high_ms = 1.5f;
+  // Constants of this build: a new build keeps its own.
+  const float land_speed_ms = 0.5f;
+  const float land_speed_high_ms = 1.5f;
   float auto_yaw_rad = 0;    // heading flown in AUTO and RTL
 
   std::uint32_t arm_time_ms = 0;

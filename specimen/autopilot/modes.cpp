@@ -1,4 +1,4 @@
-// Flight modes: AUTO (mission), LOITER, RTL and LAND.
+// Flight modes: STABILIZE, AUTO (mission), LOITER, RTL and LAND.
 #include "AC_PosControl.hpp"
 #include "AC_WPNav.hpp"
 #include "Copter.hpp"
@@ -10,38 +10,72 @@ constexpr float kAltReachedM = 0.5f;
 constexpr float kRtlCloseEnoughM = 2.0f;
 }  // namespace
 
-bool Copter::mode_enter(Mode mode) {
-  switch (mode) {
-    case Mode::AUTO:
-      if (ap.motor_armed) {
-        if (mission.num_commands() < 2) return false;
-        ap.auto_armed = true;
-        if (mission.state() == AP_Mission::MISSION_COMPLETE ||
-            mission.state() == AP_Mission::MISSION_STOPPED) {
-          mission.start();
-        } else {
-          mission.resume();
-        }
-      }
-      return true;
-    case Mode::LOITER:
-      hold_position_here();
-      return true;
-    case Mode::RTL:
-      if (!ap.home_is_set) return false;
-      rtl_state = RTLState::InitialClimb;
-      ap.rtl_state_complete = false;
-      hold_position_here();
-      return true;
-    case Mode::LAND:
-      hold_position_here();
-      land_detector_count = 0;
-      return true;
-    case Mode::STABILIZE:
-      return !ap.motor_armed;  // no pilot: only on the ground
+Mode::Mode(Copter& vehicle)
+    : copter(vehicle), pos_control(::pos_control), wp_nav(::wp_nav) {}
+
+Mode* Copter::mode_from_number(Mode::Number number) {
+  switch (number) {
+    case Mode::STABILIZE: return &mode_stabilize;
+    case Mode::AUTO: return &mode_auto;
+    case Mode::LOITER: return &mode_loiter;
+    case Mode::RTL: return &mode_rtl;
+    case Mode::LAND: return &mode_land;
   }
-  return false;
+  return nullptr;
 }
+
+// --- STABILIZE: no pilot here, so only on the ground, holding position if airborne ---------
+
+bool ModeStabilize::init() { return !copter.ap.motor_armed; }
+
+void ModeStabilize::run() { copter.hold_position_here(); }
+
+// --- AUTO ----------------------------------------------------------------------------------
+
+bool ModeAuto::init() {
+  if (copter.ap.motor_armed) {
+    if (copter.mission.num_commands() < 2) return false;
+    copter.ap.auto_armed = true;
+    if (copter.mission.state() == AP_Mission::MISSION_COMPLETE ||
+        copter.mission.state() == AP_Mission::MISSION_STOPPED) {
+      copter.mission.start();
+    } else {
+      copter.mission.resume();
+    }
+  }
+  return true;
+}
+
+void ModeAuto::run() { copter.auto_run(); }
+
+// --- LOITER, RTL, LAND ---------------------------------------------------------------------
+
+bool ModeLoiter::init() {
+  copter.hold_position_here();
+  return true;
+}
+
+void ModeLoiter::run() { copter.loiter_run(); }
+
+bool ModeRTL::init() {
+  if (!copter.ap.home_is_set) return false;
+  copter.rtl_state = RTLState::InitialClimb;
+  copter.ap.rtl_state_complete = false;
+  copter.hold_position_here();
+  return true;
+}
+
+void ModeRTL::run() { copter.rtl_run(); }
+
+bool ModeLand::init() {
+  copter.hold_position_here();
+  copter.land_detector_count = 0;
+  return true;
+}
+
+void ModeLand::run() { copter.land_run(false); }
+
+// --- What the modes fly --------------------------------------------------------------------
 
 void Copter::hold_position_here() {
   Location here;
@@ -53,9 +87,7 @@ bool Copter::reached_altitude(float alt_m) const {
   return ahrs.get_altitude() >= alt_m - kAltReachedM;
 }
 
-// --- AUTO ----------------------------------------------------------------------------------
-
-void Copter::start_command(const AP_Mission::Mission_Command& cmd) {
+bool Copter::start_command(const AP_Mission::Mission_Command& cmd) {
   switch (cmd.id) {
     case mav::CMD_NAV_TAKEOFF:
       auto_takeoff_start(cmd.content.location.alt * 0.01f);
@@ -78,6 +110,7 @@ void Copter::start_command(const AP_Mission::Mission_Command& cmd) {
     default:
       break;
   }
+  return true;
 }
 
 bool Copter::verify_command(const AP_Mission::Mission_Command& cmd) {

@@ -157,6 +157,18 @@ def fly(exe, mission_path, workdir, seed, autopilot, resume=None, method="none",
     return flight
 
 
+def restore_report_entry(log_path, path):
+    """The restore report's line for `path` in a flight's autopilot.log, or None."""
+    if not os.path.exists(log_path):
+        return None
+    with open(log_path) as f:
+        for line in f:
+            fields = line.split(None, 1)
+            if fields and fields[0] == path:
+                return " ".join(line.split())
+    return None
+
+
 def run_cell(pool, progress, label, runs, fly_one):
     """Flies `fly_one(i)` for every run i, in parallel on `pool`; results in run order."""
     futures = [pool.submit(fly_one, i) for i in range(runs)]
@@ -281,6 +293,15 @@ def main():
                 reach = [l.strip() for l in f if l.strip().startswith("reaches ")]
             if reach:
                 notes.append("symcr-gen on V0's root copter: " + reach[0])
+        # How the flight mode came back in the newest version (a pointer, saved as a reference).
+        first = MISSION_NAMES.get(os.path.basename(missions[0]),
+                                  os.path.splitext(os.path.basename(missions[0]))[0])
+        if versions and "symcr" in methods:
+            newest = versions[-1]
+            log = os.path.join(args.out, "runs", first, "%s-symcr-0" % newest, "autopilot.log")
+            entry = restore_report_entry(log, "copter.flightmode")
+            if entry:
+                notes.append("restore report, %s V0 -> %s (symcr, run 1): %s" % (first, newest, entry))
         plain, generated = text_bytes(exe["copter_v0"]), text_bytes(exe["copter_v0_symcr"])
         if plain and generated:
             notes.append("symcr adds %d bytes of .text to the V0 autopilot (runtime + generated "

@@ -14,11 +14,11 @@
 
 namespace mav {
 
-inline constexpr std::uint8_t kFrameStart = 0xFE;
-inline constexpr std::size_t kHeaderSize = 6;
-inline constexpr std::size_t kChecksumSize = 2;
-inline constexpr std::size_t kMaxPayload = 255;
-inline constexpr std::size_t kMaxFrame = kHeaderSize + kMaxPayload + kChecksumSize;
+constexpr std::uint8_t kFrameStart = 0xFE;
+constexpr std::size_t kHeaderSize = 6;
+constexpr std::size_t kChecksumSize = 2;
+constexpr std::size_t kMaxPayload = 255;
+constexpr std::size_t kMaxFrame = kHeaderSize + kMaxPayload + kChecksumSize;
 
 struct Frame {
   std::uint8_t seq = 0;

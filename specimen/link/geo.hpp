@@ -8,9 +8,9 @@
 
 namespace geo {
 
-inline constexpr double kEarthRadius = 6378100.0;                    // ArduPilot's RADIUS_OF_EARTH
-inline constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
-inline constexpr double kLatLonToM = kEarthRadius * kDegToRad * 1e-7;  // metres per 1e-7 degree
+constexpr double kEarthRadius = 6378100.0;                    // ArduPilot's RADIUS_OF_EARTH
+constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+constexpr double kLatLonToM = kEarthRadius * kDegToRad * 1e-7;  // metres per 1e-7 degree
 
 inline double longitude_scale(std::int32_t lat_e7) {
   const double scale = std::cos(lat_e7 * 1e-7 * kDegToRad);

@@ -48,9 +48,10 @@ enum CustomMode : std::uint32_t {
   MODE_LOITER = 5,
   MODE_RTL = 6,
   MODE_LAND = 9,
+  MODE_BRAKE = 17,
 };
 
-inline constexpr std::uint8_t kBaseModeArmed = 0x80;
+constexpr std::uint8_t kBaseModeArmed = 0x80;
 
 #pragma pack(push, 1)
 struct Heartbeat {
@@ -166,7 +167,8 @@ struct SimCheckpoint {
 
 template <class Payload>
 Frame make_frame(MsgId id, const Payload& payload) {
-  static_assert(std::is_trivially_copyable_v<Payload> && sizeof(Payload) <= kMaxPayload);
+  static_assert(std::is_trivially_copyable<Payload>::value && sizeof(Payload) <= kMaxPayload,
+                "a payload is a plain struct that fits one frame");
   Frame frame;
   frame.msgid = id;
   frame.len = static_cast<std::uint8_t>(sizeof(Payload));
@@ -177,7 +179,7 @@ Frame make_frame(MsgId id, const Payload& payload) {
 // Copies a frame's payload into `out`; a shorter payload is zero-extended (as MAVLink 2 does).
 template <class Payload>
 Payload read_payload(const Frame& frame) {
-  static_assert(std::is_trivially_copyable_v<Payload>);
+  static_assert(std::is_trivially_copyable<Payload>::value, "a payload is a plain struct");
   Payload out;
   std::memset(&out, 0, sizeof(out));
   const std::size_t n = frame.len < sizeof(Payload) ? frame.len : sizeof(Payload);

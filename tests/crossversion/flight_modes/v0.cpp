@@ -26,6 +26,12 @@ struct Copter {
   ModeLoiter mode_loiter;
   Mode* flightmode = &mode_stabilize;
   Mode* previous = nullptr;
+  // A callback bound to the vehicle itself: its object is a reference to the root.
+  struct Callback {
+    Copter* object;
+    void (Copter::*method)();
+  } on_mode_change{this, &Copter::announce};
+  void announce() {}
 };
 
 SYMCR_CHECKPOINT Copter copter;

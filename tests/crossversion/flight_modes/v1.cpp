@@ -33,6 +33,12 @@ struct Copter {
   ModeStabilize mode_stabilize;
   Mode* flightmode = &mode_stabilize;
   Mode* previous = nullptr;
+  // A callback bound to the vehicle itself: its object is a reference to the root.
+  struct Callback {
+    Copter* object;
+    void (Copter::*method)();
+  } on_mode_change{this, &Copter::announce};
+  void announce() {}
 };
 
 SYMCR_CHECKPOINT Copter copter;
@@ -45,6 +51,19 @@ int main(int argc, char** argv) {
   XV_CHECK(copter.mode_auto.next_waypoint == 4 && copter.mode_auto.entered_ms == 1234);
   XV_CHECK(copter.previous == &copter.mode_loiter && copter.mode_loiter.radius_m == 7.5f);
   XV_CHECK(xv::restored(report, "copter.flightmode"));
+  // The report says how the pointer came back.
+  const symcr::ReportEntry* current = xv::entry(report, "copter.flightmode");
+  XV_CHECK(current != nullptr &&
+           current->detail == "reference to the object at the same path");
+  // The callback's object is the root again, and the root's fields are listed once, under
+  // the root, not a second time as the pointee of that callback.
+  XV_CHECK(copter.on_mode_change.object == &copter);
+  for (const symcr::ReportEntry& e : report.entries()) {
+    if (e.path.compare(0, 8, "(Copter)") == 0) {
+      std::fprintf(stderr, "the root's type is listed again as a pointee: %s\n", e.path.c_str());
+      ++xv::failures();
+    }
+  }
 
   // A mode object outside the state has no known dynamic type there: saving refuses it.
   ModeAuto* loose = new ModeAuto();
