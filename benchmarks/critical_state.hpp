@@ -369,7 +369,7 @@ inline const symcr::TypeInfo types[] = {
     scalar("float32", symcr::Kind::Float, 4),
     scalar("float64", symcr::Kind::Float, 8),
     {"FlightMode", symcr::Kind::Enum, symcr::kTypeScopedEnum, 4, 4, nullptr, 0, flight_modes, 7,
-     kInt32, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr},
+     kInt32, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr},
     enumeration("MissionState", 1, kUInt8, mission_states, 4),
     record("Vec3", sizeof(Vec3), alignof(Vec3), vec3_fields, 3),
     array("float32[4]", kFloat32, 4, sizeof(float[4]), alignof(float)),

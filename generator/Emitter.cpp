@@ -172,10 +172,12 @@ std::string emitSchemaSource(const ProgramModel &Program) {
     return Symbol;
   };
   std::vector<std::string> TypeRenamed(Program.Types.size());
+  std::vector<std::string> TypeLeft(Program.Types.size());
   for (std::size_t I = 0; I < Program.Types.size(); ++I) {
     const TypeModel &T = Program.Types[I];
     TypeRenamed[I] =
         Renamed("type_renamed_" + std::to_string(I), T.RenamedFrom);
+    TypeLeft[I] = Renamed("type_left_" + std::to_string(I), T.leftToNewBuildNames());
     if (!T.Fields.empty()) {
       std::vector<std::string> FieldRenamed;
       for (std::size_t F = 0; F < T.Fields.size(); ++F)
@@ -239,7 +241,7 @@ std::string emitSchemaSource(const ProgramModel &Program) {
          << ", " << TypeRenamed[I] << ", "
          << (hasMigrate(Program, T) ? "&symcr_gen::migrate_" + Index
                                     : std::string("nullptr"))
-         << "},  // " << Index << "\n";
+         << ", " << TypeLeft[I] << "},  // " << Index << "\n";
     }
     OS << "};\n";
   }
@@ -543,8 +545,9 @@ std::string renderReport(const ProgramModel &Program) {
     if (LeftCount) {
       OS << "  left to the new build (never restored, no annotation needed):\n";
       for (std::uint32_t T : Order)
-        for (const std::string &Left : Program.Types[T].LeftToNewBuild)
-          OS << "    " << Program.Types[T].Name << "::" << Left << "\n";
+        for (const TypeModel::LeftMember &Left : Program.Types[T].LeftToNewBuild)
+          OS << "    " << Program.Types[T].Name << "::" << Left.Name << ": " << Left.Why
+             << "\n";
     }
   }
   return OS.str();

@@ -153,8 +153,20 @@ struct TypeModel {
   /// Members left out of this type and why ("raw: SYMCR_SKIP"), for --report.
   std::vector<std::string> Skipped;
   /// Members the new build re-creates by itself, never restored and needing no annotation
-  /// (const and reference members, function and member pointers) and why, for --report.
-  std::vector<std::string> LeftToNewBuild;
+  /// (const and reference members, function and member pointers): their names go into the
+  /// schema (TypeInfo::left_to_new_build), and why, into --report.
+  struct LeftMember {
+    std::string Name;
+    std::string Why;
+  };
+  std::vector<LeftMember> LeftToNewBuild;
+
+  std::vector<std::string> leftToNewBuildNames() const {
+    std::vector<std::string> Names;
+    for (const LeftMember &Left : LeftToNewBuild)
+      Names.push_back(Left.Name);
+    return Names;
+  }
 };
 
 struct RootModel {

@@ -676,8 +676,8 @@ std::string TypeWalker::fingerprint(const TypeModel &Model) const {
   }
   for (const auto &E : Model.Enumerators)
     F += "|" + E.first + "=" + std::to_string(E.second);
-  for (const std::string &Left : Model.LeftToNewBuild)
-    F += "|left " + Left;
+  for (const TypeModel::LeftMember &Left : Model.LeftToNewBuild)
+    F += "|left " + Left.Name + ": " + Left.Why;
   for (std::uint32_t A : Model.Alternatives)
     F += "|" + NameOf(A);
   return F;
@@ -1285,7 +1285,8 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
     F.AnonymousName.clear();
     std::string Why;
     if (const char *Why = leftToNewBuild(FD->getType())) {
-      Model.LeftToNewBuild.push_back(Name + ": " + Why);
+      Model.LeftToNewBuild.push_back({Name, Why});
+      Model.Flags |= symcr::kTypeLeavesMembers;
       continue;
     }
     if (hasAnnotation(FD, "skip")) {

@@ -68,6 +68,7 @@ public:
       }
       Info.container_kind = T.ContainerKind;
       Info.renamed_from = aliases(T.RenamedFrom);
+      Info.left_to_new_build = leftToNewBuild(T);
     }
     for (const RootModel &R : Program.Roots)
       Roots.push_back(symcr::RootInfo{R.Name.c_str(), R.Type, nullptr, R.Flags,
@@ -85,14 +86,26 @@ private:
   /// A nullptr-terminated list of \p Names, or nullptr when there are none
   /// (as the schema source writes it).
   const char *const *aliases(const std::vector<std::string> &Names) {
-    if (Names.empty())
+    return nameList(Names, [](const std::string &Name) { return Name.c_str(); });
+  }
+
+  /// The names of the members \p T leaves to the new build, listed the same way.
+  const char *const *leftToNewBuild(const TypeModel &T) {
+    return nameList(T.LeftToNewBuild, [](const TypeModel::LeftMember &Left) {
+      return Left.Name.c_str();
+    });
+  }
+
+  template <class Items, class NameOf>
+  const char *const *nameList(const Items &List, NameOf Name) {
+    if (List.empty())
       return nullptr;
     AliasTables.emplace_back();
-    std::vector<const char *> &List = AliasTables.back();
-    for (const std::string &Name : Names)
-      List.push_back(Name.c_str());
-    List.push_back(nullptr);
-    return List.data();
+    std::vector<const char *> &Names = AliasTables.back();
+    for (const auto &Item : List)
+      Names.push_back(Name(Item));
+    Names.push_back(nullptr);
+    return Names.data();
   }
 
   // Lists: the tables' addresses must not move while more are added.

@@ -875,6 +875,13 @@ class Planner {
                   "field removed in this build; its value goes to symcr_migrate(" +
                       std::string(rt.name) + ")",
                   false);
+            } else if ((rt.flags & kTypeLeavesMembers) &&
+                       in_aliases(writer.name, rt.left_to_new_build)) {
+              // Made const (or a reference, or a code pointer) by the patch: the value is this
+              // build's on purpose, not lost.
+              add(path + "." + writer.name, Decision::Kept,
+                  "const, reference or code pointer in this build: this build's value is kept",
+                  false);
             } else {
               add(path + "." + writer.name, Decision::Dropped, "field removed in this build", true);
             }

@@ -50,6 +50,7 @@ void serialise_schema(const Schema& schema, std::vector<std::uint8_t>& out) {
     put_u32(out, type.align);
     put_str(out, type.name);
     put_aliases(out, type.renamed_from);
+    if (type.flags & kTypeLeavesMembers) put_aliases(out, type.left_to_new_build);
     switch (type.kind) {
       case Kind::Struct:
       case Kind::Union:

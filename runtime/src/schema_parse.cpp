@@ -47,7 +47,7 @@ constexpr std::size_t kMinEnumerator = 2 + 8;
 // Where the pointers of the final tables will point, recorded as offsets while the vectors
 // still grow.
 struct TypeFixup {
-  std::size_t name, aliases, fields, enumerators, alternatives;
+  std::size_t name, aliases, left_to_new_build, fields, enumerators, alternatives;
 };
 struct NamedFixup {
   std::size_t name, aliases;
@@ -139,10 +139,11 @@ class Parser {
 
   Status parse_type(std::uint32_t index, std::uint32_t type_count) {
     TypeInfo type{};
-    TypeFixup fixup{kNone, kNone, kNone, kNone, kNone};
+    TypeFixup fixup{kNone, kNone, kNone, kNone, kNone, kNone};
     std::uint8_t kind = 0;
     if (!in_.read(kind) || !in_.read(type.flags) || !in_.read(type.size) ||
-        !in_.read(type.align) || !read_str(fixup.name) || !read_aliases(fixup.aliases)) {
+        !in_.read(type.align) || !read_str(fixup.name) || !read_aliases(fixup.aliases) ||
+        ((type.flags & kTypeLeavesMembers) && !read_aliases(fixup.left_to_new_build))) {
       return truncated("type");
     }
     if (kind < static_cast<std::uint8_t>(Kind::Bool) ||
@@ -357,6 +358,7 @@ class Parser {
       const TypeFixup& fixup = type_fixups_[t];
       type.name = base + fixup.name;
       type.renamed_from = aliases_at(fixup.aliases);
+      type.left_to_new_build = aliases_at(fixup.left_to_new_build);
       if (fixup.fields != kNone) type.fields = s_.fields.data() + fixup.fields;
       if (fixup.enumerators != kNone) type.enumerators = s_.enumerators.data() + fixup.enumerators;
       if (fixup.alternatives != kNone) {

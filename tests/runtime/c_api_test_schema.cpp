@@ -21,19 +21,19 @@ const symcr::FieldInfo vehicle_fields[] = {
 
 const symcr::TypeInfo types[] = {
     {"int16", Kind::Int, 0, 2, 2, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr,
-     nullptr, nullptr, nullptr, nullptr},
-    {"int32", Kind::Int, 0, 4, 4, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr,
-     nullptr, nullptr, nullptr, nullptr},
-    {"uint16", Kind::UInt, 0, 2, 2, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr,
-     nullptr, nullptr, nullptr, nullptr},
-    {"uint32", Kind::UInt, 0, 4, 4, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr,
-     nullptr, nullptr, nullptr, nullptr},
-    {"float64", Kind::Float, 0, 8, 8, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0,
      nullptr, nullptr, nullptr, nullptr, nullptr},
+    {"int32", Kind::Int, 0, 4, 4, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr,
+     nullptr, nullptr, nullptr, nullptr, nullptr},
+    {"uint16", Kind::UInt, 0, 2, 2, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr,
+     nullptr, nullptr, nullptr, nullptr, nullptr},
+    {"uint32", Kind::UInt, 0, 4, 4, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr,
+     nullptr, nullptr, nullptr, nullptr, nullptr},
+    {"float64", Kind::Float, 0, 8, 8, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0,
+     nullptr, nullptr, nullptr, nullptr, nullptr, nullptr},
     {"int16[3]", Kind::Array, 0, sizeof(c_vehicle::trims), alignof(std::int16_t), nullptr, 0,
-     nullptr, 0, kInt16, 3, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr},
+     nullptr, 0, kInt16, 3, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr},
     {"c_vehicle", Kind::Struct, 0, sizeof(c_vehicle), alignof(c_vehicle), vehicle_fields, 4,
-     nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr},
+     nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr},
 };
 
 const symcr::RootInfo roots[] = {

@@ -59,6 +59,9 @@ enum : std::uint32_t {
   kTypePolymorphic = 1u << 5, // a class with virtual functions (not final): a raw pointer to it
                               // must target a checkpointed object, whose dynamic type is its
                               // declared one; save refuses one that would need a heap object
+  kTypeLeavesMembers = 1u << 6, // left_to_new_build lists members this build never restores
+                                // (const, reference, function and member pointers): a
+                                // checkpoint's value for one of them is not lost but left
 };
 
 // FieldInfo::flags
@@ -180,6 +183,9 @@ struct TypeInfo {
   // User's symcr_migrate(T&, const OldValues&), or nullptr. Restore calls it on each restored
   // instance whose checkpointed type differs from this one, after the mechanical rules.
   void (*migrate)(void* object, const OldValues& old);
+  // With kTypeLeavesMembers: the names of the members this build leaves to itself (const,
+  // reference, function and member pointers); nullptr-terminated. They are not fields.
+  const char* const* left_to_new_build;
 };
 
 struct RootInfo {
