@@ -54,7 +54,7 @@ struct tracked {
     registry.live.erase(object);
     delete static_cast<T*>(object);
   }
-  static constexpr symcr::Lifecycle table{&create, &destroy};
+  static constexpr symcr::Lifecycle table{&create, &destroy, nullptr};
 };
 
 template <typename... Types>

@@ -27,7 +27,19 @@ void Diagnostics::print(const Location &Loc, const char *Severity,
   Line += std::string(Severity) + ": " + Message;
   if (!Seen.emplace(Line, true).second)
     return;
-  llvm::errs() << Line << "\n";
+  if (Quiet)
+    Collected.push_back(Message);
+  else
+    llvm::errs() << Line << "\n";
+}
+
+std::string Diagnostics::firstProblem() const {
+  if (!Collected.empty())
+    return Collected.front();
+  for (const auto &Entry : Groups)
+    if (!Entry.second.Leaves.empty())
+      return Entry.second.Leaves.front().Message;
+  return "";
 }
 
 void Diagnostics::error(const Location &Loc, const std::string &Message) {

@@ -302,7 +302,7 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
         continue;
       if (!LifecycleDeclared)
         OS << "struct symcr_gen_lifecycle {\n  void* (*create)(void);\n"
-              "  void (*destroy)(void* object);\n};\n";
+              "  void (*destroy)(void* object);\n  const void* vtable;\n};\n";
       LifecycleDeclared = true;
       OS << "static void* symcr_gen_create_" << I
          << "(void) { return calloc(1, sizeof(" << T.Spelling << ")); }\n"
@@ -312,7 +312,7 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
          << I << ";\n"
          << "const struct symcr_gen_lifecycle symcr_gen_c_lifecycle_" << I
          << " = {symcr_gen_create_" << I << ", symcr_gen_destroy_" << I
-         << "};\n";
+         << ", NULL};\n";
     }
     for (std::uint32_t I : Home) {
       const TypeModel &T = Program.Types[I];
@@ -403,10 +403,20 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
          << "const symcr::" << opsTableType(T.Ops) << " ops_" << I
          << " = symcr::ops::" << opsTemplate(T.Ops) << "<" << Type
          << ">::table;\n";
-    if (T.hasLifecycle())
+    if (T.hasLifecycle() && T.VtableSymbol.empty())
       OS << "extern const symcr::Lifecycle lifecycle_" << I << ";\n"
          << "const symcr::Lifecycle lifecycle_" << I
          << " = symcr::ops::lifecycle<" << Type << ">::table;\n";
+    // A heap object's dynamic type is recognised by its vtable, named by its
+    // mangled symbol (a GNU asm label: there is no other way to name it).
+    if (T.hasLifecycle() && !T.VtableSymbol.empty())
+      OS << "extern const void* const vtable_" << I << "[] __asm__(\""
+         << T.VtableSymbol << "\");\n"
+         << "extern const symcr::Lifecycle lifecycle_" << I << ";\n"
+         << "const symcr::Lifecycle lifecycle_" << I
+         << " = {&symcr::ops::lifecycle<" << Type << ">::create, "
+         << "&symcr::ops::lifecycle<" << Type << ">::destroy, vtable_" << I
+         << " + " << T.VtableAddressPoint << "};\n";
     // Unqualified: argument-dependent lookup finds a hook in the type's
     // namespace (or a hidden friend), ordinary lookup a global one.
     if (T.hasValidate(Program))
@@ -497,6 +507,9 @@ std::string renderReport(const ProgramModel &Program) {
       for (auto It = Type.Alternatives.rbegin(); It != Type.Alternatives.rend();
            ++It)
         Pending.push_back(*It);
+      for (auto It = Type.DynamicTypes.rbegin(); It != Type.DynamicTypes.rend();
+           ++It)
+        Pending.push_back(*It);
       if (Type.Element != symcr::kNoType)
         Pending.push_back(Type.Element);
     }
@@ -540,6 +553,17 @@ std::string renderReport(const ProgramModel &Program) {
       }
       for (const std::string &S : Type.Skipped)
         OS << "    skipped " << S << "\n";
+      if (!Type.DynamicTypesReachedBy.empty()) {
+        OS << "    heap objects behind a " << Type.Name
+           << "* are saved as their class: ";
+        for (std::size_t D = 0; D < Type.DynamicTypes.size(); ++D)
+          OS << (D ? ", " : "") << Program.Types[Type.DynamicTypes[D]].Name;
+        if (Type.DynamicTypes.empty())
+          OS << "none; saving refuses them";
+        OS << "\n";
+        for (const std::string &Not : Type.NotDynamicTypes)
+          OS << "    refused on the heap: " << Not << "\n";
+      }
     }
     // A heading of their own: what the new build re-creates, which needs no skip line.
     if (LeftCount) {

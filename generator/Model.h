@@ -40,6 +40,12 @@ struct MemberRef {
 /// header seen twice) is printed once. Thread-safe: TUs are parsed in parallel.
 class Diagnostics {
 public:
+  /// A quiet instance prints nothing: it collects what a tentative walk would have said.
+  explicit Diagnostics(bool Quiet = false) : Quiet(Quiet) {}
+  /// Nothing was reported (errors, held-back leaves).
+  bool clean() const { return Errors == 0 && Groups.empty() && Fixes.empty(); }
+  /// The first problem reported, for a one-line reason.
+  std::string firstProblem() const;
   void error(const Location &Loc, const std::string &Message);
   void warning(const Location &Loc, const std::string &Message);
   void note(const Location &Loc, const std::string &Message);
@@ -69,6 +75,8 @@ private:
     std::vector<Leaf> Leaves;
   };
   std::mutex Lock;
+  bool Quiet = false;
+  std::vector<std::string> Collected; ///< what a quiet instance would have printed
   std::map<std::string, bool> Seen;
   unsigned Errors = 0;
   std::map<std::string, Group> Groups; ///< by the member's skip hint
@@ -137,6 +145,15 @@ struct TypeModel {
   bool HasMigrate = false;
   /// Index of the TU whose wrapper defines this type's ops and layout checks.
   unsigned HomeTU = 0;
+  /// A class restore may create as a heap object's dynamic type (kTypeDynamicType): its
+  /// vtable's mangled name and the index of its address point, for Lifecycle::vtable.
+  std::string VtableSymbol;
+  unsigned VtableAddressPoint = 0;
+  /// A polymorphic class a pointer points to: the classes (itself or derived) saving can
+  /// recognise as a heap object's dynamic type, and those it cannot, with why.
+  std::vector<std::uint32_t> DynamicTypes;
+  std::vector<std::string> NotDynamicTypes;
+  std::string DynamicTypesReachedBy; ///< the first such pointer's path, for the note
 
   /// A Lifecycle is emitted only for types the home TU can name and construct
   /// with `new T()` (or calloc in C).

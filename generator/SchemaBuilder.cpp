@@ -10,6 +10,7 @@
 #include "clang/AST/Mangle.h"
 #include "clang/AST/RecordLayout.h"
 #include "clang/AST/RecursiveASTVisitor.h"
+#include "clang/AST/VTableBuilder.h"
 #include "clang/Basic/SourceManager.h"
 #include "clang/Sema/Sema.h"
 #include "llvm/ADT/StringExtras.h"
@@ -98,6 +99,10 @@ public:
     if (!RD->isThisDeclarationADefinition() ||
         isa<ClassTemplateSpecializationDecl>(RD))
       return true;
+    if (const auto *CRD = dyn_cast<CXXRecordDecl>(RD))
+      if (!CRD->isDependentContext() && !CRD->isInvalidDecl() &&
+          CRD->isPolymorphic())
+        PolymorphicClasses.push_back(CRD);
     std::string Name = qualifiedName(RD);
     if (!Name.empty())
       Records[Name].push_back(RD);
@@ -177,6 +182,9 @@ public:
   std::map<std::string, std::vector<RecordDecl *>> Records;
   std::map<std::string, std::vector<ClassTemplateDecl *>> Templates;
   std::map<std::string, std::vector<TypedefNameDecl *>> Typedefs;
+  /// Class definitions with virtual functions, outside templates: the
+  /// candidate dynamic types of heap objects behind polymorphic pointers.
+  std::vector<const CXXRecordDecl *> PolymorphicClasses;
   /// Every function named symcr_validate (templates' patterns included).
   std::vector<FunctionDecl *> Validators;
   /// Every function named symcr_migrate (templates' patterns included).
@@ -230,7 +238,7 @@ public:
              ProgramModel &Program, Diagnostics &Diags,
              const Selections &Select)
       : Context(Context), S(S), TUIndex(TUIndex), Program(Program),
-        Diags(Diags), Select(Select) {
+        Sink(&Diags), Select(Select) {
     Policy = std::make_unique<PrintingPolicy>(Context.getPrintingPolicy());
     Policy->SuppressUnwrittenScope = true;
     Policy->SuppressTagKeyword = Context.getLangOpts().CPlusPlus;
@@ -246,6 +254,9 @@ public:
   std::string canonicalRecordName(const RecordDecl *RD) {
     return recordName(RD, WalkContext());
   }
+
+  /// The TU's class definitions with virtual functions (NameIndex).
+  const std::vector<const CXXRecordDecl *> *PolymorphicClasses = nullptr;
 
 private:
   std::uint32_t fail(const WalkContext &C, const std::string &What,
@@ -265,6 +276,15 @@ private:
                                 const WalkContext &C);
   bool fillFields(const RecordDecl *RD, TypeModel &Model, const WalkContext &C);
   bool checkPointee(QualType Pointee, const WalkContext &C, const char *Holder);
+  /// Finds the classes (\p Base or derived from it) a heap object behind a
+  /// pointer to \p Base may be saved as, and walks each into the schema.
+  void findDynamicTypes(const CXXRecordDecl *Base, std::uint32_t BaseIndex,
+                        const WalkContext &C);
+  /// Why restore cannot create \p Class as a heap object; empty if it can.
+  std::string whyNotCreatable(const CXXRecordDecl *Class);
+  /// Walks \p Type, or leaves the program model as it was and says why not.
+  std::uint32_t tentativeWalk(QualType Type, const WalkContext &C,
+                              std::string &Why);
 
   /// Registers \p Model under \p Key: reuses the global slot of the same name
   /// and checks that this TU describes it identically.
@@ -289,19 +309,22 @@ private:
   Sema *S;
   unsigned TUIndex;
   ProgramModel &Program;
-  Diagnostics &Diags;
+  /// Where diagnostics go: the program's, or a quiet one during a tentative walk.
+  Diagnostics *Sink;
   const Selections &Select;
   std::unique_ptr<PrintingPolicy> Policy;
   /// Types already walked in this TU (by canonical Type* and shallowness).
   std::map<std::pair<const Type *, bool>, std::uint32_t> Walked;
   std::map<const RecordDecl *, std::string> AnonymousNames;
   std::set<std::uint32_t> InProgress;
+  /// Polymorphic pointees whose dynamic types this TU has looked for.
+  std::set<std::uint32_t> DynamicTypesSought;
 };
 
 std::uint32_t TypeWalker::fail(const WalkContext &C, const std::string &What,
                                const std::string &Why) {
   bool Grouped = !C.Group.empty() && C.Group.SkipHint != C.SkipHint;
-  Diags.unrestorable(C.Where,
+  Sink->unrestorable(C.Where,
                      "'" + C.Path + "' reaches " + What + ", which cannot be " +
                          "checkpointed: " + Why,
                      C.SkipHint, Grouped ? &C.Group : nullptr);
@@ -709,21 +732,21 @@ void TypeWalker::store(std::uint32_t Index, TypeModel Model,
     if (Slot.Fingerprint != Model.Fingerprint && SameUnit) {
       // Two types of one translation unit share a canonical name: no annotation
       // placement can fix that, only a name.
-      Diags.error(C.Where,
+      Sink->error(C.Where,
                   "two different types are named '" + Model.Name +
                       "' (the second reached by '" + C.Path +
                       "'): give one of them a distinct name (a typedef or a "
                       "tag) to checkpoint both");
     } else if (Slot.Fingerprint != Model.Fingerprint &&
                Model.Name.find("(anonymous namespace)") != std::string::npos) {
-      Diags.error(
+      Sink->error(
           C.Where,
           "two different types are named '" + Model.Name + "' (reached by '" +
               C.Path + "' here and in '" + Slot.FirstSeenIn +
               "'): types with internal linkage in different translation "
               "units need distinct names to be checkpointed");
     } else if (Slot.Fingerprint != Model.Fingerprint) {
-      Diags.error(
+      Sink->error(
           C.Where,
           "type '" + Model.Name + "' (reached by '" + C.Path +
               "') is described differently in this translation unit "
@@ -737,6 +760,12 @@ void TypeWalker::store(std::uint32_t Index, TypeModel Model,
   }
   Model.HomeTU = Slot.HomeTU;
   Model.NeedsLifecycle |= Slot.NeedsLifecycle;
+  // Attached while the type was still being walked (a pointer inside it to itself).
+  Model.VtableSymbol = std::move(Slot.VtableSymbol);
+  Model.VtableAddressPoint = Slot.VtableAddressPoint;
+  Model.DynamicTypes = std::move(Slot.DynamicTypes);
+  Model.NotDynamicTypes = std::move(Slot.NotDynamicTypes);
+  Model.DynamicTypesReachedBy = std::move(Slot.DynamicTypesReachedBy);
   Model.FirstSeenIn = Program.TranslationUnits[TUIndex].Source;
   Slot = std::move(Model);
 }
@@ -897,9 +926,9 @@ bool TypeWalker::checkPointee(QualType Pointee, const WalkContext &C,
       return false;
     }
     // A raw pointer to a polymorphic class is a reference to a checkpointed
-    // object (a member, an element), whose dynamic type is its declared one;
-    // one pointing anywhere else is refused when saving (kTypePolymorphic). An
-    // owning pointer's object would have to be rebuilt, by an unknown type.
+    // object (a member, an element), or a heap object saved as its dynamic
+    // type (findDynamicTypes). An owning pointer's object would be rebuilt
+    // through the owner's own type.
     if (const auto *CRD = dyn_cast<CXXRecordDecl>(RD))
       if (CRD->isPolymorphic() && !CRD->hasAttr<FinalAttr>() &&
           llvm::StringRef(Holder) != "pointer") {
@@ -931,12 +960,121 @@ std::uint32_t TypeWalker::pointer(QualType Type, const PointerType *PT,
   Model.Element = walk(Pointee, intoPointee(C, Model.Name));
   if (Model.Element == symcr::kNoType)
     return symcr::kNoType;
-  // A polymorphic pointee is never created by restore (its dynamic type is
-  // unknown), and may be abstract: no Lifecycle.
-  if (!(Program.Types[Model.Element].Flags & symcr::kTypePolymorphic))
-    Program.Types[Model.Element].NeedsLifecycle = true;
+  // A polymorphic pointee is created by restore as its dynamic type, which
+  // has a Lifecycle of its own; the pointee itself may be abstract.
+  std::uint32_t Element = Model.Element;
+  if (!(Program.Types[Element].Flags & symcr::kTypePolymorphic))
+    Program.Types[Element].NeedsLifecycle = true;
   store(Index, std::move(Model), C);
+  if (Program.Types[Element].Flags & symcr::kTypePolymorphic)
+    findDynamicTypes(Pointee->getAsCXXRecordDecl(), Element,
+                     intoPointee(C, Program.Types[Index].Name));
   return Index;
+}
+
+std::string TypeWalker::whyNotCreatable(const CXXRecordDecl *Class) {
+  std::string Why;
+  if (isSkippedType(Class, Why))
+    return "skipped (" + Why + ")";
+  if (Class->getNumVBases() > 0)
+    return "it has virtual bases";
+  QualType Type = Context.getRecordType(Class);
+  if (spelling(Type).empty() || !accessible(Type))
+    return "it cannot be named outside its scope";
+  auto *Mutable = const_cast<CXXRecordDecl *>(Class);
+  const CXXConstructorDecl *Constructor =
+      S ? S->LookupDefaultConstructor(Mutable) : nullptr;
+  if (!S ? !Class->hasDefaultConstructor()
+         : !Constructor || Constructor->isDeleted() ||
+               Constructor->getAccess() != AS_public)
+    return "no public default constructor";
+  const CXXDestructorDecl *Destructor = S ? S->LookupDestructor(Mutable) : nullptr;
+  if (S && (!Destructor || Destructor->isDeleted() ||
+            Destructor->getAccess() != AS_public))
+    return "no public destructor";
+  return "";
+}
+
+std::uint32_t TypeWalker::tentativeWalk(QualType Type, const WalkContext &C,
+                                        std::string &Why) {
+  auto Done = Walked.find({Type.getCanonicalType().getTypePtr(), C.Shallow});
+  if (Done != Walked.end())
+    return Done->second;
+  std::vector<TypeModel> Types = Program.Types;
+  std::map<std::string, std::uint32_t> TypeIndex = Program.TypeIndex;
+  auto WalkedBefore = Walked;
+  auto SoughtBefore = DynamicTypesSought;
+  Diagnostics Quiet(/*Quiet=*/true);
+  Diagnostics *Outer = Sink;
+  Sink = &Quiet;
+  std::uint32_t Index = walk(Type, C);
+  Sink = Outer;
+  if (Index != symcr::kNoType && Quiet.clean())
+    return Index;
+  Why = Quiet.firstProblem();
+  Program.Types = std::move(Types);
+  Program.TypeIndex = std::move(TypeIndex);
+  Walked = std::move(WalkedBefore);
+  DynamicTypesSought = std::move(SoughtBefore);
+  return symcr::kNoType;
+}
+
+void TypeWalker::findDynamicTypes(const CXXRecordDecl *Base,
+                                  std::uint32_t BaseIndex,
+                                  const WalkContext &C) {
+  if (!Base || !PolymorphicClasses || !DynamicTypesSought.insert(BaseIndex).second)
+    return;
+  Base = Base->getDefinition();
+  if (Program.Types[BaseIndex].DynamicTypesReachedBy.empty())
+    Program.Types[BaseIndex].DynamicTypesReachedBy = C.Path.substr(0, C.Path.size() - 2);
+  auto NotCreatable = [&](const std::string &Name, const std::string &Why) {
+    std::string Entry = Name + ": " + Why;
+    std::vector<std::string> &List = Program.Types[BaseIndex].NotDynamicTypes;
+    if (std::find(List.begin(), List.end(), Entry) == List.end())
+      List.push_back(Entry);
+  };
+  // Saving recognises a class by its vtable, laid out by the Itanium C++ ABI
+  // (every GCC and Clang target symcr supports).
+  std::unique_ptr<MangleContext> Mangler(Context.createMangleContext());
+  auto *Itanium = dyn_cast<ItaniumMangleContext>(Mangler.get());
+  auto *VTables = dyn_cast<ItaniumVTableContext>(Context.getVTableContext());
+  if (!Itanium || !VTables || VTables->isRelativeLayout()) {
+    NotCreatable(Base->getNameAsString(),
+                 "the target's C++ ABI is not the Itanium one");
+    return;
+  }
+  for (const CXXRecordDecl *Class : *PolymorphicClasses) {
+    if (Class != Base && !Class->isDerivedFrom(Base))
+      continue;
+    if (Class->isAbstract())
+      continue; // never an object's dynamic type
+    std::string Name = canonicalRecordName(Class);
+    std::string Why = whyNotCreatable(Class);
+    QualType Type = Context.getRecordType(Class);
+    std::uint32_t Index = symcr::kNoType;
+    if (Why.empty()) {
+      WalkContext Candidate = C;
+      Candidate.Path = C.Path + "(" + Name + ")";
+      Index = tentativeWalk(Type, Candidate, Why);
+    }
+    if (Index == symcr::kNoType) {
+      NotCreatable(Name, Why);
+      continue;
+    }
+    TypeModel &Dynamic = Program.Types[Index];
+    Dynamic.NeedsLifecycle = true;
+    std::string Symbol;
+    llvm::raw_string_ostream Out(Symbol);
+    Itanium->mangleCXXVTable(Class, Out);
+    Dynamic.VtableSymbol = Out.str();
+    Dynamic.VtableAddressPoint =
+        VTables->getVTableLayout(Class)
+            .getAddressPoint(BaseSubobject(Class, CharUnits::Zero()))
+            .AddressPointIndex;
+    std::vector<std::uint32_t> &List = Program.Types[BaseIndex].DynamicTypes;
+    if (std::find(List.begin(), List.end(), Index) == List.end())
+      List.push_back(Index);
+  }
 }
 
 std::uint32_t TypeWalker::synthesizedPair(QualType Key, QualType Value,
@@ -1349,7 +1487,7 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
       Field.Offset = (Bits / UnitBits) * UnitBytes;
       Field.BitOffset = static_cast<unsigned>(Bits - Field.Offset * 8);
       if (Field.BitOffset + Field.BitWidth > UnitBits) {
-        Diags.error(F.Where, "bit-field '" + F.Path +
+        Sink->error(F.Where, "bit-field '" + F.Path +
                                  "' straddles its storage unit "
                                  "(packed layout); not supported");
         Ok = false;
@@ -1377,7 +1515,7 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
       Field.RangeMax = std::strtod(Hi.c_str(), &End2);
       if (Lo.empty() || Hi.empty() || *End1 || *End2 ||
           Field.RangeMin > Field.RangeMax) {
-        Diags.error(F.Where,
+        Sink->error(F.Where,
                     "SYMCR_RANGE needs two numeric bounds lo <= hi, got '" +
                         Range.str() + "'");
         Ok = false;
@@ -1389,7 +1527,7 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
       if ((Field.Flags & symcr::kFieldHasRange) &&
           (Field.RangeMin != It->second.first ||
            Field.RangeMax != It->second.second)) {
-        Diags.error(F.Where, "member '" + F.Path +
+        Sink->error(F.Where, "member '" + F.Path +
                                  "' has SYMCR_RANGE and a different "
                                  "range directive");
         Ok = false;
@@ -1895,6 +2033,7 @@ void SchemaBuilder::addTranslationUnit(
 
   // Roots defined in this TU.
   TypeWalker Walker(Context, S, TUIndex, Program, Diags, Select);
+  Walker.PolymorphicClasses = &Index.PolymorphicClasses;
   const SourceManager &SM = Context.getSourceManager();
   for (auto &Entry : Index.Variables) {
     for (VarDecl *VD : Entry.second) {
@@ -2082,8 +2221,23 @@ void SchemaBuilder::finish(bool CheckUnmatched) {
   for (TypeModel &Type : Program.Types) {
     if (Type.hasLifecycle())
       Type.Flags |= symcr::kTypeCreatable;
+    if (Type.hasLifecycle() && !Type.VtableSymbol.empty())
+      Type.Flags |= symcr::kTypeDynamicType;
     if (Type.hasValidate(Program))
       Type.Flags |= symcr::kTypeValidated;
+  }
+  for (const TypeModel &Type : Program.Types) {
+    if (Type.DynamicTypesReachedBy.empty() || !Type.DynamicTypes.empty())
+      continue;
+    std::string Reasons;
+    for (const std::string &Reason : Type.NotDynamicTypes)
+      Reasons += (Reasons.empty() ? " (" : "; ") + Reason;
+    Diags.note(Location(),
+               "'" + Type.DynamicTypesReachedBy + "' points to polymorphic class '" +
+                   Type.Name + "': it is saved as a reference to the member or "
+                   "element of the state it points at; no class derived from it "
+                   "can be created by restore" + (Reasons.empty() ? "" : Reasons + ")") +
+                   ", so saving refuses a heap object it points to");
   }
   for (std::size_t I = 0; I < Sidecar.size() && CheckUnmatched; ++I)
     for (std::size_t A = 0; A < Sidecar[I].Arguments.size(); ++A) {

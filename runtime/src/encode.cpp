@@ -548,27 +548,62 @@ class Encoder {
   }
 
   std::uint32_t new_heap_object(const Reference& reference) {
-    if (types_[reference.type].flags & kTypePolymorphic) {
-      // Its dynamic type is unknown: a heap object of the static type would be sliced.
-      fail_unsupported("a pointer to polymorphic class %s at %p that points to no checkpointed "
-                       "object (only members and elements of the state have a known dynamic "
-                       "type): point it at one, or skip it",
-                       types_[reference.type].name,
-                       reinterpret_cast<const void*>(reference.address));
-      return 0;
+    std::uintptr_t start = reference.address;
+    std::uint32_t type = reference.type;
+    if (types_[type].flags & kTypePolymorphic) {
+      // Saved as its dynamic type, or refused: an object of the static type would be sliced.
+      if (!dynamic_type(start, type)) {
+        char candidates[80];
+        list_dynamic_types(reference.type, candidates, sizeof candidates);
+        fail_unsupported("a pointer to polymorphic class %s at %p: its object is no member or "
+                         "element of the state, and not of a class this build can create (%s)",
+                         types_[reference.type].name,
+                         reinterpret_cast<const void*>(reference.address), candidates);
+        return 0;
+      }
     }
     const std::uint32_t object = schema_.root_count + static_cast<std::uint32_t>(s_.heap.size());
-    const std::uint32_t region = add_region(Region{reference.address,
-                                                   reference.address + size_of(reference.type),
-                                                   reference.type, RegionKind::Object, object, 0,
-                                                   0, 0, 0},
+    const std::uint32_t region = add_region(Region{start, start + size_of(type), type,
+                                                   RegionKind::Object, object, 0, 0, 0, 0},
                                             /*heap_object=*/true);
     if (!ok()) return region;
-    put_u32(reference.type);
+    put_u32(type);
     s_.heap.push_back(HeapObject{region, pos_});
     put_u8(reference.shared ? 1 : 0);
-    encode(reference.type, reinterpret_cast<const std::uint8_t*>(reference.address));
+    encode(type, reinterpret_cast<const std::uint8_t*>(start));
     return region;
+  }
+
+  // Itanium C++ ABI: an object's vtable pointer is its first word, and the word two before
+  // the address it holds is the offset from this subobject to the complete object, whose own
+  // vtable pointer identifies its class. On success, `address` and `type` are the complete
+  // object's.
+  bool dynamic_type(std::uintptr_t& address, std::uint32_t& type) const {
+    const auto* vtable = *reinterpret_cast<const std::ptrdiff_t* const*>(address);
+    const std::uintptr_t complete = address + static_cast<std::uintptr_t>(vtable[-2]);
+    const void* complete_vtable = *reinterpret_cast<const void* const*>(complete);
+    for (const SchemaFacts::DynamicType& candidate : facts_.dynamic_types) {
+      if (candidate.vtable == complete_vtable) {
+        address = complete;
+        type = candidate.type;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  __attribute__((cold)) void list_dynamic_types(std::uint32_t base, char* out,
+                                                std::size_t size) const {
+    std::size_t used = 0;
+    out[0] = '\0';
+    for (const SchemaFacts::DynamicType& candidate : facts_.dynamic_types) {
+      if (!has_base(types_, schema_.type_count, candidate.type, base)) continue;
+      const int n = std::snprintf(out + used, size - used, "%s%s", used ? ", " : "",
+                                  types_[candidate.type].name);
+      if (n < 0 || static_cast<std::size_t>(n) >= size - used) break;
+      used += static_cast<std::size_t>(n);
+    }
+    if (used == 0) std::snprintf(out, size, "none derives from %s", types_[base].name);
   }
 
   // A shared_ptr target must be a whole heap object: sharing is kept by owning it.

@@ -53,8 +53,15 @@ class Planner {
     for (std::uint32_t t = 0; t < w_.type_count; ++t) {
       const TypeInfo& type = w_.types[t];
       if ((type.kind == Kind::Pointer || type.kind == Kind::SharedPtr) &&
-          !plan_.heap_nodes[type.element]) {
+          type.element < w_.type_count && !plan_.heap_nodes[type.element]) {
         plan_.heap_nodes[type.element] = node(type.element, find_reader_type(w_.types[type.element]));
+      }
+    }
+    // A heap object behind a pointer to a polymorphic base is saved as its dynamic type.
+    for (std::uint32_t t = 0; t < w_.type_count; ++t) {
+      if ((w_.types[t].flags & kTypeDynamicType) && w_.types[t].kind == Kind::Struct &&
+          !plan_.heap_nodes[t]) {
+        plan_.heap_nodes[t] = node(t, find_reader_type(w_.types[t]));
       }
     }
     decide_migrations();
@@ -68,6 +75,18 @@ class Planner {
   }
 
  private:
+  // Whether the writer knew a class derived from (or equal to) `base` that it could save as a
+  // heap object's dynamic type.
+  bool has_dynamic_type(std::uint32_t base) const {
+    for (std::uint32_t t = 0; t < w_.type_count; ++t) {
+      if ((w_.types[t].flags & kTypeDynamicType) &&
+          (t == base || has_base(w_.types, w_.type_count, t, base))) {
+        return true;
+      }
+    }
+    return false;
+  }
+
   // ---- matching ------------------------------------------------------------------------
   std::uint32_t find_reader_type(const TypeInfo& writer) const {
     for (std::uint32_t t = 0; t < r_.type_count; ++t) {
@@ -313,12 +332,15 @@ class Planner {
         n.action = wt.kind == Kind::Pointer ? Action::Pointer : Action::SharedPtr;
         n.element = node(wt.element, rt.element);
         // A raw pointer is restored by what it pointed at: a checkpointed object becomes a
-        // reference to the new build's object at the same path. A polymorphic pointee is
-        // never on the heap (saving refused it), so such a pointer is always a reference.
+        // reference to the new build's object at the same path. A polymorphic pointee is on
+        // the heap only as a class the writer could create (by its dynamic type).
         if (n.action == Action::Pointer) {
-          n.detail = (rp.flags & kTypePolymorphic)
-                         ? "reference to the object at the same path"
-                         : "reference to the object at the same path, or a heap object rebuilt";
+          n.detail = !(rp.flags & kTypePolymorphic)
+                         ? "reference to the object at the same path, or a heap object rebuilt"
+                     : has_dynamic_type(wt.element)
+                         ? "reference to the object at the same path, or a heap object "
+                           "rebuilt as its dynamic type"
+                         : "reference to the object at the same path";
         }
         return;
       }

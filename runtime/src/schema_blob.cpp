@@ -170,6 +170,25 @@ __attribute__((cold)) bool flat_runs_of(const Schema& schema, std::uint32_t type
 
 }  // namespace
 
+__attribute__((cold)) bool has_base(const TypeInfo* types, std::uint32_t type_count,
+                                    std::uint32_t type, std::uint32_t base) {
+  // Each type visited once: a corrupt schema's base fields may form cycles or diamonds.
+  std::vector<bool> seen(type_count, false);
+  std::vector<std::uint32_t> pending{type};
+  while (!pending.empty()) {
+    const std::uint32_t t = pending.back();
+    pending.pop_back();
+    if (t >= type_count || seen[t] || types[t].kind != Kind::Struct) continue;
+    seen[t] = true;
+    for (std::uint32_t f = 0; f < types[t].field_count; ++f) {
+      if (!(types[t].fields[f].flags & kFieldBase)) continue;
+      if (types[t].fields[f].type == base) return true;
+      pending.push_back(types[t].fields[f].type);
+    }
+  }
+  return false;
+}
+
 __attribute__((cold)) SchemaFacts compute_schema_facts(const Schema& schema) {
   SchemaFacts facts;
   facts.flat_first.assign(schema.type_count, kNotFlat);
@@ -179,6 +198,9 @@ __attribute__((cold)) SchemaFacts compute_schema_facts(const Schema& schema) {
   for (std::uint32_t t = 0; t < schema.type_count; ++t) {
     const TypeInfo& type = schema.types[t];
     if (type.kind != Kind::Struct) continue;
+    if ((type.flags & kTypeDynamicType) && type.lifecycle && type.lifecycle->vtable) {
+      facts.dynamic_types.push_back(SchemaFacts::DynamicType{type.lifecycle->vtable, t});
+    }
     for (std::uint32_t f = 0; f < type.field_count; ++f) {
       const std::uint32_t field_type = type.fields[f].type;
       if (field_type < schema.type_count && schema.types[field_type].kind == Kind::Pointer) {

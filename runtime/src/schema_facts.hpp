@@ -28,6 +28,12 @@ struct SchemaFacts {
   std::vector<std::uint32_t> flat_wire_size;
   std::vector<FlatRun> flat_runs;
   std::vector<bool> has_pointer_fields;  // per type: a Struct with raw Pointer fields
+  // kTypeDynamicType classes by their vtable: how saving learns a heap object's dynamic type.
+  struct DynamicType {
+    const void* vtable;
+    std::uint32_t type;
+  };
+  std::vector<DynamicType> dynamic_types;
 };
 
 // The blob and facts of `schema`, computed on first use. Both live as long as the process.
@@ -38,6 +44,10 @@ struct SchemaCacheEntry {
 const SchemaCacheEntry& schema_cache_entry(const Schema& schema);
 
 SchemaFacts compute_schema_facts(const Schema& schema);
+
+// Whether `base` is a base class of `type`, directly or through its bases.
+bool has_base(const TypeInfo* types, std::uint32_t type_count, std::uint32_t type,
+              std::uint32_t base);
 void serialise_schema(const Schema& schema, std::vector<std::uint8_t>& out);
 
 // Scalar helpers shared by the engine.

@@ -32,7 +32,7 @@ void destroy_node(void* node) {
   ++destroyed;
   delete static_cast<Node*>(node);
 }
-const symcr::Lifecycle counted_node{&create_node, &destroy_node};
+const symcr::Lifecycle counted_node{&create_node, &destroy_node, nullptr};
 
 // The old build: a list with head and tail. The new build dropped `head`.
 struct OldList {

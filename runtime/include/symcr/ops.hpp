@@ -29,7 +29,7 @@ template <typename T>
 struct lifecycle {
   static void* create() { return new T(); }
   static void destroy(void* object) { delete static_cast<T*>(object); }
-  static constexpr Lifecycle table{&create, &destroy};
+  static constexpr Lifecycle table{&create, &destroy, nullptr};
 };
 
 template <typename S>

@@ -57,11 +57,14 @@ enum : std::uint32_t {
   kTypeValidated = 1u << 4,   // the build has a symcr_validate for the type; recorded in schema
                               // files so that `symcr plan` says it cannot foresee the verdict
   kTypePolymorphic = 1u << 5, // a class with virtual functions (not final): a raw pointer to it
-                              // must target a checkpointed object, whose dynamic type is its
-                              // declared one; save refuses one that would need a heap object
+                              // targets a checkpointed object (a member, an element) or a heap
+                              // object of one of the build's kTypeDynamicType classes
   kTypeLeavesMembers = 1u << 6, // left_to_new_build lists members this build never restores
                                 // (const, reference, function and member pointers): a
                                 // checkpoint's value for one of them is not lost but left
+  kTypeDynamicType = 1u << 7,   // a class restore can create as the dynamic type of a heap
+                                // object behind a pointer to one of its polymorphic bases: its
+                                // Lifecycle names its vtable, by which saving recognises it
 };
 
 // FieldInfo::flags
@@ -98,6 +101,9 @@ struct FieldInfo {
 struct Lifecycle {                    // for types that are heap-allocated or staged
   void* (*create)();                  // new T() (value-initialised)
   void (*destroy)(void* object);      // delete static_cast<T*>(object)
+  // kTypeDynamicType: what the vtable pointer of an object whose dynamic type is T holds (the
+  // address point of T's vtable, Itanium C++ ABI); else nullptr.
+  const void* vtable;
 };
 
 struct StringOps {

@@ -1,6 +1,7 @@
 // v1 of flight_modes: a patch adds a mode and reorders the mode members. The current mode comes
 // back as a pointer to v1's own mode object of the same name, whatever its new place; a
-// pointer to a mode object that is not part of the state is refused when saving.
+// pointer to a mode object outside the state, of a class restore cannot create, is refused
+// when saving.
 #include <cstdio>
 #include <cstring>
 
@@ -24,6 +25,11 @@ struct ModeAuto : Mode {
 };
 struct ModeStabilize : Mode {
   int number() const override { return 0; }
+};
+struct ModeFlip : Mode {
+  explicit ModeFlip(int rolls) : rolls(rolls) {}
+  int number() const override { return 14; }
+  int rolls;
 };
 
 struct Copter {
@@ -54,7 +60,8 @@ int main(int argc, char** argv) {
   // The report says how the pointer came back.
   const symcr::ReportEntry* current = xv::entry(report, "copter.flightmode");
   XV_CHECK(current != nullptr &&
-           current->detail == "reference to the object at the same path");
+           current->detail == "reference to the object at the same path, or a heap object "
+                              "rebuilt as its dynamic type");
   // The callback's object is the root again, and the root's fields are listed once, under
   // the root, not a second time as the pointee of that callback.
   XV_CHECK(copter.on_mode_change.object == &copter);
@@ -65,13 +72,15 @@ int main(int argc, char** argv) {
     }
   }
 
-  // A mode object outside the state has no known dynamic type there: saving refuses it.
-  ModeAuto* loose = new ModeAuto();
+  // A mode object outside the state, of a class restore cannot create (no default
+  // constructor): saving refuses it, naming the classes it could save.
+  ModeFlip* loose = new ModeFlip(3);
   copter.flightmode = loose;
   std::vector<std::uint8_t> bytes;
   const symcr::Status saved = symcr::checkpoint_to_buffer(*symcr_program_schema(), bytes);
   XV_CHECK(saved.error() == symcr::Error::Unsupported);
   XV_CHECK(std::strstr(saved.message(), "polymorphic class Mode") != nullptr);
+  XV_CHECK(std::strstr(saved.message(), "ModeLoiter") != nullptr);
   delete loose;
   return xv::verdict();
 }
