@@ -1,4 +1,4 @@
-// Code-size probe (PRODUCT.md §11: runtime + generated code <= 12 KB of .text). One small
+// Code-size probe (target: runtime + generated code <= 12 KB of .text). One small
 // program that keeps the critical state (critical_state.hpp), checkpoints it periodically and
 // restores it at start-up, built twice:
 //   PROBE_WITH_SYMCR=1  with symcr: a Store, save() per tick, restore_latest() at start, the

@@ -1,6 +1,6 @@
 // The specimen-sized critical state (critical_state.hpp) beside the two serialisation libraries
 // a C++ user would otherwise reach for, cereal's and Boost.Serialization's binary archives, with
-// hand-written serialize functions for the same structs, save and load each (PRODUCT.md §11:
+// hand-written serialize functions for the same structs, save and load each (benchmarks/README.md:
 // "faster than cereal's and Boost.Serialization's binary archives ... side by side in one
 // run"); and restore across a schema change (V0 checkpoint into the V1 build), with the
 // resolution plan cached and not cached.

@@ -1,4 +1,4 @@
-// The specimen-sized critical state shared by the benchmarks (PRODUCT.md §11): about 300 bytes
+// The specimen-sized critical state shared by the benchmarks (benchmarks/README.md): about 300 bytes
 // of values in about 100 fields of nested structs, arrays (one two-dimensional) and enums, in
 // the shape of ArduPilot's Copter / AP_AHRS / AP_Mission, described by a hand-written schema in
 // the form symcr-gen emits (see tests/runtime/handwritten_schemas.hpp).

@@ -1,4 +1,4 @@
-// Checkpoint and restore latency of the runtime's file layer (PRODUCT.md §11: store save
+// Checkpoint and restore latency of the runtime's file layer (benchmarks/README.md: store save
 // <= 5 us, restore <= 20 us) for a specimen-sized state (critical_state.hpp): about 300 bytes
 // in about 100 fields of nested structs, arrays (one two-dimensional) and enums, described by a
 // hand-written schema in the shape symcr-gen emits. Beside them, the floor: memcpy and one raw

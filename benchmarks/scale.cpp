@@ -1,4 +1,4 @@
-// How checkpoint and restore cost grows with the state (PRODUCT.md §11: within 2x of memcpy for
+// How checkpoint and restore cost grows with the state (benchmarks/README.md: within 2x of memcpy for
 // large POD arrays; a 10^6-node pointer graph with cycles checkpointed and restored in <= 1 s
 // each). Schemas are hand-written in the form symcr-gen emits
 // (tests/runtime/handwritten_schemas.hpp):

@@ -1,4 +1,4 @@
-// symcr: the command-line tool (PRODUCT.md §9). Parses the command line with LLVM's
+// symcr: the command-line tool (cli/README.md). Parses the command line with LLVM's
 // CommandLine library (one subcommand each, with its own --help) and runs the subcommand.
 // Exit codes: 0 fine, 1 a finding, 2 usage or I/O error (exit_codes.hpp).
 #include <llvm/Support/CommandLine.h>

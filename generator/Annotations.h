@@ -3,7 +3,7 @@
 //
 // Macros (Clang `annotate` attributes read while walking), `#pragma symcr ...`
 // and the sidecar annotation file both produce Directives with the same meaning
-// (PRODUCT.md §3). Directives name things by source names; SchemaBuilder
+// (generator/README.md). Directives name things by source names; SchemaBuilder
 // resolves them against each translation unit and reports names that match
 // nothing.
 //

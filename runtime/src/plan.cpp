@@ -1,4 +1,4 @@
-// Resolution of a writer schema against the reader schema (PRODUCT.md §6), and the cache of
+// Resolution of a writer schema against the reader schema (docs/resolution.md), and the cache of
 // plans. Struct-to-struct matching is decided by the holder (root or field name): a type
 // renamed without annotation still matches through the field that holds it. Type names are
 // compared only where no holder exists: bases, variant alternatives and pointees.

@@ -1,4 +1,4 @@
-// Resolution (PRODUCT.md §6): how each writer type of a checkpoint maps onto the running
+// Resolution (docs/resolution.md): how each writer type of a checkpoint maps onto the running
 // build's (reader) types. A plan is built once per (writer schema hash, reader schema) and
 // cached; restore then only follows it.
 #ifndef SYMCR_SRC_PLAN_HPP

@@ -1,4 +1,4 @@
-// The restore path (PRODUCT.md §5-§7): a payload written with the writer schema is decoded
+// The restore path (docs/resolution.md): a payload written with the writer schema is decoded
 // twice along the same plan.
 //   Pass 1 (Check) reads everything, checks every bound, conversion, enumerator, range,
 //   validator and reference, and builds the report; nothing live is written.
@@ -887,7 +887,7 @@ class Restorer {
     return false;
   }
 
-  // PRODUCT.md §7: a non-null pointer the new build already holds, of the pointee's type,
+  // docs/resolution.md, pointers: a non-null pointer the new build already holds, of the pointee's type,
   // lends its object to the heap object it now refers to (once; never an object in a root).
   void claim_live_objects() {
     claimed_.assign(heap_.size(), nullptr);

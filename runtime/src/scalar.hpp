@@ -1,5 +1,5 @@
 // Scalar values in flight between a writer type and a reader type: read from wire bytes,
-// converted with per-value range checks (PRODUCT.md §6), written at the reader's width.
+// converted with per-value range checks (docs/resolution.md), written at the reader's width.
 #ifndef SYMCR_SRC_SCALAR_HPP
 #define SYMCR_SRC_SCALAR_HPP
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The paper's experiment (PRODUCT.md §10): for each mission x version x method, N flights in
+"""The paper's experiment (specimen/README.md): for each mission x version x method, N flights in
 which V0 flies to a preselected random point, is checkpointed and killed (SIGKILL), and the
 patched build Vk is started, restores, and must finish the mission.
 

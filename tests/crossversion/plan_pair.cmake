@@ -1,4 +1,4 @@
-# ctest driver for a build's schema file (tracker issue 5):
+# ctest driver for a build's schema file:
 #   cmake -DV0=<exe> -DCLI=<symcr> -DSCHEMA0=<v0's schema file> -DSCHEMA1=<v1's schema file>
 #         -DCHECKPOINT=<file> -DEXPECT_EXIT=<0|1> [-DEXPECT=<regex;...>] -P plan_pair.cmake
 # v0 checkpoints; the schema hash in v0's schema file, written at build time, must be the one

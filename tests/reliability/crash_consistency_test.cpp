@@ -1,4 +1,4 @@
-// Crash consistency of the checkpoint store (PRODUCT.md §5, docs/format.md §4):
+// Crash consistency of the checkpoint store (docs/format.md §4):
 //   - a writer process saving in a loop is SIGKILLed at random moments, hundreds of times;
 //     after every kill restore_latest() must return a complete checkpoint whose sequence is
 //     the newest one the writer reported as saved, or the one it was writing;

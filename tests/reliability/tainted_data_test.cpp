@@ -1,4 +1,4 @@
-// Tainted data (PRODUCT.md §1, §5): a checkpoint whose values were changed on disk by someone
+// Tainted data: a checkpoint whose values were changed on disk by someone
 // who also recomputed the CRC-32C passes every integrity check, so only the user's rules stand
 // between it and the live state: SYMCR_RANGE bounds on scalar fields (FieldInfo
 // kFieldHasRange/range_min/range_max) and a type's symcr_validate (TypeInfo::validate). A value

@@ -1,4 +1,4 @@
-// PRODUCT.md §6 "container: its contents": world B, every standard container, string, optional,
+// docs/resolution.md, "container: its contents": world B, every standard container, string, optional,
 // variant and unique_ptr, restored into a build that changed element types and kinds.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Migration hooks (PRODUCT.md §6): symcr::OldValues over real payloads, and restore calling
+// Migration hooks (docs/resolution.md): symcr::OldValues over real payloads, and restore calling
 // TypeInfo::migrate — after the mechanical rules, nested objects first, per element, never when
 // the type did not change, on a validator's staged copy, never when the restore fails — and the
 // report's entries.

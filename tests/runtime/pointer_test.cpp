@@ -1,4 +1,4 @@
-// PRODUCT.md §7: pointers restored symbolically. World C saves a cyclic graph of heap nodes
+// Pointers restored symbolically (docs/resolution.md). World C saves a cyclic graph of heap nodes
 // with sharing, pointers into a root's fields, into an array element and into a container
 // element, a null, an outside pointer and a shared_ptr held twice; the reader build moved every
 // one of those fields.

@@ -1,4 +1,4 @@
-// PRODUCT.md §6, rule by rule: world A (scalars, structs, arrays, unions, enums, bit-fields,
+// docs/resolution.md, rule by rule: world A (scalars, structs, arrays, unions, enums, bit-fields,
 // roots) and world D (bases), saved by the old build (a0/d0) and restored into the patched
 // build (a1/d1).
 #include <gtest/gtest.h>

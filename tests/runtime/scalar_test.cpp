@@ -1,4 +1,4 @@
-// Per-value scalar conversions (PRODUCT.md §6: convert; a value that does not fit is rejected).
+// Per-value scalar conversions (docs/resolution.md: convert; a value that does not fit is rejected).
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -20,7 +20,7 @@
 #include "symcr/symcr.hpp"
 
 // Counts every allocation through operator new in this test binary: the store's save() must
-// not allocate once warmed up (PRODUCT.md §5).
+// not allocate once warmed up.
 // GCC cannot see that the replaced new and delete below are a matching pair.
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 static std::atomic<std::uint64_t> g_allocations{0};

@@ -1,4 +1,4 @@
-// Migration hooks (PRODUCT.md §6): for a change no mechanical rule expresses (a unit change, a
+// Migration hooks (docs/resolution.md): for a change no mechanical rule expresses (a unit change, a
 // field split in two), the new build declares, next to the type,
 //
 //   void symcr_migrate(Nav& nav, const symcr::OldValues& old);

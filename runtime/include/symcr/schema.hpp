@@ -31,13 +31,13 @@ enum class Kind : std::uint8_t {
   Container = 10,  // vector/deque/list/set/map/...: elements of `element`; ops: ContainerOps
   Optional = 11,   // std::optional<element>; ops: OptionalOps
   Variant = 12,    // std::variant<alternatives...>; ops: VariantOps
-  Pointer = 13,    // raw T*; `element` is T; target restored symbolically (PRODUCT.md §7)
+  Pointer = 13,    // raw T*; `element` is T; target restored symbolically (docs/resolution.md)
   UniquePtr = 14,  // std::unique_ptr<element>; owns its pointee; ops: UniquePtrOps
   SharedPtr = 15,  // std::shared_ptr<element>; sharing kept; ops: SharedPtrOps
 };
 
 // Which standard container a Kind::Container type is. Informational (names, CLI); restore
-// treats any container as "its contents" (PRODUCT.md §6).
+// treats any container as "its contents" (docs/resolution.md).
 enum class ContainerKind : std::uint8_t {
   Vector = 1, Deque, List, ForwardList, Set, MultiSet, UnorderedSet, UnorderedMultiSet,
   Map, MultiMap, UnorderedMap, UnorderedMultiMap,
@@ -70,7 +70,7 @@ enum : std::uint32_t {
 // FieldInfo::flags
 enum : std::uint32_t {
   kFieldBase = 1u << 0,       // a base-class subobject; `name` is the base's type name
-  kFieldHasRange = 1u << 1,   // range_min/range_max validate restored values (issue 7)
+  kFieldHasRange = 1u << 1,   // range_min/range_max validate restored values
 };
 
 // RootInfo::flags

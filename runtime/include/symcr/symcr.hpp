@@ -19,7 +19,7 @@
 #include "symcr/schema.hpp"
 
 // ---------------------------------------------------------------------------------------------
-// Annotations (PRODUCT.md §3). For an ordinary compiler they expand to nothing; symcr-gen
+// Annotations (generator/README.md). For an ordinary compiler they expand to nothing; symcr-gen
 // defines SYMCR_GENERATOR and reads them as Clang `annotate` attributes. Place them where a
 // GNU attribute goes: `SYMCR_CHECKPOINT Copter copter;`, `int raw SYMCR_SKIP;`,
 // `struct SYMCR_SKIP Buffer {...};`, `float yaw SYMCR_RENAMED_FROM("heading");`.
@@ -77,7 +77,7 @@ class Status {
 };
 
 // ---------------------------------------------------------------------------------------------
-// The restore report (PRODUCT.md §5): one entry per root and field (by path), plus value-level
+// The restore report (docs/resolution.md): one entry per root and field (by path), plus value-level
 // rejections with their concrete paths ("mission.items[3].alt").
 enum class Decision : std::uint8_t {
   Restored,   // plain restore
@@ -169,7 +169,7 @@ Report restore_from_buffer(const Schema& schema, const std::uint8_t* data, std::
                            const RestoreOptions& options = {});
 
 // ---------------------------------------------------------------------------------------------
-// The checkpoint store (PRODUCT.md §5): one preallocated file with a ring of slots.
+// The checkpoint store (docs/format.md §4): one preallocated file with a ring of slots.
 struct StoreOptions {
   std::uint32_t slots = 4;
   std::uint32_t slot_size = 64 * 1024;  // bytes per slot, header included

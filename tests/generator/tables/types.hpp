@@ -1,4 +1,4 @@
-// Types covering every kind of PRODUCT.md §4, with public members so that the test can compare
+// Types covering every kind symcr supports (generator/README.md), with public members so that the test can compare
 // the generated tables against what g++ computes (sizeof, alignof, offsetof).
 #ifndef SYMCR_TESTS_GENERATOR_TABLES_TYPES_HPP
 #define SYMCR_TESTS_GENERATOR_TABLES_TYPES_HPP
