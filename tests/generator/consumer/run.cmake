@@ -2,12 +2,7 @@
 # it, then edits its header and checks that the build regenerates the checkpoint code.
 #   cmake -DBUILD=<symcr build dir> -DSOURCE=<this dir> -DWORK=<scratch dir>
 #         [-DGEN=<prebuilt symcr-gen>] [-DSANITIZE=ON] -P run.cmake
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE out)
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "failed (${result}): ${ARGN}\n${out}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../run_checked.cmake)
 
 file(REMOVE_RECURSE "${WORK}")
 # Only what a consuming project needs (the "sdk" component), not the other tools.

@@ -1,12 +1,7 @@
 # Configures and builds the subproject (symcr through add_subdirectory), then runs its program.
 #   cmake -DSYMCR_SOURCE=<symcr source> -DSOURCE=<this dir> -DWORK=<scratch dir>
 #         -DGEN=<symcr-gen> -P run.cmake
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE out)
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "failed (${result}): ${ARGN}\n${out}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../run_checked.cmake)
 
 file(REMOVE_RECURSE "${WORK}")
 run(${CMAKE_COMMAND} -S "${SOURCE}" -B "${WORK}" -G Ninja "-DSYMCR_SOURCE=${SYMCR_SOURCE}"
