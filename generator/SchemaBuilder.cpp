@@ -927,8 +927,8 @@ bool TypeWalker::checkPointee(QualType Pointee, const WalkContext &C,
     }
     // A raw pointer to a polymorphic class is a reference to a checkpointed
     // object (a member, an element), or a heap object saved as its dynamic
-    // type (findDynamicTypes). An owning pointer's object would be rebuilt
-    // through the owner's own type.
+    // type (findDynamicTypes). An owning smart pointer would rebuild its
+    // object as its static type, slicing it: refused.
     if (const auto *CRD = dyn_cast<CXXRecordDecl>(RD))
       if (CRD->isPolymorphic() && !CRD->hasAttr<FinalAttr>() &&
           llvm::StringRef(Holder) != "pointer") {

@@ -48,6 +48,7 @@ class Planner {
         plan_.shared_types[type.element] = t;
       }
     }
+    find_dynamic_bases();
     plan_roots();
     plan_.heap_nodes.assign(w_.type_count, nullptr);
     for (std::uint32_t t = 0; t < w_.type_count; ++t) {
@@ -75,16 +76,26 @@ class Planner {
   }
 
  private:
-  // Whether the writer knew a class derived from (or equal to) `base` that it could save as a
-  // heap object's dynamic type.
-  bool has_dynamic_type(std::uint32_t base) const {
+  // Per writer type: the writer knew a class equal to it or derived from it that it could save
+  // as a heap object's dynamic type. Each type is visited once (an untrusted schema's bases
+  // may form cycles).
+  void find_dynamic_bases() {
+    dynamic_bases_.assign(w_.type_count, false);
+    std::vector<std::uint32_t> pending;
     for (std::uint32_t t = 0; t < w_.type_count; ++t) {
-      if ((w_.types[t].flags & kTypeDynamicType) &&
-          (t == base || has_base(w_.types, w_.type_count, t, base))) {
-        return true;
+      if (w_.types[t].flags & kTypeDynamicType) pending.push_back(t);
+    }
+    while (!pending.empty()) {
+      const std::uint32_t t = pending.back();
+      pending.pop_back();
+      if (t >= w_.type_count || dynamic_bases_[t]) continue;
+      dynamic_bases_[t] = true;
+      const TypeInfo& type = w_.types[t];
+      if (type.kind != Kind::Struct) continue;
+      for (std::uint32_t f = 0; f < type.field_count; ++f) {
+        if (type.fields[f].flags & kFieldBase) pending.push_back(type.fields[f].type);
       }
     }
-    return false;
   }
 
   // ---- matching ------------------------------------------------------------------------
@@ -337,7 +348,7 @@ class Planner {
         if (n.action == Action::Pointer) {
           n.detail = !(rp.flags & kTypePolymorphic)
                          ? "reference to the object at the same path, or a heap object rebuilt"
-                     : has_dynamic_type(wt.element)
+                     : wt.element < dynamic_bases_.size() && dynamic_bases_[wt.element]
                          ? "reference to the object at the same path, or a heap object "
                            "rebuilt as its dynamic type"
                          : "reference to the object at the same path";
@@ -968,6 +979,7 @@ class Planner {
   std::set<const PlanNode*> differs_;  // nodes whose restore changes values (migration hooks)
   int depth_ = 0;
   bool too_deep_ = false;
+  std::vector<bool> dynamic_bases_;  // find_dynamic_bases()
 };
 
 struct CachedPlan {
