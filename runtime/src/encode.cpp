@@ -596,8 +596,13 @@ class Encoder {
                                                 std::size_t size) const {
     std::size_t used = 0;
     out[0] = '\0';
+    std::vector<std::uint32_t> pending;
+    std::vector<bool> derived;  // the candidate and its bases
     for (const SchemaFacts::DynamicType& candidate : facts_.dynamic_types) {
-      if (!has_base(types_, schema_.type_count, candidate.type, base)) continue;
+      pending.assign(1, candidate.type);
+      derived.clear();
+      mark_with_bases(types_, schema_.type_count, pending, derived);
+      if (!derived[base]) continue;
       const int n = std::snprintf(out + used, size - used, "%s%s", used ? ", " : "",
                                   types_[candidate.type].name);
       if (n < 0 || static_cast<std::size_t>(n) >= size - used) break;

@@ -77,25 +77,14 @@ class Planner {
 
  private:
   // Per writer type: the writer knew a class equal to it or derived from it that it could save
-  // as a heap object's dynamic type. Each type is visited once (an untrusted schema's bases
-  // may form cycles).
+  // as a heap object's dynamic type.
   void find_dynamic_bases() {
-    dynamic_bases_.assign(w_.type_count, false);
     std::vector<std::uint32_t> pending;
     for (std::uint32_t t = 0; t < w_.type_count; ++t) {
       if (w_.types[t].flags & kTypeDynamicType) pending.push_back(t);
     }
-    while (!pending.empty()) {
-      const std::uint32_t t = pending.back();
-      pending.pop_back();
-      if (t >= w_.type_count || dynamic_bases_[t]) continue;
-      dynamic_bases_[t] = true;
-      const TypeInfo& type = w_.types[t];
-      if (type.kind != Kind::Struct) continue;
-      for (std::uint32_t f = 0; f < type.field_count; ++f) {
-        if (type.fields[f].flags & kFieldBase) pending.push_back(type.fields[f].type);
-      }
-    }
+    dynamic_bases_.clear();
+    mark_with_bases(w_.types, w_.type_count, pending, dynamic_bases_);
   }
 
   // ---- matching ------------------------------------------------------------------------

@@ -170,23 +170,21 @@ __attribute__((cold)) bool flat_runs_of(const Schema& schema, std::uint32_t type
 
 }  // namespace
 
-__attribute__((cold)) bool has_base(const TypeInfo* types, std::uint32_t type_count,
-                                    std::uint32_t type, std::uint32_t base) {
-  // Each type visited once: a corrupt schema's base fields may form cycles or diamonds.
-  std::vector<bool> seen(type_count, false);
-  std::vector<std::uint32_t> pending{type};
+__attribute__((cold)) void mark_with_bases(const TypeInfo* types, std::uint32_t type_count,
+                                           std::vector<std::uint32_t>& pending,
+                                           std::vector<bool>& marked) {
+  // Each type is visited once: a corrupt schema's base fields may form cycles or diamonds.
+  marked.resize(type_count, false);
   while (!pending.empty()) {
     const std::uint32_t t = pending.back();
     pending.pop_back();
-    if (t >= type_count || seen[t] || types[t].kind != Kind::Struct) continue;
-    seen[t] = true;
+    if (t >= type_count || marked[t]) continue;
+    marked[t] = true;
+    if (types[t].kind != Kind::Struct) continue;
     for (std::uint32_t f = 0; f < types[t].field_count; ++f) {
-      if (!(types[t].fields[f].flags & kFieldBase)) continue;
-      if (types[t].fields[f].type == base) return true;
-      pending.push_back(types[t].fields[f].type);
+      if (types[t].fields[f].flags & kFieldBase) pending.push_back(types[t].fields[f].type);
     }
   }
-  return false;
 }
 
 __attribute__((cold)) SchemaFacts compute_schema_facts(const Schema& schema) {

@@ -45,9 +45,10 @@ const SchemaCacheEntry& schema_cache_entry(const Schema& schema);
 
 SchemaFacts compute_schema_facts(const Schema& schema);
 
-// Whether `base` is a base class of `type`, directly or through its bases.
-bool has_base(const TypeInfo* types, std::uint32_t type_count, std::uint32_t type,
-              std::uint32_t base);
+// Marks each type in `pending` and, transitively, its base classes (`marked` is grown to
+// type_count); empties `pending`.
+void mark_with_bases(const TypeInfo* types, std::uint32_t type_count,
+                     std::vector<std::uint32_t>& pending, std::vector<bool>& marked);
 void serialise_schema(const Schema& schema, std::vector<std::uint8_t>& out);
 
 // Scalar helpers shared by the engine.
