@@ -304,8 +304,8 @@ int main(int argc, char** argv) {
       for (std::uint8_t control : {static_cast<std::uint8_t>(reader), std::uint8_t{0x10},
                                    std::uint8_t{0x50}, std::uint8_t{0x90}}) {
         std::vector<std::uint8_t> seed{control};
-        put32(seed, static_cast<std::uint32_t>(blob.bytes.size()));
-        seed.insert(seed.end(), blob.bytes.begin(), blob.bytes.end());
+        put32(seed, static_cast<std::uint32_t>(blob.size));
+        seed.insert(seed.end(), blob.data, blob.data + blob.size);
         put32(seed, static_cast<std::uint32_t>(other.bytes.size()));
         seed.insert(seed.end(), other.bytes.begin(), other.bytes.end());
         seed.insert(seed.end(), payload.begin(), payload.end());

@@ -1,10 +1,11 @@
-//===- Emitter.h - Writes the generated sources
-//----------------------------===//
+//===- Emitter.h - Writes the generated sources ---------------------------===//
 //
-// From the ProgramModel: one wrapper per translation unit (the user's source,
-// included, followed by the ops tables, lifecycles, layout checks and root
-// addresses that need its declarations) and one schema source holding the
-// program's symcr::Schema tables and symcr_program_schema(). No Clang here.
+// From the ProgramModel: one wrapper per translation unit (Wrappers.cpp: the
+// user's source, included, followed by the ops tables, lifecycles, layout
+// checks and root addresses that need its declarations), one schema source
+// holding the program's symcr::Schema tables, their serialised form and
+// symcr_program_schema() (SchemaSource.cpp), the --report text
+// (ReportText.cpp) and the output files (OutputFiles.cpp). No Clang here.
 //
 //===----------------------------------------------------------------------===//
 #ifndef SYMCR_GENERATOR_EMITTER_H
@@ -15,9 +16,6 @@
 #include <string>
 
 namespace symcr_gen {
-
-/// \p Text as a C and C++ string literal.
-std::string quoted(const std::string &Text);
 
 /// The schema source: tables and symcr_program_schema().
 std::string emitSchemaSource(const ProgramModel &Program);

@@ -1,7 +1,7 @@
 //===- ProgramPoints.cpp - checkpoint_at / restore_at points ---------------===//
 
 #include "ProgramPoints.h"
-#include "Emitter.h"
+#include "EmitSupport.h"
 
 #include "clang/AST/ASTContext.h"
 #include "clang/AST/RecursiveASTVisitor.h"

@@ -13,6 +13,7 @@
 
 #include "address_table.hpp"
 #include "engine.hpp"
+#include "payload_grammar.hpp"
 #include "process_memory.hpp"
 #include "schema_facts.hpp"
 
@@ -21,7 +22,6 @@ namespace {
 
 constexpr std::uint32_t kNoRegion = 0xFFFFFFFFu;
 constexpr std::uint32_t kOutside = 0xFFFFFFFEu;  // memo value: target outside the state
-constexpr int kMaxDepth = 1000;                   // nesting through containers/unique_ptr
 constexpr unsigned kBucketShift = 6;              // region index granularity: 64 bytes
 constexpr std::uintptr_t kLargeRegion = std::uintptr_t{64} << 10;  // indexed in a list instead
 
@@ -391,9 +391,9 @@ class Encoder {
   }
 
   void descend_into(std::uint32_t type, const std::uint8_t* p) {
-    if (++depth_ > kMaxDepth) {
-      fail_unsupported("nesting deeper than 1000 containers or unique_ptrs (use raw pointers "
-                       "or containers for long chains)");
+    if (++depth_ > kMaxValueNesting) {
+      fail_unsupported("nesting deeper than %d containers or unique_ptrs (use raw pointers "
+                       "or containers for long chains)", kMaxValueNesting);
     } else {
       encode(type, p);
     }
@@ -472,7 +472,7 @@ class Encoder {
     if (count > 0xFFFFFFFFu) return fail_unsupported("a container with more than 2^32 elements");
     put_u32(static_cast<std::uint32_t>(count));
     // Contiguous fixed-width little-endian scalars (wire width == size): one block.
-    if (ops->contiguous_data && count > 0 && depth_ < kMaxDepth) {
+    if (ops->contiguous_data && count > 0 && depth_ < kMaxValueNesting) {
       const TypeInfo& element = types_[type.element];
       if (element.kind == Kind::Int || element.kind == Kind::UInt || element.kind == Kind::Enum ||
           (element.kind == Kind::Float && element.size != 16)) {
@@ -827,14 +827,14 @@ class Encoder {
                        type);
       }
       case RegionKind::StringChars: {
-        if (depth > kMaxDepth) return false;
+        if (depth > kMaxValueNesting) return false;
         const std::uint32_t owner = find_region(region.owner_slot);
         return owner != kNoRegion &&
                resolve(owner, region.owner_slot, region.owner_type, base, depth + 1) &&
                descend(region.owner_type, region.owner_slot, address, type);
       }
       case RegionKind::Owned: {
-        if (depth > kMaxDepth) return false;
+        if (depth > kMaxValueNesting) return false;
         const std::uint32_t owner = find_region(region.owner_slot);
         if (owner == kNoRegion ||
             !resolve(owner, region.owner_slot, region.owner_type, base, depth + 1)) {

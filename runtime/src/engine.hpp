@@ -33,13 +33,21 @@ std::size_t encode_scratch_bytes();  // its checkpoint part (encode.cpp)
 __attribute__((format(printf, 2, 0), noinline, cold)) const Status& set_corrupt_payload(
     Status& error, const char* format, va_list args);
 
-// The serialised form (docs/format.md §2) of a running build's schema and its FNV-1a 64 hash.
-// Computed once per Schema object and cached; thread-compatible (compute before sharing).
+// The serialised form (docs/format.md §2) of a running build's schema and its FNV-1a 64 hash:
+// symcr-gen's (Schema::serialised), or serialised once per Schema object and cached.
+// Thread-compatible (compute before sharing).
 struct SchemaBlob {
-  std::vector<std::uint8_t> bytes;
+  SchemaBlob() = default;
+  SchemaBlob(const SchemaBlob&) = delete;  // `data` may point into `storage`
+  SchemaBlob& operator=(const SchemaBlob&) = delete;
+  const std::uint8_t* data = nullptr;  // the generated constant, or storage's bytes
+  std::size_t size = 0;
   std::uint64_t hash = 0;
   std::uint32_t program_id = 0;  // program_id_of(schema.program)
+  std::vector<std::uint8_t> storage;
 };
+// Serialises `schema` into `blob` (its storage) and hashes it.
+void serialise_blob(const Schema& schema, SchemaBlob& blob);
 
 // A program's identity in record headers: FNV-1a 32 of its name, never 0; 0 for no name.
 std::uint32_t program_id_of(const char* program);

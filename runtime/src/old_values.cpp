@@ -1,13 +1,15 @@
 // symcr::OldValues: a migration hook's read-only view of a checkpointed value (old_values.hpp).
-// Fields are found by walking the writer value's payload encoding (docs/format.md §3) from its
-// start, skipping the fields before the one asked for; every step is bounded by the view's
-// size and the nesting depth, so a hostile checkpoint can only make a query fail.
+// Fields are found by walking the writer value's payload encoding along the grammar
+// (payload_grammar.hpp) from its start, skipping the fields before the one asked for; every
+// step is bounded by the view's size and the nesting depth, so a hostile checkpoint can only
+// make a query fail.
 #include "symcr/old_values.hpp"
 
 #include <cfloat>
 #include <cmath>
 #include <cstring>
 
+#include "payload_grammar.hpp"
 #include "scalar.hpp"
 
 namespace symcr {
@@ -15,13 +17,20 @@ namespace {
 
 using detail::Number;
 
-// Values nest at most this deep through containers and unique_ptrs (as restore enforces).
-constexpr int kMaxDepth = 1000;
-
 bool is_number(Kind kind) {
   return kind == Kind::Bool || kind == Kind::Int || kind == Kind::UInt || kind == Kind::Float ||
          kind == Kind::Enum;
 }
+
+// A sink that only measures: walk_value skips fixed-size runs whole.
+struct Measure {
+  static constexpr bool kEveryValue = false;
+  void push(const detail::PathFrame&) {}
+  void pop() {}
+  void leaf(const TypeInfo&, const std::uint8_t*, std::size_t) {}
+  void pointer(const TypeInfo&, const std::uint8_t*, std::uint32_t) {}
+  void container(const TypeInfo&, std::uint32_t) {}
+};
 
 std::uint32_t read_u32(const std::uint8_t* bytes) {
   std::uint32_t value = 0;
@@ -29,151 +38,42 @@ std::uint32_t read_u32(const std::uint8_t* bytes) {
   return value;
 }
 
-// The encoded size of values of `type` when it does not depend on the value (scalars, unions,
-// structs and arrays of those), so that runs of them are skipped by multiplication.
-bool fixed_size(const Schema& writer, std::uint32_t type, int depth, std::size_t& out) {
-  if (type >= writer.type_count || depth > kMaxDepth) return false;
-  const TypeInfo& info = writer.types[type];
-  switch (info.kind) {
-    case Kind::Bool: case Kind::Int: case Kind::UInt: case Kind::Float: case Kind::Enum:
-    case Kind::Union:
-      out = info.size;
-      return true;
-    case Kind::Struct: {
-      std::size_t total = 0;
-      for (std::uint32_t f = 0; f < info.field_count; ++f) {
-        std::size_t field = 0;
-        if (!fixed_size(writer, info.fields[f].type, depth + 1, field)) return false;
-        if (total + field < total) return false;
-        total += field;
-      }
-      out = total;
-      return true;
-    }
-    case Kind::Array: {
-      std::size_t element = 0;
-      if (!fixed_size(writer, info.element, depth + 1, element)) return false;
-      if (element != 0 && info.count > SIZE_MAX / element) return false;
-      out = static_cast<std::size_t>(info.count) * element;
-      return true;
-    }
-    default:
-      return false;
-  }
-}
-
-// The number of bytes the value of `type` at `bytes` takes, within `size`; false when the bytes
-// are short or malformed.
-bool value_size(const Schema& writer, std::uint32_t type, const std::uint8_t* bytes,
-                std::size_t size, int depth, std::size_t& out);
-
-// `count` consecutive values of `type`.
-bool run_size(const Schema& writer, std::uint32_t type, std::uint64_t count,
-              const std::uint8_t* bytes, std::size_t size, int depth, std::size_t& out) {
-  std::size_t fixed = 0;
-  if (fixed_size(writer, type, depth, fixed)) {
+// The bytes `count` consecutive values of `type` at `bytes` take, within `size`; false when
+// the bytes are short or malformed.
+bool values_size(const Schema& writer, const detail::WireSizes& sizes, std::uint32_t type,
+                 std::uint64_t count, const std::uint8_t* bytes, std::size_t size,
+                 std::size_t& out) {
+  const std::uint64_t fixed = sizes.fixed[type];
+  if (fixed != detail::WireSizes::kVariable) {
     if (fixed != 0 && count > size / fixed) return false;
-    out = fixed == 0 ? 0 : static_cast<std::size_t>(count) * fixed;
+    out = static_cast<std::size_t>(fixed * count);
     return true;
   }
+  Status status;
+  detail::PayloadReader in(writer, sizes, status);
+  in.start(bytes, size);
+  Measure measure;
   // Variable-size values take at least one byte each, so this loop ends within `size` steps.
-  std::size_t used = 0;
   for (std::uint64_t i = 0; i < count; ++i) {
-    std::size_t one = 0;
-    if (!value_size(writer, type, bytes + used, size - used, depth, one)) return false;
-    used += one;
+    if (!detail::walk_value(in, type, 0, measure)) return false;
   }
-  out = used;
+  out = static_cast<std::size_t>(in.position() - bytes);
   return true;
-}
-
-bool value_size(const Schema& writer, std::uint32_t type, const std::uint8_t* bytes,
-                std::size_t size, int depth, std::size_t& out) {
-  if (type >= writer.type_count || depth > kMaxDepth) return false;
-  const TypeInfo& info = writer.types[type];
-  switch (info.kind) {
-    case Kind::Bool: case Kind::Int: case Kind::UInt: case Kind::Float: case Kind::Enum:
-    case Kind::Union:
-      out = info.size;
-      return size >= out;
-    case Kind::Struct: {
-      std::size_t used = 0;
-      for (std::uint32_t f = 0; f < info.field_count; ++f) {
-        std::size_t field = 0;
-        if (!value_size(writer, info.fields[f].type, bytes + used, size - used, depth + 1, field)) {
-          return false;
-        }
-        used += field;
-      }
-      out = used;
-      return true;
-    }
-    case Kind::Array:
-      return run_size(writer, info.element, info.count, bytes, size, depth + 1, out);
-    case Kind::String: {
-      if (size < 4 || info.element >= writer.type_count) return false;
-      const std::uint64_t length = read_u32(bytes);
-      const std::uint64_t width = writer.types[info.element].size;
-      if (width == 0 || length > (size - 4) / width) return false;
-      out = 4 + static_cast<std::size_t>(length * width);
-      return true;
-    }
-    case Kind::Container: {
-      if (size < 4) return false;
-      std::size_t elements = 0;
-      if (!run_size(writer, info.element, read_u32(bytes), bytes + 4, size - 4, depth + 1,
-                    elements)) {
-        return false;
-      }
-      out = 4 + elements;
-      return true;
-    }
-    case Kind::Optional:
-    case Kind::UniquePtr: {
-      if (size < 1 || bytes[0] > 1) return false;
-      std::size_t inner = 0;
-      if (bytes[0] == 1 &&
-          !value_size(writer, info.element, bytes + 1, size - 1, depth + 1, inner)) {
-        return false;
-      }
-      out = 1 + inner;
-      return true;
-    }
-    case Kind::Variant: {
-      if (size < 4) return false;
-      const std::uint32_t index = read_u32(bytes);
-      std::size_t inner = 0;
-      if (index != kNoType) {
-        if (index >= info.alternative_count) return false;
-        if (!value_size(writer, info.alternatives[index], bytes + 4, size - 4, depth + 1, inner)) {
-          return false;
-        }
-      }
-      out = 4 + inner;
-      return true;
-    }
-    case Kind::Pointer:
-    case Kind::SharedPtr:
-      out = 4;  // a reference code; the pointee is an object of its own
-      return size >= 4;
-  }
-  return false;
 }
 
 // Finds the member `field` of the struct value `in`: its own fields first (a base class is a
 // field named after its type), then the fields of its bases, nearest first.
-bool find_field(const Schema& writer, std::uint32_t type, const std::uint8_t* bytes,
-                std::size_t size, const char* field, int depth, std::uint32_t& out_type,
-                const std::uint8_t*& out_bytes, std::size_t& out_size) {
-  if (type >= writer.type_count || depth > kMaxDepth) return false;
+bool find_field(const Schema& writer, const detail::WireSizes& sizes, std::uint32_t type,
+                const std::uint8_t* bytes, std::size_t size, const char* field, int depth,
+                std::uint32_t& out_type, const std::uint8_t*& out_bytes, std::size_t& out_size) {
   const TypeInfo& info = writer.types[type];
-  if (info.kind != Kind::Struct) return false;
+  if (info.kind != Kind::Struct || depth > detail::kMaxValueNesting) return false;
   for (int pass = 0; pass < 2; ++pass) {
     std::size_t used = 0;
     for (std::uint32_t f = 0; f < info.field_count; ++f) {
       const FieldInfo& member = info.fields[f];
       std::size_t length = 0;
-      if (!value_size(writer, member.type, bytes + used, size - used, depth + 1, length)) {
+      if (!values_size(writer, sizes, member.type, 1, bytes + used, size - used, length)) {
         return false;
       }
       if (pass == 0 && member.name && std::strcmp(member.name, field) == 0) {
@@ -183,8 +83,8 @@ bool find_field(const Schema& writer, std::uint32_t type, const std::uint8_t* by
         return true;
       }
       if (pass == 1 && (member.flags & kFieldBase) &&
-          find_field(writer, member.type, bytes + used, length, field, depth + 1, out_type,
-                     out_bytes, out_size)) {
+          find_field(writer, sizes, member.type, bytes + used, length, field, depth + 1,
+                     out_type, out_bytes, out_size)) {
         return true;
       }
       used += length;
@@ -226,10 +126,11 @@ bool read_converted(const Schema& writer, std::uint32_t type, const std::uint8_t
 
 }  // namespace
 
-OldValues::OldValues(const Schema& writer, std::uint32_t type, const std::uint8_t* bytes,
-                     std::size_t size) {
+OldValues::OldValues(const Schema& writer, const detail::WireSizes& sizes, std::uint32_t type,
+                     const std::uint8_t* bytes, std::size_t size) {
   if (type >= writer.type_count || (!bytes && size)) return;
   writer_ = &writer;
+  sizes_ = &sizes;
   type_ = type;
   bytes_ = bytes;
   size_ = size;
@@ -245,7 +146,8 @@ bool OldValues::locate(const char* field, Span& out) const {
     out = Span{type_, bytes_, size_};
     return true;
   }
-  return find_field(*writer_, type_, bytes_, size_, field, 0, out.type, out.bytes, out.size);
+  return find_field(*writer_, *sizes_, type_, bytes_, size_, field, 0, out.type, out.bytes,
+                    out.size);
 }
 
 bool OldValues::has(const char* field) const {
@@ -308,7 +210,7 @@ bool OldValues::get(const char* field, std::string& out) const {
                         character.size == 1;
   if (!bytewise) return false;
   if (info.kind == Kind::String) {
-    // value_size checked the length against the bytes when the field was located.
+    // the walk checked the length against the bytes when the field was located.
     const std::uint32_t length = read_u32(span.bytes);
     out.assign(reinterpret_cast<const char*>(span.bytes + 4), length);
     return true;
@@ -346,11 +248,11 @@ OldValues OldValues::child(const char* field) const {
   if (!locate(field, span)) return OldValues();
   const TypeInfo& info = writer_->types[span.type];
   if (info.kind == Kind::Optional || info.kind == Kind::UniquePtr) {
-    // value_size checked the flag and the contained value when the field was located.
+    // the walk checked the flag and the contained value when the field was located.
     if (span.bytes[0] != 1) return OldValues();
-    return OldValues(*writer_, info.element, span.bytes + 1, span.size - 1);
+    return OldValues(*writer_, *sizes_, info.element, span.bytes + 1, span.size - 1);
   }
-  return OldValues(*writer_, span.type, span.bytes, span.size);
+  return OldValues(*writer_, *sizes_, span.type, span.bytes, span.size);
 }
 
 std::size_t OldValues::count(const char* field) const {
@@ -380,11 +282,20 @@ OldValues OldValues::element(const char* field, std::size_t index) const {
   }
   if (index >= count) return OldValues();
   std::size_t before = 0, length = 0;
-  if (!run_size(*writer_, info.element, index, first, size, 1, before) ||
-      !value_size(*writer_, info.element, first + before, size - before, 1, length)) {
+  if (!values_size(*writer_, *sizes_, info.element, index, first, size, before) ||
+      !values_size(*writer_, *sizes_, info.element, 1, first + before, size - before, length)) {
     return OldValues();
   }
-  return OldValues(*writer_, info.element, first + before, length);
+  return OldValues(*writer_, *sizes_, info.element, first + before, length);
 }
 
 }  // namespace symcr
+
+namespace symcr::detail {
+
+OldValues old_values_view(const Schema& writer, const WireSizes& sizes, std::uint32_t type,
+                          const std::uint8_t* bytes, std::size_t size) {
+  return OldValues(writer, sizes, type, bytes, size);
+}
+
+}  // namespace symcr::detail

@@ -39,7 +39,7 @@ class Planner {
   // Once per (writer, reader) pair, then cached: cold, so that it and what only it calls are
   // optimised for size (tens of KB of .text) and kept off the hot pages.
   __attribute__((cold, noinline)) void run() {
-    compute_min_wire();
+    plan_.wire_sizes = wire_sizes(w_);
     plan_.shared_types.assign(r_.type_count, kNoType);
     for (std::uint32_t t = 0; t < r_.type_count; ++t) {
       const TypeInfo& type = r_.types[t];
@@ -649,45 +649,6 @@ class Planner {
               ") when restored: its verdict cannot be foreseen here";
   }
 
-  // ---- writer minimum sizes (bounds container counts in hostile payloads) ---------------
-  __attribute__((cold)) void compute_min_wire() {
-    plan_.min_wire.assign(w_.type_count, ~std::uint64_t{0});
-    for (std::uint32_t t = 0; t < w_.type_count; ++t) min_wire(t);
-  }
-  std::uint64_t min_wire(std::uint32_t t) {
-    std::uint64_t& cached = plan_.min_wire[t];
-    if (cached != ~std::uint64_t{0}) return cached;
-    const TypeInfo& type = w_.types[t];
-    std::uint64_t size = 0;
-    auto add = [&size](std::uint64_t more) {
-      size = size + more < size ? (std::uint64_t{1} << 62) : size + more;
-    };
-    switch (type.kind) {
-      case Kind::Bool: size = 1; break;
-      case Kind::Int: case Kind::UInt: case Kind::Float: case Kind::Enum: case Kind::Union:
-        size = type.size; break;
-      case Kind::Struct:
-        for (std::uint32_t f = 0; f < type.field_count; ++f) {
-          const FieldInfo& field = type.fields[f];
-          add(min_wire(field.type));
-        }
-        break;
-      case Kind::Array: {
-        const std::uint64_t element = min_wire(type.element);
-        size = element && type.count > (std::uint64_t{1} << 62) / element
-                   ? (std::uint64_t{1} << 62)
-                   : element * type.count;
-        break;
-      }
-      case Kind::String: case Kind::Container: case Kind::Variant: case Kind::Pointer:
-      case Kind::SharedPtr:
-        size = 4; break;
-      case Kind::Optional: case Kind::UniquePtr: size = 1; break;
-    }
-    cached = size;
-    return size;
-  }
-
   // ---- the schema-level report ---------------------------------------------------------
   // ---- copy-only programs (restore's fast path) ------------------------------------------
   static constexpr std::size_t kMaxCopyRuns = 512;
@@ -1017,9 +978,8 @@ std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_
   auto plan = std::make_shared<Plan>();
   // The plan keeps its own copy of the writer schema (a round trip through the wire form) so
   // that cached plans never point into a caller's buffers.
-  serialise_schema(writer, plan->writer_blob.bytes);
-  plan->writer_blob.hash = fnv1a64(plan->writer_blob.bytes.data(), plan->writer_blob.bytes.size());
-  status = parse_schema(plan->writer_blob.bytes.data(), plan->writer_blob.bytes.size(),
+  serialise_blob(writer, plan->writer_blob);
+  status = parse_schema(plan->writer_blob.data, plan->writer_blob.size,
                         plan->writer_copy);
   if (!status.ok()) return nullptr;
   plan->writer = &plan->writer_copy.schema();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine.hpp"
+#include "payload_grammar.hpp"
 #include "symcr/schema.hpp"
 #include "symcr/symcr.hpp"
 
@@ -126,7 +127,7 @@ struct Plan {
   std::vector<RootPlan> roots;                // per writer root
   std::vector<const PlanNode*> heap_nodes;    // per writer type: how a heap object maps
   std::vector<std::uint32_t> shared_types;    // per reader type: a SharedPtr<it> type or kNoType
-  std::vector<std::uint64_t> min_wire;        // per writer type: fewest payload bytes
+  WireSizes wire_sizes;                       // per writer type (payload_grammar.hpp)
   std::vector<ReportEntry> entries;           // schema-level report
   std::vector<std::string> counter_paths;     // schema-level path per counter
   bool any_lossy = false;

@@ -47,8 +47,8 @@ std::uint32_t record_checksum(const std::uint8_t* record, std::size_t size) {
 // recomputed to trust it.
 bool is_blob(const SchemaBlob* blob, const std::uint8_t* bytes, std::size_t size,
              std::uint64_t hash) {
-  return blob != nullptr && hash == blob->hash && size == blob->bytes.size() &&
-         std::memcmp(bytes, blob->bytes.data(), size) == 0;
+  return blob != nullptr && hash == blob->hash && size == blob->size &&
+         std::memcmp(bytes, blob->data, size) == 0;
 }
 
 }  // namespace
@@ -60,12 +60,12 @@ Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t seq
   out.resize(kRecordHeaderSize);
   std::size_t schema_size = 0;
   if (inline_schema) {
-    schema_size = blob.bytes.size();
+    schema_size = blob.size;
     if (schema_size > UINT32_MAX) {
       return Status(Error::TooLarge, "schema of %zu bytes exceeds the format's 4 GiB limit",
                     schema_size);
     }
-    out.insert(out.end(), blob.bytes.begin(), blob.bytes.end());
+    out.insert(out.end(), blob.data, blob.data + blob.size);
   }
   Status status = append_payload(schema, out);
   if (!status.ok()) return status;

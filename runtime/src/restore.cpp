@@ -20,11 +20,11 @@
 #include <vector>
 
 #include "engine.hpp"
+#include "payload_grammar.hpp"
 #include "plan.hpp"
 #include "scalar.hpp"
 #include "schema_facts.hpp"
 #include "unicode.hpp"
-#include "wire.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -85,13 +85,6 @@ enum class Mode : std::uint8_t {
 };
 
 constexpr std::uint32_t kMaxConcretePerField = 100;
-constexpr int kMaxDepth = 1000;
-
-struct PathFrame {
-  enum class Kind : std::uint8_t { Name, Index, Heap } kind;
-  const char* name;
-  std::uint64_t index;
-};
 
 enum class SlotOutcome : std::uint8_t { Skip, Null, Outside, Target, Rejected };
 
@@ -124,12 +117,8 @@ struct MappedStep {
   std::uint64_t value;
 };
 
-struct RefRecord {
-  std::uint8_t base;
-  std::uint32_t a, b;
-  std::uint32_t steps_at;
-  std::uint16_t step_count;
-  std::uint32_t target;
+struct RefRecord : Reference {
+  std::uint32_t steps_at = 0;
   bool resolved = false;
   std::uint32_t reader_type = kNoType;
   std::uint32_t mapped_at = 0, mapped_count = 0;
@@ -150,6 +139,7 @@ class Restorer {
       : plan_(plan),
         w_(*plan.writer),
         r_(*plan.reader),
+        in_(*plan.writer, plan.wire_sizes, error_),
         payload_(payload),
         size_(size),
         report_(report),
@@ -157,13 +147,12 @@ class Restorer {
 
   Status check() {
     mode_ = Mode::Check;
-    in_ = WireReader(payload_, size_);
+    in_.start(payload_, size_);
     rejection_counts_.assign(plan_.counter_paths.size() + 1, 0);
     heap_counter_ = static_cast<std::uint32_t>(plan_.counter_paths.size());
-    if (!decode_objects()) return error_;
-    if (!decode_references()) return error_;
-    if (!in_.at_end()) return corrupt("%zu bytes after the payload's references", in_.remaining());
-    if (!check_slots()) return error_;
+    if (!decode_objects() || !decode_references() || !in_.finish() || !check_slots()) {
+      return error_;
+    }
     claim_live_objects();
     decide_materialisation();
     for (RefRecord& ref : refs_) map_reference(ref);
@@ -192,7 +181,7 @@ class Restorer {
 
   void apply() {
     mode_ = Mode::Apply;
-    in_ = WireReader(payload_, size_);
+    in_.start(payload_, size_);
     container_ordinal_ = 0;
     slot_ordinal_ = 0;
     verdict_cursor_ = 0;
@@ -216,35 +205,6 @@ class Restorer {
     set_corrupt_payload(error_, format, args);
     va_end(args);
     return error_;
-  }
-  __attribute__((noinline, cold)) bool truncated(const char* what) {
-    corrupt("truncated in %s", what);
-    return false;
-  }
-
-  std::string render_path(const PathFrame* frames, std::size_t count) const {
-    std::string path;
-    for (std::size_t i = 0; i < count; ++i) {
-      const PathFrame& frame = frames[i];
-      char buffer[48];
-      switch (frame.kind) {
-        case PathFrame::Kind::Name:
-          if (!path.empty()) path += '.';
-          path += frame.name;
-          break;
-        case PathFrame::Kind::Index:
-          std::snprintf(buffer, sizeof buffer, "[%" PRIu64 "]", frame.index);
-          path += buffer;
-          break;
-        case PathFrame::Kind::Heap:
-          std::snprintf(buffer, sizeof buffer, "heap#%" PRIu64 "(", frame.index);
-          path += buffer;
-          path += frame.name;
-          path += ')';
-          break;
-      }
-    }
-    return path;
   }
 
   // A value-level rejection: the reader keeps its value. Concrete paths are capped per field.
@@ -292,16 +252,13 @@ class Restorer {
       frames_.pop_back();
     }
     std::uint32_t heap_count = 0;
-    if (!in_.read(heap_count)) return truncated("heap count");
-    if (heap_count > in_.remaining() / 5) return corrupt("heap count %u exceeds the payload", heap_count).ok();
+    if (!in_.heap_count(heap_count)) return false;
     if (mode_ == Mode::Check) heap_.reserve(heap_count);
     for (std::uint32_t h = 0; h < heap_count; ++h) {
       std::uint32_t type = 0;
       std::uint8_t owner = 0;
-      if (!in_.read(type) || !in_.read(owner)) return truncated("heap object");
+      if (!in_.heap_object(h, type, owner)) return false;
       if (mode_ == Mode::Check) {
-        if (type >= w_.type_count) return corrupt("heap object %u has type %u", h, type).ok();
-        if (owner > 1) return corrupt("heap object %u has owner %u", h, owner).ok();
         if (!plan_.heap_nodes[type]) {
           return corrupt("heap object %u of type %s, which no pointer points to", h,
                          w_.types[type].name).ok();
@@ -326,9 +283,9 @@ class Restorer {
   // Only containers and unique_ptrs nest without a bound in the schema (struct nesting is
   // bounded when the schema is parsed); the save side refuses the same depth.
   bool nested(const PlanNode* n, std::uint8_t* dst) {
-    if (++depth_ > kMaxDepth) {
+    if (!in_.nest(++depth_)) {
       --depth_;
-      return corrupt("containers or unique_ptrs nest deeper than %d levels", kMaxDepth).ok();
+      return false;
     }
     const bool ok = value(n, dst, nullptr);
     --depth_;
@@ -417,14 +374,14 @@ class Restorer {
         // (so nested objects' hooks ran first). Also on a validator's staged copy, so that
         // symcr_validate judges the migrated value. Pointers are fixed up after all objects.
         if (n->migrate && dst && writing()) {
-          n->migrate(dst, OldValues(w_, n->writer, start,
-                                    static_cast<std::size_t>(in_.position() - start)));
+          n->migrate(dst, old_values_view(w_, plan_.wire_sizes, n->writer, start,
+                                          static_cast<std::size_t>(in_.position() - start)));
         }
         return true;
       }
       case Kind::Union: {
         const std::uint8_t* bytes = nullptr;
-        if (!in_.bytes(wt.size, bytes)) return truncated("union");
+        if (!in_.scalar(wt, bytes)) return false;
         if (n->action == Action::Union && dst && writing()) std::memcpy(dst, bytes, wt.size);
         return true;
       }
@@ -432,9 +389,8 @@ class Restorer {
       case Kind::String: return string(n, wt, dst);
       case Kind::Container: return container(n, wt, dst);
       case Kind::Optional: {
-        std::uint8_t engaged = 0;
-        if (!in_.read(engaged)) return truncated("optional");
-        if (engaged > 1) return corrupt("optional flag %u", engaged).ok();
+        bool engaged = false;
+        if (!in_.presence(wt, engaged)) return false;
         const bool to_reader = n->action == Action::Optional && dst;
         const auto* ops = to_reader ? static_cast<const OptionalOps*>(r_.types[n->reader].ops) : nullptr;
         if (!engaged) {
@@ -449,9 +405,8 @@ class Restorer {
         return value(n->element, inner, nullptr);
       }
       case Kind::UniquePtr: {
-        std::uint8_t present = 0;
-        if (!in_.read(present)) return truncated("unique_ptr");
-        if (present > 1) return corrupt("unique_ptr flag %u", present).ok();
+        bool present = false;
+        if (!in_.presence(wt, present)) return false;
         const bool to_reader = n->action == Action::UniquePtr && dst;
         const auto* ops = to_reader ? static_cast<const UniquePtrOps*>(r_.types[n->reader].ops) : nullptr;
         if (!present) {
@@ -468,9 +423,8 @@ class Restorer {
       }
       case Kind::Variant: {
         std::uint32_t index = 0;
-        if (!in_.read(index)) return truncated("variant");
+        if (!in_.variant(wt, index)) return false;
         if (index == kNoType) return true;  // valueless when saved: keep the reader's value
-        if (index >= wt.alternative_count) return corrupt("variant index %u", index).ok();
         const PlanNode* alternative = n->alternatives[index];
         if (n->action != Action::Variant) return value(alternative, nullptr, nullptr);
         const std::uint32_t reader_index = n->alternative_map[index];
@@ -513,8 +467,7 @@ class Restorer {
 
   __attribute__((noinline)) bool scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst, const FieldPlan* field) {
     const std::uint8_t* bytes = nullptr;
-    if (!in_.bytes(wt.size, bytes)) return truncated("scalar");
-    if (wt.kind == Kind::Bool && bytes[0] > 1) return corrupt("bool value %u", bytes[0]).ok();
+    if (!in_.scalar(wt, bytes)) return false;
     if (n->action != Action::Scalar) return true;
     const bool bit_field = field && field->bit_width;
     const bool ranged = field && field->has_range;
@@ -586,18 +539,14 @@ class Restorer {
     // Identical packed scalars: one bounds check and one copy.
     if (to_reader && e->identical && we.kind != Kind::Bool && !(we.kind == Kind::Float && we.size == 16)) {
       const std::uint8_t* bytes = nullptr;
-      if (wt.count > in_.remaining() / we.size || !in_.bytes(wt.count * we.size, bytes)) {
-        return truncated("array");
-      }
+      if (!in_.scalar_run(we, wt.count, bytes)) return false;
       const std::uint64_t common = wt.count < n->reader_count ? wt.count : n->reader_count;
       if (dst && writing()) std::memcpy(dst, bytes, common * we.size);
       return true;
     }
     // Elements that encode to nothing would let a few bytes of schema drive billions of
     // iterations: such arrays are bounded like containers.
-    if (plan_.min_wire[wt.element] == 0 && wt.count > (1u << 20)) {
-      return corrupt("array of %llu empty elements", static_cast<unsigned long long>(wt.count)).ok();
-    }
+    if (!in_.array(wt)) return false;
     const std::size_t frame = frames_.size();
     frames_.push_back({PathFrame::Kind::Index, nullptr, 0});
     for (std::uint64_t i = 0; i < wt.count; ++i) {
@@ -612,12 +561,9 @@ class Restorer {
 
   __attribute__((noinline)) bool string(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
     std::uint32_t length = 0;
-    if (!in_.read(length)) return truncated("string length");
-    const std::uint32_t width = w_.types[wt.element].size;
     const std::uint8_t* bytes = nullptr;
-    if (length > in_.remaining() / width || !in_.bytes(std::size_t{length} * width, bytes)) {
-      return truncated("string");
-    }
+    if (!in_.string(wt, bytes, length)) return false;
+    const std::uint32_t width = w_.types[wt.element].size;
     if (n->action != Action::String) return true;
     const TypeInfo& rt = r_.types[n->reader];
     const std::uint32_t reader_width = r_.types[rt.element].size;
@@ -644,11 +590,7 @@ class Restorer {
 
   bool container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
     std::uint32_t count = 0;
-    if (!in_.read(count)) return truncated("container count");
-    const std::uint64_t least = plan_.min_wire[wt.element];
-    if (least == 0 ? count > (1u << 20) : count > in_.remaining() / least) {
-      return corrupt("container count %u exceeds the payload", count).ok();
-    }
+    if (!in_.container(wt, count)) return false;
     const std::uint32_t ordinal = container_ordinal_++;
     const bool to_reader = n->action == Action::Container;
     const PlanNode* e = n->element;
@@ -668,11 +610,10 @@ class Restorer {
     const TypeInfo& we = w_.types[wt.element];
     const bool packed = e->action == Action::Scalar && e->identical && !e->validated &&
                         we.kind != Kind::Bool && !(we.kind == Kind::Float && we.size == 16) &&
-                        count > 0 && depth_ < kMaxDepth;
+                        count > 0 && depth_ < kMaxValueNesting;
     if (packed && (!to_reader || !dst || !writing())) {
       const std::uint8_t* bytes = nullptr;
-      if (!in_.bytes(std::size_t{count} * we.size, bytes)) return truncated("scalar");
-      return true;
+      return in_.scalar_run(we, count, bytes);
     }
     if (!to_reader || !dst || !writing()) {
       for (std::uint32_t i = 0; i < count; ++i) {
@@ -688,7 +629,7 @@ class Restorer {
       // Resized, not cleared first: the elements it keeps are overwritten below, so only
       // the new ones are value-initialised.
       const std::uint8_t* bytes = nullptr;
-      if (!in_.bytes(std::size_t{count} * we.size, bytes)) return truncated("scalar");
+      if (!in_.scalar_run(we, count, bytes)) return false;
       auto* elements = static_cast<std::uint8_t*>(ops->resize_default(dst, count));
       std::memcpy(elements, bytes, std::size_t{count} * we.size);
       if (addresses) {
@@ -775,9 +716,8 @@ class Restorer {
 
   __attribute__((noinline)) bool pointer(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
     std::uint32_t code = 0;
-    if (!in_.read(code)) return truncated("pointer");
+    if (!in_.pointer(wt, code)) return false;
     const bool shared = wt.kind == Kind::SharedPtr;
-    if (shared && code == 1) return corrupt("shared_ptr marked as outside").ok();
     const std::uint32_t ordinal = slot_ordinal_++;
     const bool to_reader = n->action == Action::Pointer || n->action == Action::SharedPtr;
     if (mode_ == Mode::Check) {
@@ -803,61 +743,24 @@ class Restorer {
   // ---- references ----------------------------------------------------------------------
   bool decode_references() {
     std::uint32_t count = 0;
-    if (!in_.read(count)) return truncated("reference count");
-    if (count > in_.remaining() / 11) return corrupt("reference count %u exceeds the payload", count).ok();
+    if (!in_.reference_count(count)) return false;
     refs_.resize(count);
     const std::uint32_t object_count = w_.root_count + static_cast<std::uint32_t>(heap_.size());
+    auto object_type = [&](std::uint32_t a, std::uint32_t& type) {
+      if (a >= object_count) return false;
+      type = a < w_.root_count ? w_.roots[a].type : heap_[a - w_.root_count].type;
+      return true;
+    };
+    auto element_type = [&](std::uint32_t a, std::uint32_t b, std::uint32_t& type) {
+      if (a >= containers_.size() || b >= containers_[a].count) return false;
+      type = containers_[a].element->writer;
+      return true;
+    };
+    auto on_step = [&](std::uint32_t step) { steps_.push_back(step); };
     for (std::uint32_t i = 0; i < count; ++i) {
       RefRecord& ref = refs_[i];
-      if (!in_.read(ref.base) || !in_.read(ref.a)) return truncated("reference");
-      if (ref.base > 1) return corrupt("reference %u has base kind %u", i, ref.base).ok();
-      if (ref.base == 1 && !in_.read(ref.b)) return truncated("reference");
-      if (!in_.read(ref.step_count)) return truncated("reference");
       ref.steps_at = static_cast<std::uint32_t>(steps_.size());
-      std::uint32_t type = 0;
-      if (ref.base == 0) {
-        if (ref.a >= object_count) return corrupt("reference %u to object %u of %u", i, ref.a, object_count).ok();
-        type = ref.a < w_.root_count ? w_.roots[ref.a].type : heap_[ref.a - w_.root_count].type;
-      } else {
-        if (ref.a >= containers_.size()) return corrupt("reference %u to container %u", i, ref.a).ok();
-        if (ref.b >= containers_[ref.a].count) {
-          return corrupt("reference %u to element %u of a %u-element container", i, ref.b,
-                         containers_[ref.a].count).ok();
-        }
-        type = containers_[ref.a].element->writer;
-      }
-      for (std::uint16_t s = 0; s < ref.step_count; ++s) {
-        std::uint32_t step = 0;
-        if (!in_.read(step)) return truncated("reference steps");
-        steps_.push_back(step);
-        const TypeInfo& t = w_.types[type];
-        switch (t.kind) {
-          case Kind::Struct:
-            if (step >= t.field_count) return corrupt("reference %u: no field %u in %s", i, step, t.name).ok();
-            type = t.fields[step].type;
-            break;
-          case Kind::Array:
-            if (step >= t.count) return corrupt("reference %u: index %u beyond %s", i, step, t.name).ok();
-            type = t.element;
-            break;
-          case Kind::Optional:
-          case Kind::UniquePtr:
-            if (step != 0) return corrupt("reference %u: step %u into %s", i, step, t.name).ok();
-            type = t.element;
-            break;
-          case Kind::Variant:
-            if (step >= t.alternative_count) return corrupt("reference %u: alternative %u of %s", i, step, t.name).ok();
-            type = t.alternatives[step];
-            break;
-          case Kind::String:  // a character index, bounded by the restored string's length
-            type = t.element;
-            break;
-          default:
-            return corrupt("reference %u: a step into %s", i, t.name).ok();
-        }
-      }
-      if (!in_.read(ref.target)) return truncated("reference target");
-      if (ref.target != type) return corrupt("reference %u: steps end at type %u, not %u", i, type, ref.target).ok();
+      if (!in_.reference(i, ref, object_type, element_type, on_step)) return false;
     }
     return true;
   }
@@ -1110,7 +1013,7 @@ class Restorer {
     if (!pending.empty()) {
       for (const Pending& entry : pending) explained_[entry.ordinal];
       mode_ = Mode::Explain;
-      in_ = WireReader(payload_, size_);
+      in_.start(payload_, size_);
       container_ordinal_ = 0;
       slot_ordinal_ = 0;
       verdict_cursor_ = 0;
@@ -1235,14 +1138,14 @@ class Restorer {
   const Plan& plan_;
   const Schema& w_;
   const Schema& r_;
+  Status error_;
+  PayloadReader in_;
   const std::uint8_t* payload_;
   std::size_t size_;
   Report& report_;
   const bool dry_run_;
-  Status error_;
 
   Mode mode_ = Mode::Check;
-  WireReader in_;
   int depth_ = 0;
   std::vector<PathFrame> frames_;
   std::uint32_t counter_ = 0;

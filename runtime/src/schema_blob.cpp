@@ -117,6 +117,14 @@ void serialise_schema(const Schema& schema, std::vector<std::uint8_t>& out) {
   }
 }
 
+void serialise_blob(const Schema& schema, SchemaBlob& blob) {
+  blob.storage.clear();
+  serialise_schema(schema, blob.storage);
+  blob.data = blob.storage.data();
+  blob.size = blob.storage.size();
+  blob.hash = fnv1a64(blob.data, blob.size);
+}
+
 namespace {
 
 constexpr std::size_t kMaxFlatRuns = 64;  // beyond this a type is cheaper to walk

@@ -33,6 +33,12 @@ CacheKey key_of(const Schema& schema) {
   return CacheKey{&schema, schema.types, schema.type_count, schema.roots, schema.root_count};
 }
 
+// symcr-gen's serialised form of `schema`, when it is the program's generated schema.
+const SerialisedSchema* generated_form(const Schema& schema) {
+  if (!symcr_program_schema || !symcr_program_serialised_schema) return nullptr;
+  return symcr_program_schema() == &schema ? symcr_program_serialised_schema() : nullptr;
+}
+
 }  // namespace
 
 const SchemaCacheEntry& schema_cache_entry(const Schema& schema) {
@@ -50,8 +56,13 @@ const SchemaCacheEntry& schema_cache_entry(const Schema& schema) {
     }
   }
   auto* entry = new SchemaCacheEntry();  // lives as long as the process, like the schema
-  serialise_schema(schema, entry->blob.bytes);
-  entry->blob.hash = fnv1a64(entry->blob.bytes.data(), entry->blob.bytes.size());
+  if (const SerialisedSchema* generated = generated_form(schema)) {
+    entry->blob.data = generated->bytes;
+    entry->blob.size = generated->size;
+    entry->blob.hash = generated->hash;
+  } else {
+    serialise_blob(schema, entry->blob);
+  }
   entry->blob.program_id = program_id_of(schema.program);
   entry->facts = compute_schema_facts(schema);
   cache->push_back(CachedSchema{key, entry});

@@ -28,11 +28,11 @@ std::uint64_t now_ns() {
 
 Status write_schema_file(const Schema& schema, const char* path) {
   const SchemaBlob& blob = schema_blob(schema);
-  if (blob.bytes.size() > UINT32_MAX) {
+  if (blob.size > UINT32_MAX) {
     return Status(Error::TooLarge, "schema of %zu bytes exceeds the format's 4 GiB limit",
-                  blob.bytes.size());
+                  blob.size);
   }
-  std::vector<std::uint8_t> record(kRecordHeaderSize + blob.bytes.size());
+  std::vector<std::uint8_t> record(kRecordHeaderSize + blob.size);
   std::uint8_t* h = record.data();
   for (std::size_t i = 0; i < sizeof kRecordMagic; ++i) h[i] = kRecordMagic[i];
   le::store16(h + 8, kRecordFormatVersion);
@@ -41,11 +41,11 @@ Status write_schema_file(const Schema& schema, const char* path) {
   le::store64(h + 16, 0);  // sequence
   le::store64(h + 24, now_ns());
   le::store64(h + 32, blob.hash);
-  le::store32(h + 40, static_cast<std::uint32_t>(blob.bytes.size()));
+  le::store32(h + 40, static_cast<std::uint32_t>(blob.size));
   le::store32(h + 44, 0);  // payload_size: a schema file carries no values
   le::store32(h + 48, 0);  // checksum, computed over the record with this field zero
   le::store32(h + 52, blob.program_id);
-  for (std::size_t i = 0; i < blob.bytes.size(); ++i) h[kRecordHeaderSize + i] = blob.bytes[i];
+  for (std::size_t i = 0; i < blob.size; ++i) h[kRecordHeaderSize + i] = blob.data[i];
   le::store32(h + kRecordChecksumOffset, crc32c(record.data(), record.size()));
   return write_file_atomically(path, record.data(), record.size(), Durability::PageCache);
 }

@@ -173,20 +173,20 @@ struct Store::Impl {
     const int newest = newest_valid_slot();
     const int target = (newest >= 0 && slots[static_cast<std::size_t>(newest)].area == 0) ? 1 : 0;
     const detail::SchemaBlob& blob = detail::schema_blob(schema);
-    if (detail::kStoreAreaHeaderSize + blob.bytes.size() > geometry.schema_area_size) {
+    if (detail::kStoreAreaHeaderSize + blob.size > geometry.schema_area_size) {
       return Status(Error::TooLarge,
                     "%s: this build's schema (%zu bytes) does not fit the store's schema area "
                     "(%u bytes); open a new store (a new path) for this build",
-                    path.c_str(), blob.bytes.size(), geometry.schema_area_size);
+                    path.c_str(), blob.size, geometry.schema_area_size);
     }
-    std::vector<std::uint8_t> area_bytes(detail::kStoreAreaHeaderSize + blob.bytes.size());
+    std::vector<std::uint8_t> area_bytes(detail::kStoreAreaHeaderSize + blob.size);
     detail::le::store64(area_bytes.data(), blob.hash);
-    detail::le::store32(area_bytes.data() + 8, static_cast<std::uint32_t>(blob.bytes.size()));
-    std::memcpy(area_bytes.data() + detail::kStoreAreaHeaderSize, blob.bytes.data(),
-                blob.bytes.size());
+    detail::le::store32(area_bytes.data() + 8, static_cast<std::uint32_t>(blob.size));
+    std::memcpy(area_bytes.data() + detail::kStoreAreaHeaderSize, blob.data,
+                blob.size);
     detail::le::store32(area_bytes.data() + 12,
                         detail::crc32c_extend(detail::crc32c(area_bytes.data(), 12),
-                                              blob.bytes.data(), blob.bytes.size()));
+                                              blob.data, blob.size));
     // Forget the old area before overwriting it: a failed write leaves it unusable either way.
     areas[target] = StoreSchemaArea();
     for (Slot& slot : slots) {
@@ -201,11 +201,11 @@ struct Store::Impl {
       status = detail::io_error("cannot fdatasync", path.c_str(), errno);
     }
     if (!status.ok()) return status;
-    status = detail::parse_schema(blob.bytes.data(), blob.bytes.size(), areas[target].schema);
+    status = detail::parse_schema(blob.data, blob.size, areas[target].schema);
     if (!status.ok()) return status;
     areas[target].valid = true;
     areas[target].hash = blob.hash;
-    areas[target].size = static_cast<std::uint32_t>(blob.bytes.size());
+    areas[target].size = static_cast<std::uint32_t>(blob.size);
     own_area = target;
     return Status();
   }
@@ -522,7 +522,7 @@ Status Store::open_descriptor(const char* path, const Schema& schema,
   }
   const std::uint64_t file_size = static_cast<std::uint64_t>(info.st_size);
   const StoreGeometry wanted =
-      detail::store_geometry_for(options.slots, options.slot_size, blob.bytes.size());
+      detail::store_geometry_for(options.slots, options.slot_size, blob.size);
 
   std::uint8_t header[detail::kStoreHeaderSize] = {};
   std::size_t got = 0;
@@ -597,7 +597,7 @@ Status Store::save() {
   Status status = detail::encode_record(*schema_, /*inline_schema=*/false, sequence, impl.record);
   if (!status.ok()) return status;
   if (impl.geometry_pending) {
-    status = impl.apply_requested_geometry(fd_, detail::schema_blob(*schema_).bytes.size());
+    status = impl.apply_requested_geometry(fd_, detail::schema_blob(*schema_).size);
     if (!status.ok()) return status;
     impl.own_area = impl.area_for_hash(detail::schema_blob(*schema_).hash);
     options_.slots = impl.geometry.slot_count;

@@ -168,7 +168,7 @@ struct CountingVisitor : symcr::detail::ValueVisitor {
 TEST(DeepGraph, CraftedMillionLevelNestingIsRefusedByRestoreAndByTheDecoder) {
   const symcr::detail::SchemaBlob& blob = symcr::detail::schema_blob(chain_schema());
   symcr::detail::ParsedSchema writer;
-  ASSERT_TRUE(symcr::detail::parse_schema(blob.bytes.data(), blob.bytes.size(), writer).ok());
+  ASSERT_TRUE(symcr::detail::parse_schema(blob.data, blob.size, writer).ok());
 
   // Sanity: a shallow crafted payload is accepted, so the deep one fails for its depth.
   std::vector<std::uint8_t> shallow = nested_payload(10);

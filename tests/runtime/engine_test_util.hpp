@@ -23,7 +23,7 @@ struct Saved {
 inline Saved save(const symcr::Schema& schema) {
   Saved saved;
   const symcr::detail::SchemaBlob& blob = symcr::detail::schema_blob(schema);
-  saved.schema = blob.bytes;
+  saved.schema.assign(blob.data, blob.data + blob.size);
   saved.hash = blob.hash;
   const symcr::Status status = symcr::detail::encode_payload(schema, saved.payload);
   EXPECT_TRUE(status.ok()) << status.message();

@@ -13,6 +13,7 @@
 
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
+#include "payload_grammar.hpp"
 
 #define SYMCR_COUNT(array) static_cast<std::uint32_t>(sizeof(array) / sizeof((array)[0]))
 
@@ -144,11 +145,17 @@ class OldValuesTest : public ::testing::Test {
     saved_ = save(ov::schema());
     ASSERT_TRUE(symcr::detail::parse_schema(saved_.schema.data(), saved_.schema.size(), parsed_)
                     .ok());
-    view_ = OldValues(parsed_.schema(), ov::kOld, saved_.payload.data(), saved_.payload.size());
+    sizes_ = symcr::detail::wire_sizes(parsed_.schema());
+    view_ = view(ov::kOld, saved_.payload.data(), saved_.payload.size());
+  }
+
+  OldValues view(std::uint32_t type, const std::uint8_t* bytes, std::size_t size) const {
+    return symcr::detail::old_values_view(parsed_.schema(), sizes_, type, bytes, size);
   }
 
   Saved saved_;
   symcr::detail::ParsedSchema parsed_;
+  symcr::detail::WireSizes sizes_;
   OldValues view_;
 };
 
@@ -314,13 +321,12 @@ TEST_F(OldValuesTest, InvalidAndTruncatedViewsFail) {
   EXPECT_FALSE(empty.child("inner").valid());
   EXPECT_EQ(empty.count("samples"), 0u);
   // A type index beyond the schema: invalid.
-  EXPECT_FALSE(OldValues(parsed_.schema(), 1000, saved_.payload.data(), saved_.payload.size())
-                   .valid());
+  EXPECT_FALSE(view(1000, saved_.payload.data(), saved_.payload.size()).valid());
   // Every prefix of the value: queries fail or succeed, never read past the bytes given.
   for (std::size_t size = 0; size < 64; ++size) {
     std::vector<std::uint8_t> prefix(saved_.payload.begin(),
                                      saved_.payload.begin() + static_cast<std::ptrdiff_t>(size));
-    const OldValues cut(parsed_.schema(), ov::kOld, prefix.data(), prefix.size());
+    const OldValues cut = view(ov::kOld, prefix.data(), prefix.size());
     std::int64_t value = 0;
     std::string text;
     (void)cut.get("after", value);

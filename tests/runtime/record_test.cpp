@@ -44,7 +44,7 @@ symcr::Status parse(const std::vector<std::uint8_t>& bytes) {
 TEST(Record, HeaderLayoutMatchesTheFormat) {
   const std::vector<std::uint8_t> record = encoded_a(42);
   const symcr::detail::SchemaBlob& blob = symcr::detail::schema_blob(schema_a);
-  ASSERT_GE(record.size(), 56u + blob.bytes.size());
+  ASSERT_GE(record.size(), 56u + blob.size);
   EXPECT_EQ(std::memcmp(record.data(), "SYMCRCKP", 8), 0);
   EXPECT_EQ(le::load16(record.data() + 8), 1u);    // format_version
   EXPECT_EQ(le::load16(record.data() + 10), 56u);  // header_size
@@ -52,10 +52,10 @@ TEST(Record, HeaderLayoutMatchesTheFormat) {
   EXPECT_EQ(le::load64(record.data() + 16), 42u);  // sequence
   EXPECT_GT(le::load64(record.data() + 24), 1600000000ull * 1000000000ull);  // timestamp_ns
   EXPECT_EQ(le::load64(record.data() + 32), blob.hash);
-  EXPECT_EQ(le::load32(record.data() + 40), blob.bytes.size());
-  EXPECT_EQ(le::load32(record.data() + 44), record.size() - 56 - blob.bytes.size());
+  EXPECT_EQ(le::load32(record.data() + 40), blob.size);
+  EXPECT_EQ(le::load32(record.data() + 44), record.size() - 56 - blob.size);
   EXPECT_EQ(le::load32(record.data() + 52), 0u);  // reserved
-  EXPECT_EQ(std::memcmp(record.data() + 56, blob.bytes.data(), blob.bytes.size()), 0);
+  EXPECT_EQ(std::memcmp(record.data() + 56, blob.data, blob.size), 0);
   // The checksum is the CRC-32C of the whole record with the checksum field zero.
   std::vector<std::uint8_t> zeroed = record;
   le::store32(zeroed.data() + 48, 0);
@@ -67,7 +67,7 @@ TEST(Record, HeaderLayoutMatchesTheFormat) {
   EXPECT_EQ(view.record_size, record.size());
   EXPECT_EQ(view.header.sequence, 42u);
   EXPECT_EQ(view.schema, record.data() + 56);
-  EXPECT_EQ(view.payload, record.data() + 56 + blob.bytes.size());
+  EXPECT_EQ(view.payload, record.data() + 56 + blob.size);
 }
 
 TEST(Record, StoreRecordsReferenceTheirSchemaByHash) {

@@ -287,7 +287,7 @@ TEST(WorldA3, PlanPayloadReportsWithoutWritingEvenWithoutAddresses) {
   // The reader as another build's schema file: parsed, roots without addresses.
   const auto& reader_blob = symcr::detail::schema_blob(a1::schema());
   symcr::detail::ParsedSchema reader;
-  ASSERT_TRUE(symcr::detail::parse_schema(reader_blob.bytes.data(), reader_blob.bytes.size(),
+  ASSERT_TRUE(symcr::detail::parse_schema(reader_blob.data, reader_blob.size,
                                           reader).ok());
   symcr::detail::ParsedSchema writer;
   ASSERT_TRUE(symcr::detail::parse_schema(saved.schema.data(), saved.schema.size(), writer).ok());

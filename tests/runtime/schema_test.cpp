@@ -27,7 +27,7 @@ TEST(EngineSchema, BlobIsCachedAndHashed) {
   const auto& first = schema_blob(b0::schema());
   const auto& second = schema_blob(b0::schema());
   EXPECT_EQ(&first, &second);
-  EXPECT_EQ(first.hash, symcr::detail::fnv1a64(first.bytes.data(), first.bytes.size()));
+  EXPECT_EQ(first.hash, symcr::detail::fnv1a64(first.data, first.size));
   EXPECT_NE(first.hash, schema_blob(b1::schema()).hash);
 }
 
@@ -36,7 +36,7 @@ TEST(EngineSchema, RoundTripsThroughTheParser) {
                                       &d1::schema(), &e1::schema()}) {
     const auto& blob = schema_blob(*schema);
     ParsedSchema parsed;
-    const symcr::Status status = parse_schema(blob.bytes.data(), blob.bytes.size(), parsed);
+    const symcr::Status status = parse_schema(blob.data, blob.size, parsed);
     ASSERT_TRUE(status.ok()) << status.message();
     EXPECT_EQ(parsed.hash(), blob.hash);
     const symcr::Schema& copy = parsed.schema();
@@ -58,14 +58,14 @@ TEST(EngineSchema, RoundTripsThroughTheParser) {
     // A parsed schema serialises to the same bytes.
     std::vector<std::uint8_t> again;
     symcr::detail::serialise_schema(copy, again);
-    EXPECT_EQ(again, blob.bytes);
+    EXPECT_EQ(again, std::vector<std::uint8_t>(blob.data, blob.data + blob.size));
   }
 }
 
 TEST(EngineSchema, ParsedAliasesAndRangesSurvive) {
   const auto& blob = schema_blob(a1::schema());
   ParsedSchema parsed;
-  ASSERT_TRUE(parse_schema(blob.bytes.data(), blob.bytes.size(), parsed).ok());
+  ASSERT_TRUE(parse_schema(blob.data, blob.size, parsed).ok());
   const symcr::TypeInfo& basic = parsed.schema().types[13];
   EXPECT_STREQ(basic.fields[3].name, "yaw");
   ASSERT_NE(basic.fields[3].renamed_from, nullptr);
@@ -79,13 +79,13 @@ TEST(EngineSchema, ParsedAliasesAndRangesSurvive) {
 
 TEST(EngineSchema, EveryTruncationIsRefused) {
   const auto& blob = schema_blob(c0::schema());
-  for (std::size_t size = 0; size < blob.bytes.size(); ++size) {
+  for (std::size_t size = 0; size < blob.size; ++size) {
     ParsedSchema parsed;
-    const symcr::Status status = parse_schema(blob.bytes.data(), size, parsed);
+    const symcr::Status status = parse_schema(blob.data, size, parsed);
     EXPECT_FALSE(status.ok()) << size;
     EXPECT_EQ(status.error(), symcr::Error::Corrupt);
   }
-  std::vector<std::uint8_t> longer = blob.bytes;
+  std::vector<std::uint8_t> longer(blob.data, blob.data + blob.size);
   longer.push_back(0);
   ParsedSchema parsed;
   EXPECT_EQ(parse_schema(longer.data(), longer.size(), parsed).error(), symcr::Error::Corrupt);

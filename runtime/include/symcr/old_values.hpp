@@ -25,13 +25,19 @@
 
 namespace symcr {
 
+class OldValues;
+namespace detail {
+struct WireSizes;
+// Restore's (and the tests') way to make a view: of a value of `writer.types[type]` whose
+// payload encoding starts at `bytes`, with at most `size` bytes readable. `writer` must be a
+// parsed (validated) schema and `sizes` its wire sizes.
+OldValues old_values_view(const Schema& writer, const WireSizes& sizes, std::uint32_t type,
+                          const std::uint8_t* bytes, std::size_t size);
+}  // namespace detail
+
 class OldValues {
  public:
   OldValues() = default;  // invalid: every query fails
-  // A view of a value of `writer.types[type]` whose payload encoding (docs/format.md §3) starts
-  // at `bytes`, with at most `size` bytes readable. `writer` must be a parsed (validated) schema.
-  OldValues(const Schema& writer, std::uint32_t type, const std::uint8_t* bytes,
-            std::size_t size);
 
   bool valid() const { return writer_ != nullptr; }
   const char* type_name() const;  // the checkpoint's name of the viewed type; "" when invalid
@@ -65,9 +71,14 @@ class OldValues {
     const std::uint8_t* bytes;
     std::size_t size;
   };
+  friend OldValues detail::old_values_view(const Schema&, const detail::WireSizes&, std::uint32_t,
+                                           const std::uint8_t*, std::size_t);
+  OldValues(const Schema& writer, const detail::WireSizes& sizes, std::uint32_t type,
+            const std::uint8_t* bytes, std::size_t size);
   bool locate(const char* field, Span& out) const;
 
   const Schema* writer_ = nullptr;
+  const detail::WireSizes* sizes_ = nullptr;
   std::uint32_t type_ = kNoType;
   const std::uint8_t* bytes_ = nullptr;
   std::size_t size_ = 0;

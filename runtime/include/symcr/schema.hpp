@@ -221,4 +221,17 @@ struct Schema {
 // generated code links and gets a clear "no schema" error instead.
 extern "C" const symcr::Schema* symcr_program_schema(void) __attribute__((weak));
 
+namespace symcr {
+// The program's schema serialised (docs/format.md §2) and its FNV-1a 64 hash, as symcr-gen
+// computed them from the same tables: a program never serialises or hashes its own schema at
+// run time. Tables written otherwise are serialised once, at their first use.
+struct SerialisedSchema {
+  const std::uint8_t* bytes;
+  std::uint32_t size;
+  std::uint64_t hash;
+};
+}  // namespace symcr
+extern "C" const symcr::SerialisedSchema* symcr_program_serialised_schema(void)
+    __attribute__((weak));
+
 #endif  // SYMCR_SCHEMA_HPP

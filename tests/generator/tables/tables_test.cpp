@@ -4,11 +4,14 @@
 #include <cstddef>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <symcr/ops.hpp>
 
+#include "engine.hpp"
 #include "roots.hpp"
+#include "schema_facts.hpp"
 
 // offsetof on these non-standard-layout types is conditionally supported; g++ supports it.
 #pragma GCC diagnostic ignored "-Winvalid-offsetof"
@@ -302,6 +305,21 @@ TEST(Tables, RootsOfEveryLinkage) {
     EXPECT_EQ(root->address, e.address) << e.name;
     EXPECT_STREQ(type_at(root->type).name, e.type) << e.name;
   }
+}
+
+// The serialised form symcr-gen embeds is the program's tables serialised by the runtime, byte
+// for byte, with their hash; and it is what the program writes into its checkpoints.
+TEST(Tables, EmbeddedSerialisedFormIsTheTablesSerialised) {
+  const symcr::SerialisedSchema* embedded = symcr_program_serialised_schema();
+  ASSERT_NE(embedded, nullptr);
+  std::vector<std::uint8_t> serialised;
+  symcr::detail::serialise_schema(schema(), serialised);
+  ASSERT_EQ(embedded->size, serialised.size());
+  EXPECT_EQ(std::memcmp(embedded->bytes, serialised.data(), serialised.size()), 0);
+  EXPECT_EQ(embedded->hash, symcr::detail::fnv1a64(serialised.data(), serialised.size()));
+  const symcr::detail::SchemaBlob& used = symcr::detail::schema_blob(schema());
+  EXPECT_EQ(used.data, embedded->bytes);  // the constant itself: nothing serialised at run time
+  EXPECT_EQ(used.hash, embedded->hash);
 }
 
 }  // namespace

@@ -1,0 +1,111 @@
+//===- ReportText.cpp - Writes symcr-gen's --report text ------------------===//
+//
+// Per root: the types and fields it reaches, the bytes of fixed payload, what
+// is skipped and why, and which classes heap objects behind a polymorphic
+// pointer are saved as.
+//
+//===----------------------------------------------------------------------===//
+#include "EmitSupport.h"
+#include "Emitter.h"
+#include "SchemaTables.h"
+#include "payload_grammar.hpp"
+
+#include <set>
+#include <sstream>
+
+namespace symcr_gen {
+
+std::string renderReport(const ProgramModel &Program) {
+  std::ostringstream OS;
+  OS << "symcr-gen report: " << Program.Roots.size() << " root(s), "
+     << Program.Types.size() << " type(s) in the schema\n";
+  // The fewest bytes each type takes in a payload, as the runtime computes it.
+  SchemaTables Tables(Program);
+  const symcr::detail::WireSizes Sizes =
+      symcr::detail::wire_sizes(Tables.schema());
+  for (const RootModel &Root : Program.Roots) {
+    std::set<std::uint32_t> Seen;
+    std::vector<std::uint32_t> Order;
+    std::vector<std::uint32_t> Pending{Root.Type};
+    while (!Pending.empty()) {
+      std::uint32_t T = Pending.back();
+      Pending.pop_back();
+      if (T == symcr::kNoType || !Seen.insert(T).second)
+        continue;
+      Order.push_back(T);
+      const TypeModel &Type = Program.Types[T];
+      for (auto It = Type.Fields.rbegin(); It != Type.Fields.rend(); ++It)
+        Pending.push_back(It->Type);
+      for (auto It = Type.Alternatives.rbegin(); It != Type.Alternatives.rend();
+           ++It)
+        Pending.push_back(*It);
+      for (auto It = Type.DynamicTypes.rbegin(); It != Type.DynamicTypes.rend();
+           ++It)
+        Pending.push_back(*It);
+      if (Type.Element != symcr::kNoType)
+        Pending.push_back(Type.Element);
+    }
+    std::size_t FieldCount = 0, SkipCount = 0, LeftCount = 0;
+    for (std::uint32_t T : Order) {
+      FieldCount += Program.Types[T].Fields.size();
+      SkipCount += Program.Types[T].Skipped.size();
+      LeftCount += Program.Types[T].LeftToNewBuild.size();
+    }
+    const TypeModel &RootType = Program.Types[Root.Type];
+    OS << "\nroot " << Root.Name
+       << (Root.Flags & symcr::kRootShallow ? " (shallow)" : "") << ": "
+       << RootType.Name << ", " << RootType.Size << " bytes in memory, "
+       << Sizes.least[Root.Type] << " bytes of fixed payload\n"
+       << "  reaches " << Order.size() << " type(s), " << FieldCount
+       << " field(s); skips " << SkipCount << "; leaves " << LeftCount
+       << " to the new build\n";
+    if (Root.Where.valid())
+      OS << "  defined at " << Root.Where.File << ":" << Root.Where.Line
+         << "\n";
+    for (std::uint32_t T : Order) {
+      const TypeModel &Type = Program.Types[T];
+      OS << "  " << kindName(Type.Kind) << " " << Type.Name << " (" << Type.Size
+         << " B)";
+      if (Type.Kind == symcr::Kind::Array)
+        OS << " x" << Type.Count;
+      OS << "\n";
+      for (const FieldModel &F : Type.Fields) {
+        OS << "    " << (F.Flags & symcr::kFieldBase ? "base " : "") << F.Name
+           << ": " << Program.Types[F.Type].Name << " @" << F.Offset;
+        if (F.BitWidth)
+          OS << " bits " << F.BitOffset << "+" << F.BitWidth;
+        if (!F.RenamedFrom.empty()) {
+          OS << " (renamed from";
+          for (const std::string &Old : F.RenamedFrom)
+            OS << " " << Old;
+          OS << ")";
+        }
+        OS << "\n";
+      }
+      for (const std::string &S : Type.Skipped)
+        OS << "    skipped " << S << "\n";
+      if (!Type.DynamicTypesReachedBy.empty()) {
+        OS << "    heap objects behind a " << Type.Name
+           << "* are saved as their class: ";
+        for (std::size_t D = 0; D < Type.DynamicTypes.size(); ++D)
+          OS << (D ? ", " : "") << Program.Types[Type.DynamicTypes[D]].Name;
+        if (Type.DynamicTypes.empty())
+          OS << "none; saving refuses them";
+        OS << "\n";
+        for (const std::string &Not : Type.NotDynamicTypes)
+          OS << "    refused on the heap: " << Not << "\n";
+      }
+    }
+    // A heading of their own: what the new build re-creates, which needs no skip line.
+    if (LeftCount) {
+      OS << "  left to the new build (never restored, no annotation needed):\n";
+      for (std::uint32_t T : Order)
+        for (const TypeModel::LeftMember &Left : Program.Types[T].LeftToNewBuild)
+          OS << "    " << Program.Types[T].Name << "::" << Left.Name << ": " << Left.Why
+             << "\n";
+    }
+  }
+  return OS.str();
+}
+
+} // namespace symcr_gen
