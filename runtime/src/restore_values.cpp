@@ -1,0 +1,541 @@
+// Restore: values, decoded along the plan (restorer.hpp). Both passes run this code; pass 1
+// records what pass 2 looks up by ordinal.
+#include <algorithm>
+#include <cinttypes>
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "unicode.hpp"
+
+#include "restorer.hpp"
+
+namespace symcr::detail::restoring {
+
+// ---- errors and report ---------------------------------------------------------------
+const Status& Restorer::corrupt(const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  set_corrupt_payload(error_, format, args);
+  va_end(args);
+  return error_;
+}
+
+// A value-level rejection: the reader keeps its value. Concrete paths are capped per field.
+void Restorer::reject_value(std::uint32_t counter,
+                                                                  const char* format, ...) {
+  if (mode_ != Mode::Check) return;
+  ++value_rejections_;
+  if (++rejection_counts_[counter] > kMaxConcretePerField) return;
+  char buffer[240];
+  va_list args;
+  va_start(args, format);
+  std::vsnprintf(buffer, sizeof buffer, format, args);
+  va_end(args);
+  report_.add(render_path(frames_.data(), frames_.size()), Decision::Rejected, buffer, true);
+}
+
+void Restorer::summarise_rejections() {
+  if (value_rejections_ <= kMaxConcretePerField) return;  // no counter can exceed the cap
+  for (std::size_t c = 0; c < rejection_counts_.size(); ++c) {
+    if (rejection_counts_[c] <= kMaxConcretePerField) continue;
+    report_.add(counter_path(static_cast<std::uint32_t>(c)), Decision::Rejected,
+                "and " + std::to_string(rejection_counts_[c] - kMaxConcretePerField) +
+                    " more values rejected",
+                true);
+  }
+}
+
+std::string Restorer::counter_path(std::uint32_t counter) const {
+  return counter < plan_.counter_paths.size() ? plan_.counter_paths[counter] : "heap objects";
+}
+
+// ---- objects: roots then heap objects ------------------------------------------------
+bool Restorer::decode_objects() {
+  for (std::uint32_t wr = 0; wr < writer_.root_count; ++wr) {
+    const RootPlan& root = plan_.roots[wr];
+    std::uint8_t* dst = root.reader_root == kNoType
+                            ? nullptr
+                            : static_cast<std::uint8_t*>(reader_.roots[root.reader_root].address);
+    frames_.push_back({PathFrame::Kind::Name, writer_.roots[wr].name, 0});
+    counter_ = root.counter;
+    current_object_ = wr;
+    if (!value(root.node, dst, nullptr)) return false;
+    frames_.pop_back();
+  }
+  std::uint32_t heap_count = 0;
+  if (!in_.heap_count(heap_count)) return false;
+  if (mode_ == Mode::Check) heap_.reserve(heap_count);
+  for (std::uint32_t h = 0; h < heap_count; ++h) {
+    std::uint32_t type = 0;
+    std::uint8_t owner = 0;
+    if (!in_.heap_object(h, type, owner)) return false;
+    if (mode_ == Mode::Check) {
+      if (!plan_.heap_nodes[type]) {
+        return corrupt("heap object %u of type %s, which no pointer points to", h,
+                       writer_.types[type].name).ok();
+      }
+      heap_.push_back(HeapRecord{type, owner, plan_.heap_nodes[type]});
+    }
+    frames_.push_back({PathFrame::Kind::Heap, writer_.types[type].name, h});
+    counter_ = heap_counter_;
+    current_object_ = writer_.root_count + h;
+    std::uint8_t* dst = mode_ == Mode::Apply ? static_cast<std::uint8_t*>(heap_live_[h]) : nullptr;
+    if (!value(heap_[h].node, dst, nullptr)) return false;
+    frames_.pop_back();
+  }
+  return true;
+}
+
+// ---- values --------------------------------------------------------------------------
+bool Restorer::value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
+  return n->validated ? validated_value(n, dst, field) : plain_value(n, dst, field);
+}
+
+// Only containers and unique_ptrs nest without a bound in the schema (struct nesting is
+// bounded when the schema is parsed); the save side refuses the same depth.
+bool Restorer::nested(const PlanNode* n, std::uint8_t* dst) {
+  if (!in_.nest(++depth_)) {
+    --depth_;
+    return false;
+  }
+  const bool ok = value(n, dst, nullptr);
+  --depth_;
+  return ok;
+}
+
+bool Restorer::validated_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
+  if (mode_ != Mode::Check) {
+    const bool passed = verdicts_[verdict_cursor_++] != 0;
+    return plain_value(n, passed ? dst : nullptr, field);
+  }
+  const std::size_t verdict = verdicts_.size();
+  verdicts_.push_back(1);
+  const std::uint8_t* start = in_.position();
+  const std::size_t first_slot = slots_.size();
+  const std::uint32_t container_mark = container_ordinal_;
+  const std::uint32_t slot_mark = slot_ordinal_;
+  if (!plain_value(n, dst, field)) return false;
+  const std::uint8_t* end = in_.position();
+
+  const TypeInfo& type = reader_.types[n->reader];
+  bool passed = false;
+  const char* why = "failed its symcr_validate";
+  std::vector<std::max_align_t> flat;
+  void* staged = nullptr;
+  if (type.lifecycle) {
+    staged = type.lifecycle->create();
+  } else if (n->flat_reader) {
+    flat.resize((type.size + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t) + 1);
+    staged = flat.data();
+    if (dst) std::memcpy(staged, dst, type.size);
+    else std::memset(staged, 0, type.size);
+  } else {
+    why = "has a symcr_validate but no lifecycle to check a staged copy";
+  }
+  if (staged) {
+    // Decode the same bytes again into the staged copy, replaying the counters.
+    const std::uint32_t after_containers = container_ordinal_, after_slots = slot_ordinal_;
+    const std::size_t after_cursor = verdict_cursor_;
+    in_.seek(start);
+    mode_ = Mode::Stage;
+    container_ordinal_ = container_mark;
+    slot_ordinal_ = slot_mark;
+    verdict_cursor_ = verdict + 1;
+    const bool decoded = plain_value(n, static_cast<std::uint8_t*>(staged), field);
+    mode_ = Mode::Check;
+    in_.seek(end);
+    container_ordinal_ = after_containers;
+    slot_ordinal_ = after_slots;
+    verdict_cursor_ = after_cursor;
+    passed = decoded && type.validate(staged);
+    if (type.lifecycle) type.lifecycle->destroy(staged);
+  }
+  verdicts_[verdict] = passed ? 1 : 0;
+  if (!passed) {
+    for (std::size_t s = first_slot; s < slots_.size(); ++s) slots_[s].node = nullptr;
+    reject_value(field ? field->counter : counter_, "%s %s", type.name, why);
+  }
+  return true;
+}
+
+bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
+  if (n->action == Action::Reject) return value(n->skip, nullptr, nullptr);
+  if (n->copy_only && !(field && (field->bit_width || field->has_range)) && copy(n, dst)) {
+    return true;
+  }
+  const TypeInfo& wt = writer_.types[n->writer];
+  switch (wt.kind) {
+    case Kind::Bool: case Kind::Int: case Kind::UInt: case Kind::Float: case Kind::Enum:
+      return scalar(n, wt, dst, field);
+    case Kind::Struct: {
+      const std::uint32_t saved = counter_;
+      const std::uint8_t* start = in_.position();
+      // One path frame for all the fields, renamed per field.
+      const std::size_t frame = frames_.size();
+      frames_.push_back({PathFrame::Kind::Name, "", 0});
+      for (const FieldPlan& child : n->fields) {
+        frames_[frame].name = child.name;
+        counter_ = child.counter;
+        std::uint8_t* at = dst && child.reader_field != kNoType ? dst + child.reader_offset : nullptr;
+        if (!value(child.node, at, &child)) return false;
+      }
+      frames_.pop_back();
+      counter_ = saved;
+      // The migration hook, once the mechanical rules wrote the object and everything in it
+      // (so nested objects' hooks ran first). Also on a validator's staged copy, so that
+      // symcr_validate judges the migrated value. Pointers are fixed up after all objects.
+      if (n->migrate && dst && writing()) {
+        n->migrate(dst, old_values_view(writer_, plan_.wire_sizes, n->writer, start,
+                                        static_cast<std::size_t>(in_.position() - start)));
+      }
+      return true;
+    }
+    case Kind::Union: {
+      const std::uint8_t* bytes = nullptr;
+      if (!in_.scalar(wt, bytes)) return false;
+      if (n->action == Action::Union && dst && writing()) std::memcpy(dst, bytes, wt.size);
+      return true;
+    }
+    case Kind::Array: return array(n, wt, dst);
+    case Kind::String: return string(n, wt, dst);
+    case Kind::Container: return container(n, wt, dst);
+    case Kind::Optional: {
+      bool engaged = false;
+      if (!in_.presence(wt, engaged)) return false;
+      const bool to_reader = n->action == Action::Optional && dst;
+      const auto* ops = to_reader ? static_cast<const OptionalOps*>(reader_.types[n->reader].ops) : nullptr;
+      if (!engaged) {
+        if (to_reader && writing()) ops->reset(dst);
+        return true;
+      }
+      std::uint8_t* inner = nullptr;
+      if (to_reader) {
+        inner = static_cast<std::uint8_t*>(const_cast<void*>(ops->get(dst)));
+        if (!inner && writing()) inner = static_cast<std::uint8_t*>(ops->emplace(dst));
+      }
+      return value(n->element, inner, nullptr);
+    }
+    case Kind::UniquePtr: {
+      bool present = false;
+      if (!in_.presence(wt, present)) return false;
+      const bool to_reader = n->action == Action::UniquePtr && dst;
+      const auto* ops = to_reader ? static_cast<const UniquePtrOps*>(reader_.types[n->reader].ops) : nullptr;
+      if (!present) {
+        if (to_reader && writing()) ops->reset(dst);
+        return true;
+      }
+      std::uint8_t* inner = nullptr;
+      if (to_reader) {
+        // An object the new build already owns is filled in place (its address may be known).
+        inner = static_cast<std::uint8_t*>(const_cast<void*>(ops->get(dst)));
+        if (!inner && writing()) inner = static_cast<std::uint8_t*>(ops->make(dst));
+      }
+      return nested(n->element, inner);
+    }
+    case Kind::Variant: {
+      std::uint32_t index = 0;
+      if (!in_.variant(wt, index)) return false;
+      if (index == kNoType) return true;  // valueless when saved: keep the reader's value
+      const PlanNode* alternative = n->alternatives[index];
+      if (n->action != Action::Variant) return value(alternative, nullptr, nullptr);
+      const std::uint32_t reader_index = n->alternative_map[index];
+      if (reader_index == kNoType) {
+        reject_value(field ? field->counter : counter_, "alternative %s not in this build",
+                     writer_.types[wt.alternatives[index]].name);
+        return value(alternative, nullptr, nullptr);
+      }
+      std::uint8_t* inner = nullptr;
+      if (dst) {
+        const auto* ops = static_cast<const VariantOps*>(reader_.types[n->reader].ops);
+        if (ops->index(dst) == reader_index) {
+          inner = static_cast<std::uint8_t*>(const_cast<void*>(ops->get(dst)));
+        } else if (writing()) {
+          inner = static_cast<std::uint8_t*>(ops->emplace(dst, reader_index));
+        }
+      }
+      return value(alternative, inner, nullptr);
+    }
+    case Kind::Pointer:
+    case Kind::SharedPtr:
+      return pointer(n, wt, dst);
+  }
+  return corrupt("unknown kind").ok();
+}
+
+// A copy-only value in one step: check it (pass 1), copy it (writing passes). False,
+// consuming nothing, when the bytes are short or a bool or bit-field value is invalid: the
+// general path then finds and reports the same error at its place.
+bool Restorer::copy(const PlanNode* n, std::uint8_t* dst) {
+  if (in_.remaining() < n->copy_wire) return false;
+  const std::uint8_t* base = in_.position();
+  // Checked in every pass: a value the first pass sent to the general path (a rejected
+  // bit-field value) must take it in the second too.
+  if (!copy_only_valid(*n, base)) return false;
+  if (dst && writing()) copy_only_write(*n, base, dst);
+  in_.seek(base + n->copy_wire);
+  return true;
+}
+
+bool Restorer::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst, const FieldPlan* field) {
+  const std::uint8_t* bytes = nullptr;
+  if (!in_.scalar(wt, bytes)) return false;
+  if (n->action != Action::Scalar) return true;
+  const bool bit_field = field && field->bit_width;
+  const bool ranged = field && field->has_range;
+  const TypeInfo& rt = reader_.types[n->reader];
+  if (n->identical && !bit_field && !ranged) {
+    if (dst && writing()) std::memcpy(dst, bytes, wt.kind == Kind::Float && wt.size == 16 ? 10 : wt.size);
+    return true;
+  }
+  const std::uint32_t counter = field ? field->counter : counter_;
+  Number in;
+  read_number(writer_, wt, bytes, in);
+  if (wt.kind == Kind::Enum && rt.kind == Kind::Enum && !n->identical) {
+    const std::int64_t value = in.tag == Number::Tag::Signed ? in.s : static_cast<std::int64_t>(in.u);
+    const EnumMapping* mapping = nullptr;
+    const auto found = std::lower_bound(
+        n->enum_map.begin(), n->enum_map.end(), value,
+        [](const EnumMapping& candidate, std::int64_t v) { return candidate.writer_value < v; });
+    if (found != n->enum_map.end() && found->writer_value == value) mapping = &*found;
+    if (!mapping) {
+      reject_value(counter, "value %" PRId64 " is not an enumerator of %s", value, wt.name);
+      return true;
+    }
+    if (!mapping->mapped) {
+      reject_value(counter, "enum %s not in this build", mapping->name);
+      return true;
+    }
+    in.tag = Number::Tag::Signed;
+    in.s = mapping->reader_value;
+    if (reader_.types[rt.element].kind == Kind::UInt) {
+      in.tag = Number::Tag::Unsigned;
+      in.u = static_cast<std::uint64_t>(mapping->reader_value);
+    }
+  }
+  Number out;
+  char why[160];
+  if (!convert_number(reader_, rt, in, out, why, sizeof why)) {
+    reject_value(counter, "%s", why);
+    return true;
+  }
+  if (bit_field) {
+    const TypeInfo& integer = rt.kind == Kind::Enum ? reader_.types[rt.element] : rt;
+    if (!fits_bits(out, field->bit_width, integer.kind == Kind::Int)) {
+      char text[64];
+      format_number(out, text, sizeof text);
+      reject_value(counter, "%s does not fit in %u bits", text, field->bit_width);
+      return true;
+    }
+  }
+  if (ranged) {
+    const long double v = out.as_long_double();
+    if (std::isnan(v) || v < field->range_min || v > field->range_max) {
+      char text[64];
+      format_number(out, text, sizeof text);
+      reject_value(counter, "%s outside [%g, %g]", text, field->range_min, field->range_max);
+      return true;
+    }
+  }
+  if (dst && writing()) {
+    if (bit_field) store_bits(dst, field->bit_offset, field->bit_width, out);
+    else store_number(reader_, rt, out, dst);
+  }
+  return true;
+}
+
+bool Restorer::array(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
+  const bool to_reader = n->action == Action::Array;
+  const TypeInfo& we = writer_.types[wt.element];
+  const PlanNode* e = n->element;
+  // Identical packed scalars: one bounds check and one copy.
+  if (to_reader && e->identical && we.kind != Kind::Bool && !(we.kind == Kind::Float && we.size == 16)) {
+    const std::uint8_t* bytes = nullptr;
+    if (!in_.scalar_run(we, wt.count, bytes)) return false;
+    const std::uint64_t common = wt.count < n->reader_count ? wt.count : n->reader_count;
+    if (dst && writing()) std::memcpy(dst, bytes, common * we.size);
+    return true;
+  }
+  // Elements that encode to nothing would let a few bytes of schema drive billions of
+  // iterations: such arrays are bounded like containers.
+  if (!in_.array(wt)) return false;
+  const std::size_t frame = frames_.size();
+  frames_.push_back({PathFrame::Kind::Index, nullptr, 0});
+  for (std::uint64_t i = 0; i < wt.count; ++i) {
+    const bool kept = to_reader && i < n->reader_count;
+    frames_[frame].index = i;
+    std::uint8_t* at = kept && dst ? dst + i * n->reader_stride : nullptr;
+    if (!value(kept ? e : n->element_skip, at, nullptr)) return false;
+  }
+  frames_.pop_back();
+  return true;
+}
+
+bool Restorer::string(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
+  std::uint32_t length = 0;
+  const std::uint8_t* bytes = nullptr;
+  if (!in_.string(wt, bytes, length)) return false;
+  const std::uint32_t width = writer_.types[wt.element].size;
+  if (n->action != Action::String) return true;
+  const TypeInfo& rt = reader_.types[n->reader];
+  const std::uint32_t reader_width = reader_.types[rt.element].size;
+  const void* chars = bytes;
+  std::uint32_t reader_length = length;
+  if (reader_width != width) {
+    // Another character width: re-encoded (UTF-8/16/32), both passes alike; a string not
+    // valid in its encoding is rejected and keeps this build's value.
+    char why[160];
+    if (!transcode_string(bytes, length, width, reader_width, string_scratch_, reader_length,
+                          why, sizeof why)) {
+      reject_value(counter_, "%s", why);
+      return true;
+    }
+    chars = string_scratch_.data();
+  } else if (reinterpret_cast<std::uintptr_t>(bytes) % width != 0) {
+    string_scratch_.assign(bytes, bytes + std::size_t{length} * width);
+    chars = string_scratch_.data();
+  }
+  if (!dst || !writing()) return true;
+  static_cast<const StringOps*>(rt.ops)->assign(dst, chars, reader_length);
+  return true;
+}
+
+bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
+  std::uint32_t count = 0;
+  if (!in_.container(wt, count)) return false;
+  const std::uint32_t ordinal = container_ordinal_++;
+  const bool to_reader = n->action == Action::Container;
+  const PlanNode* e = n->element;
+  if (to_reader && mode_ == Mode::Check && !allocation_justified(count, n->reader)) {
+    return corrupt("container of %u elements would need %" PRIu64
+                   " bytes in this build, more than the checkpoint can justify",
+                   count, std::uint64_t{count} * reader_.types[reader_.types[n->reader].element].size)
+        .ok();
+  }
+  if (mode_ == Mode::Check) containers_.push_back(ContainerRecord{count, e, current_object_});
+  std::vector<void*>* addresses = nullptr;
+  if (mode_ == Mode::Apply && ordinal < element_slots_.size() && element_slots_[ordinal] != kNoType) {
+    addresses = &element_addresses_[element_slots_[ordinal]];
+  }
+  // Identical fixed-width scalars (not bool: its bytes need checking) need no per-element
+  // decoding: one bounds check, and into a contiguous reader container one copy.
+  const TypeInfo& we = writer_.types[wt.element];
+  const bool packed = e->action == Action::Scalar && e->identical && !e->validated &&
+                      we.kind != Kind::Bool && !(we.kind == Kind::Float && we.size == 16) &&
+                      count > 0 && depth_ < kMaxValueNesting;
+  if (packed && (!to_reader || !dst || !writing())) {
+    const std::uint8_t* bytes = nullptr;
+    return in_.scalar_run(we, count, bytes);
+  }
+  if (!to_reader || !dst || !writing()) {
+    for (std::uint32_t i = 0; i < count; ++i) {
+      frames_.push_back({PathFrame::Kind::Index, nullptr, i});
+      if (!nested(e, nullptr)) return false;
+      frames_.pop_back();
+    }
+    return true;
+  }
+  const TypeInfo& rt = reader_.types[n->reader];
+  const auto* ops = static_cast<const ContainerOps*>(rt.ops);
+  if (packed && ops->resize_default && reader_.types[rt.element].size == we.size) {
+    // Resized, not cleared first: the elements it keeps are overwritten below, so only
+    // the new ones are value-initialised.
+    const std::uint8_t* bytes = nullptr;
+    if (!in_.scalar_run(we, count, bytes)) return false;
+    auto* elements = static_cast<std::uint8_t*>(ops->resize_default(dst, count));
+    std::memcpy(elements, bytes, std::size_t{count} * we.size);
+    if (addresses) {
+      for (std::uint32_t i = 0; i < count; ++i) addresses->push_back(elements + std::size_t{i} * we.size);
+    }
+    return true;
+  }
+  ops->clear(dst);
+  if (ops->append) {
+    ops->reserve(dst, count);  // vectors: element addresses stay valid while we append
+    for (std::uint32_t i = 0; i < count; ++i) {
+      frames_.push_back({PathFrame::Kind::Index, nullptr, i});
+      if (refused_by_validator(e)) {  // not appended: the container holds what passed
+        if (addresses) addresses->push_back(nullptr);
+        if (!nested(e, nullptr)) return false;
+        frames_.pop_back();
+        continue;
+      }
+      auto* element = static_cast<std::uint8_t*>(ops->append(dst));
+      if (addresses) addresses->push_back(element);
+      if (!nested(e, element)) return false;
+      frames_.pop_back();
+    }
+    return true;
+  }
+  // Associative: stage each element, then insert (moving from it).
+  const Lifecycle* lifecycle = reader_.types[rt.element].lifecycle;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    frames_.push_back({PathFrame::Kind::Index, nullptr, i});
+    alignas(16) std::uint64_t scalar_buffer[2] = {0, 0};  // a scalar element without a lifecycle
+    auto* staged = lifecycle ? static_cast<std::uint8_t*>(lifecycle->create())
+                             : reinterpret_cast<std::uint8_t*>(scalar_buffer);
+    const std::size_t first_slot = applied_slots_.size();
+    const bool refused = refused_by_validator(e);
+    if (!nested(e, staged)) {
+      if (lifecycle) lifecycle->destroy(staged);
+      return false;
+    }
+    auto* inserted = refused ? nullptr : static_cast<std::uint8_t*>(ops->insert(dst, staged));
+    if (inserted) {
+      // Slots in the staged element's own bytes moved with it; slots in storage it owns
+      // (a vector's buffer, a unique_ptr's pointee) were moved by pointer and stay put.
+      const std::size_t element_size = reader_.types[rt.element].size;
+      for (std::size_t s = first_slot; s < applied_slots_.size(); ++s) {
+        std::uint8_t* at = applied_slots_[s].address;
+        if (at >= staged && at < staged + element_size) {
+          applied_slots_[s].address = inserted + (at - staged);
+        }
+      }
+    } else if (refused) {
+      applied_slots_.resize(first_slot);
+    } else {
+      applied_slots_.resize(first_slot);
+      if (mode_ == Mode::Apply) {
+        report_.add(render_path(frames_.data(), frames_.size()), Decision::Rejected,
+                    "duplicate key: element not inserted", true);
+      }
+    }
+    if (addresses) addresses->push_back(inserted);
+    if (lifecycle) lifecycle->destroy(staged);
+    frames_.pop_back();
+  }
+  return true;
+}
+
+bool Restorer::pointer(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
+  std::uint32_t code = 0;
+  if (!in_.pointer(wt, code)) return false;
+  const bool shared = wt.kind == Kind::SharedPtr;
+  const std::uint32_t ordinal = slot_ordinal_++;
+  const bool to_reader = n->action == Action::Pointer || n->action == Action::SharedPtr;
+  if (mode_ == Mode::Check) {
+    SlotRecord record{};
+    record.code = code;
+    record.pointer_type = n->writer;
+    record.node = to_reader ? n : nullptr;
+    record.shared = shared;
+    if (to_reader && dst && !shared) std::memcpy(&record.live, dst, sizeof(void*));
+    record.counter = counter_;
+    record.object = current_object_;
+    record.outcome = SlotOutcome::Skip;
+    slots_.push_back(record);
+  } else if (mode_ == Mode::Apply && to_reader && dst) {
+    applied_slots_.push_back(AppliedSlot{ordinal, dst});
+  } else if (mode_ == Mode::Explain) {
+    auto wanted = explained_.find(ordinal);
+    if (wanted != explained_.end()) wanted->second = render_path(frames_.data(), frames_.size());
+  }
+  return true;
+}
+
+}  // namespace symcr::detail::restoring

@@ -1,0 +1,279 @@
+// Restore's decoder (restore.cpp): the Restorer's state and the records pass 1 keeps for
+// pass 2. Internal to the runtime. Its work is split by job:
+//   restore.cpp             the two passes and the entry points, and the copy-only fast path
+//   restore_values.cpp      values along the plan (hot: kept in one file for inlining)
+//   restore_references.cpp  the reference table, pointer decisions, heap objects, fix-ups
+#ifndef SYMCR_SRC_RESTORER_HPP
+#define SYMCR_SRC_RESTORER_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "engine.hpp"
+#include "payload_grammar.hpp"
+#include "plan.hpp"
+#include "scalar.hpp"
+
+namespace symcr::detail::restoring {
+
+// ---- copy-only values (PlanNode::copy_only) ------------------------------------------------
+inline std::uint64_t bit_field_raw(const CopyBits& bits, const std::uint8_t* wire) {
+  std::uint64_t raw = 0;
+  std::memcpy(&raw, wire + bits.wire, bits.size);  // little-endian, as the copy runs assume
+  return raw;
+}
+
+inline Number bit_field_value(const CopyBits& bits, const std::uint8_t* wire) {
+  Number value;
+  const std::uint64_t raw = bit_field_raw(bits, wire);
+  if (bits.is_signed) {
+    const unsigned unused = 64 - 8 * bits.size;
+    value.tag = Number::Tag::Signed;
+    value.s = static_cast<std::int64_t>(raw << unused) >> unused;
+  } else {
+    value.tag = Number::Tag::Unsigned;
+    value.u = raw;
+  }
+  return value;
+}
+
+// The first pass's checks of a copy-only value at `wire`: bools are 0 or 1, bit-field values
+// fit their widths. False sends the value to the general path, which names the fault.
+inline bool copy_only_valid(const PlanNode& n, const std::uint8_t* wire) {
+  for (std::uint32_t offset : n.copy_bools) {
+    if (wire[offset] > 1) return false;
+  }
+  for (const CopyBits& bits : n.copy_bits) {
+    if (!fits_bits(bit_field_value(bits, wire), bits.width, bits.is_signed)) return false;
+  }
+  return true;
+}
+
+inline void copy_only_write(const PlanNode& n, const std::uint8_t* wire, std::uint8_t* dst) {
+  for (const CopyRun& run : n.copy_runs) std::memcpy(dst + run.dst, wire + run.wire, run.length);
+  for (const CopyBits& bits : n.copy_bits) {
+    store_bits(dst + bits.dst, bits.bit_offset, bits.width, bit_field_value(bits, wire));
+  }
+}
+
+enum class Mode : std::uint8_t {
+  Check,  // pass 1: read and record, never write
+  Stage,  // pass 1, inside a validated value: write into a staged copy, record nothing
+  Apply,  // pass 2: write into live objects, record slot and element addresses
+  Explain,  // between the passes, only if needed: render the paths of reported pointers
+};
+
+constexpr std::uint32_t kMaxConcretePerField = 100;
+
+enum class SlotOutcome : std::uint8_t { Skip, Null, Outside, Target, Rejected };
+
+struct SlotRecord {
+  std::uint32_t code;              // wire value: 0 null, 1 outside, n >= 2 reference n - 2
+  std::uint32_t pointer_type;      // writer pointer type
+  const PlanNode* node;            // restorable pointer node, or nullptr
+  bool shared;
+  std::uintptr_t live;             // the reader's current pointer (raw slots with a place)
+  std::uint32_t counter;
+  std::uint32_t object;            // the object (root or heap) holding the slot
+  SlotOutcome outcome;
+};
+
+struct ContainerRecord {
+  std::uint32_t count;
+  const PlanNode* element;  // restorable element node, or a skip node
+  std::uint32_t object;     // the object (root or heap) holding the container
+};
+
+struct HeapRecord {
+  std::uint32_t type;
+  std::uint8_t owner;
+  const PlanNode* node;
+};
+
+struct MappedStep {
+  enum class Kind : std::uint8_t { Offset, Optional, Unique, Variant, Character } kind;
+  std::uint32_t holder_type;  // reader type whose ops apply
+  std::uint64_t value;
+};
+
+struct RefRecord : Reference {
+  std::uint32_t steps_at = 0;
+  bool resolved = false;
+  std::uint32_t reader_type = kNoType;
+  std::uint32_t mapped_at = 0, mapped_count = 0;
+  std::string why;
+};
+
+struct AppliedSlot {
+  std::uint32_t ordinal;
+  std::uint8_t* address;
+};
+
+class Restorer {
+ public:
+  // `dry_run`: a plan of a build known only by its schema (no code): types it can create are
+  // known by their kTypeCreatable flag instead of a Lifecycle; nothing is ever applied.
+  Restorer(const Plan& plan, const std::uint8_t* payload, std::size_t size,
+           Report& report, bool dry_run)
+      : plan_(plan),
+        writer_(*plan.writer),
+        reader_(*plan.reader),
+        in_(*plan.writer, plan.wire_sizes, error_),
+        payload_(payload),
+        size_(size),
+        report_(report),
+        dry_run_(dry_run) {}
+
+  Status check();
+
+  std::size_t value_rejections() const { return value_rejections_; }
+
+  // Capacity of the decoding tables (thread_scratch_bytes).
+  std::size_t scratch_bytes() const;
+
+  void apply();
+
+ private:
+  // ---- errors and report ---------------------------------------------------------------
+  __attribute__((format(printf, 2, 3))) const Status& corrupt(const char* format, ...);
+
+  // A value-level rejection: the reader keeps its value. Concrete paths are capped per field.
+  __attribute__((format(printf, 3, 4), noinline)) void reject_value(std::uint32_t counter,
+                                                                    const char* format, ...);
+
+  void summarise_rejections();
+
+  std::string counter_path(std::uint32_t counter) const;
+
+  bool writing() const { return mode_ == Mode::Stage || mode_ == Mode::Apply; }
+
+  // ---- objects: roots then heap objects ------------------------------------------------
+  bool decode_objects();
+
+  // ---- values --------------------------------------------------------------------------
+  bool value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);
+
+  // Only containers and unique_ptrs nest without a bound in the schema (struct nesting is
+  // bounded when the schema is parsed); the save side refuses the same depth.
+  bool nested(const PlanNode* n, std::uint8_t* dst);
+
+  bool validated_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);
+
+  bool plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);
+
+  // A copy-only value in one step: check it (pass 1), copy it (writing passes). False,
+  // consuming nothing, when the bytes are short or a bool or bit-field value is invalid: the
+  // general path then finds and reports the same error at its place.
+  __attribute__((noinline)) bool copy(const PlanNode* n, std::uint8_t* dst);
+
+  __attribute__((noinline)) bool scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst, const FieldPlan* field);
+
+  bool array(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
+
+  __attribute__((noinline)) bool string(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
+
+  bool container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
+
+  // Pass 2: whether the next element, validated as a whole, failed its validator in pass 1.
+  // Such an element is left out of its container (reported and lossy in pass 1), never
+  // inserted value-initialised.
+  bool refused_by_validator(const PlanNode* e) const {
+    return e->validated && mode_ == Mode::Apply && verdicts_[verdict_cursor_] == 0;
+  }
+
+  // A hostile (or merely old) checkpoint must not make restore allocate more than its own size
+  // justifies: a 4-byte count of empty writer elements must not become 2^20 elements of a
+  // reader type that grew to 64 KiB. Allowed: a fixed 64 MiB, or 16 bytes of this build's
+  // memory per payload byte, whichever is larger (a 256 MiB vector<double> restores).
+  bool allocation_justified(std::uint32_t count, std::uint32_t reader_container) const {
+    constexpr std::uint64_t kAlwaysAllowed = std::uint64_t{64} << 20;
+    constexpr std::uint64_t kBytesPerPayloadByte = 16;
+    const std::uint64_t element_size = reader_.types[reader_.types[reader_container].element].size;
+    const std::uint64_t needed = std::uint64_t{count} * element_size;
+    return needed <= kAlwaysAllowed || needed / kBytesPerPayloadByte <= size_;
+  }
+
+  __attribute__((noinline)) bool pointer(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
+
+  // ---- references ----------------------------------------------------------------------
+  bool decode_references();
+
+  bool check_slots();
+
+  bool inside_reader_root(std::uintptr_t address) const;
+
+  // docs/resolution.md, pointers: a non-null pointer the new build already holds, of the pointee's type,
+  // lends its object to the heap object it now refers to (once; never an object in a root).
+  void claim_live_objects();
+
+  // A heap object is created (or claimed) only when the new build can make it and a pointer
+  // that will really be restored reaches it from a restored root, so nothing is allocated for
+  // pointers in dropped fields. A shared_ptr object must be reached through a shared_ptr: with
+  // no restored owner it would die at once and leave raw pointers to it dangling.
+  void decide_materialisation();
+
+  // Maps a reference's writer steps onto reader steps by name (via the plan), never offsets.
+  void map_reference(RefRecord& ref);
+
+  // Decides every pointer slot; the concrete paths of the few reported ones are rendered by a
+  // third walk rather than remembered for every pointer of a large graph.
+  void decide_slots();
+
+  // ---- pass 2 --------------------------------------------------------------------------
+  void create_heap_objects();
+
+  void* target_of(const RefRecord& ref);
+
+  void fix_up_slots();
+
+  const Plan& plan_;
+  const Schema& writer_;
+  const Schema& reader_;
+  Status error_;
+  PayloadReader in_;
+  const std::uint8_t* payload_;
+  std::size_t size_;
+  Report& report_;
+  const bool dry_run_;
+
+  Mode mode_ = Mode::Check;
+  int depth_ = 0;
+  std::vector<PathFrame> frames_;
+  std::uint32_t counter_ = 0;
+  std::uint32_t heap_counter_ = 0;
+  std::uint32_t current_object_ = 0;
+  std::vector<std::uint32_t> rejection_counts_;
+  std::size_t value_rejections_ = 0;
+  std::size_t outside_count_ = 0;
+
+  std::uint32_t container_ordinal_ = 0;
+  std::uint32_t slot_ordinal_ = 0;
+  std::vector<std::uint8_t> verdicts_;
+  std::size_t verdict_cursor_ = 0;
+
+  std::vector<SlotRecord> slots_;
+  std::unordered_map<std::uint32_t, std::string> explained_;  // slot ordinal -> path
+  std::vector<ContainerRecord> containers_;
+  std::vector<HeapRecord> heap_;
+  std::vector<RefRecord> refs_;
+  std::vector<std::uint32_t> steps_;
+  std::vector<MappedStep> mapped_;
+  std::vector<void*> claimed_;
+  std::vector<bool> materialisable_;
+  std::vector<std::uint32_t> element_needed_;
+
+  std::vector<void*> heap_live_;
+  std::vector<void*> holders_;
+  std::vector<AppliedSlot> applied_slots_;
+  std::vector<std::uint32_t> element_slots_;
+  std::vector<std::vector<void*>> element_addresses_;
+  std::vector<std::uint8_t> string_scratch_;
+};
+
+}  // namespace symcr::detail::restoring
+
+#endif  // SYMCR_SRC_RESTORER_HPP
