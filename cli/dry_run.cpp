@@ -3,6 +3,7 @@
 #include "dry_run.hpp"
 
 #include "engine.hpp"
+#include "report_access.hpp"
 
 namespace symcr::cli {
 
@@ -12,7 +13,7 @@ Report dry_run_restore(const LoadedCheckpoint& checkpoint, const Schema& reader,
   Report report = detail::plan_payload(*checkpoint.writer, checkpoint.writer_hash,
                                        checkpoint.record.payload,
                                        checkpoint.record.payload_size, reader, options);
-  report.set_sequence(checkpoint.record.header.sequence);
+  symcr::detail::ReportAccess::set_sequence(report, checkpoint.record.header.sequence);
   return report;
 }
 

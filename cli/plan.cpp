@@ -14,6 +14,7 @@
 #include "record.hpp"
 #include "schema_file.hpp"
 #include "terminal.hpp"
+#include "report_access.hpp"
 
 namespace symcr::cli {
 namespace {
@@ -60,8 +61,8 @@ int run_plan(const PlanArgs& args) {
   if (program.ok()) {
     report = dry_run_restore(checkpoint, build.schema(), args.strict);
   } else {
-    report.set_status(program);
-    report.set_sequence(checkpoint.record.header.sequence);
+    symcr::detail::ReportAccess::set_status(report, program);
+    symcr::detail::ReportAccess::set_sequence(report, checkpoint.record.header.sequence);
   }
   const std::size_t rejected = report.count(Decision::Rejected);
   std::size_t lossy = 0;

@@ -8,6 +8,7 @@
 
 #include "c_handles.hpp"
 #include "symcr/symcr.hpp"
+#include "report_access.hpp"
 
 static_assert(SYMCR_ERROR_TOO_LARGE == static_cast<int>(symcr::Error::TooLarge),
               "C error codes mirror symcr::Error");
@@ -70,7 +71,7 @@ int symcr_restore_with(const symcr_schema* schema, const char* path, int flags,
                        symcr_report** report) {
   symcr::Report result;
   if (path == nullptr) {
-    result.set_status(symcr::Status(symcr::Error::Io, "no path given"));
+    symcr::detail::ReportAccess::set_status(result, symcr::Status(symcr::Error::Io, "no path given"));
   } else {
     result = schema != nullptr ? symcr::restore(*schema, path, restore_options(flags))
                                : symcr::restore(path, restore_options(flags));
@@ -155,7 +156,7 @@ int symcr_store_save(symcr_store* store) {
 int symcr_store_restore_latest(symcr_store* store, int flags, symcr_report** report) {
   symcr::Report result;
   if (store == nullptr) {
-    result.set_status(symcr::Status(symcr::Error::Io, "no store"));
+    symcr::detail::ReportAccess::set_status(result, symcr::Status(symcr::Error::Io, "no store"));
   } else {
     result = store->store.restore_latest(restore_options(flags));
   }

@@ -7,6 +7,7 @@
 #include "program_schema.hpp"
 #include "record.hpp"
 #include "symcr/symcr.hpp"
+#include "report_access.hpp"
 
 namespace symcr {
 namespace {
@@ -51,12 +52,12 @@ Report restore(const Schema& schema, const char* path, const RestoreOptions& opt
   Status status = detail::read_regular_file(path, kMaxRecordFileSize, bytes);
   if (!status.ok()) {
     Report report;
-    report.set_status(status);
+    detail::ReportAccess::set_status(report, status);
     return report;
   }
   Report report = detail::restore_standalone_record(bytes.data(), bytes.size(), schema, options);
   if (!report.ok() && report.status().error() != Error::Io) {
-    report.set_status(with_path(path, report.status()));
+    detail::ReportAccess::set_status(report, with_path(path, report.status()));
   }
   return report;
 }
@@ -73,7 +74,7 @@ Report restore(const char* path, const RestoreOptions& options) {
   Status status = detail::program_schema(schema);
   if (!status.ok()) {
     Report report;
-    report.set_status(status);
+    detail::ReportAccess::set_status(report, status);
     return report;
   }
   return restore(*schema, path, options);

@@ -47,13 +47,12 @@ Status Encoder::run_pass() {
   for (std::uint32_t r = 0; r < schema_.root_count && ok(); ++r) {
     const RootInfo& root = schema_.roots[r];
     if (root.type >= schema_.type_count || !root.address) {
-      return Status(Error::Unsupported, "root '%s' has no address or an invalid type",
-                    root.name);
+      return Status(Error::Unsupported, "root '%s' has no address or an invalid type", root.name);
     }
     const auto start = reinterpret_cast<std::uintptr_t>(root.address);
     if (track_references_) {
-      add_region(Region{start, start + size_of(root.type), root.type, RegionKind::Object, r,
-                        0, 0, 0, 0});
+      add_region(
+          Region{start, start + size_of(root.type), root.type, RegionKind::Object, r, 0, 0, 0, 0});
     }
   }
   for (std::uint32_t r = 0; r < schema_.root_count && ok(); ++r) {
@@ -172,11 +171,21 @@ void Encoder::put_bytes(const void* data, std::size_t n) {
 // Fixed-size copies compile to single moves; the generic memcpy call would dominate.
 void Encoder::put_scalar(const std::uint8_t* p, std::uint32_t size) {
   switch (size) {
-    case 1: *grow(1) = *p; return;
-    case 2: std::memcpy(grow(2), p, 2); return;
-    case 4: std::memcpy(grow(4), p, 4); return;
-    case 8: std::memcpy(grow(8), p, 8); return;
-    default: put_bytes(p, size); return;
+    case 1:
+      *grow(1) = *p;
+      return;
+    case 2:
+      std::memcpy(grow(2), p, 2);
+      return;
+    case 4:
+      std::memcpy(grow(4), p, 4);
+      return;
+    case 8:
+      std::memcpy(grow(8), p, 8);
+      return;
+    default:
+      put_bytes(p, size);
+      return;
   }
 }
 
@@ -277,7 +286,8 @@ void Encoder::encode(std::uint32_t type_index, const std::uint8_t* p) {
       const std::uint32_t index = ops->index(p);
       put_u32(index);
       if (index == kNoType) return;
-      if (index >= type.alternative_count) return fail_unsupported("a variant index beyond its alternatives");
+      if (index >= type.alternative_count)
+        return fail_unsupported("a variant index beyond its alternatives");
       encode(type.alternatives[index], static_cast<const std::uint8_t*>(ops->get(p)));
       return;
     }
@@ -287,8 +297,8 @@ void Encoder::encode(std::uint32_t type_index, const std::uint8_t* p) {
       if (!pointee) return;
       const auto start = reinterpret_cast<std::uintptr_t>(pointee);
       if (track_regions_) {
-        add_region(Region{start, start + size_of(type.element), type.element, RegionKind::Owned,
-                          0, 0, 0, reinterpret_cast<std::uintptr_t>(p), type_index});
+        add_region(Region{start, start + size_of(type.element), type.element, RegionKind::Owned, 0,
+                          0, 0, reinterpret_cast<std::uintptr_t>(p), type_index});
       }
       descend_into(type.element, static_cast<const std::uint8_t*>(pointee));
       return;
@@ -304,8 +314,10 @@ void Encoder::encode(std::uint32_t type_index, const std::uint8_t* p) {
 
 void Encoder::descend_into(std::uint32_t type, const std::uint8_t* p) {
   if (++depth_ > kMaxValueNesting) {
-    fail_unsupported("nesting deeper than %d containers or unique_ptrs (use raw pointers "
-                     "or containers for long chains)", kMaxValueNesting);
+    fail_unsupported(
+        "nesting deeper than %d containers or unique_ptrs (use raw pointers "
+        "or containers for long chains)",
+        kMaxValueNesting);
   } else {
     encode(type, p);
   }
@@ -333,8 +345,7 @@ void Encoder::encode_bit_field(const FieldInfo& field, const std::uint8_t* p) {
       field.bit_width == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << field.bit_width) - 1;
   std::uint64_t value = static_cast<std::uint64_t>(raw >> field.bit_offset) & mask;
   const TypeInfo& integer = type.kind == Kind::Enum ? types_[type.element] : type;
-  if (integer.kind == Kind::Int && field.bit_width < 64 &&
-      (value >> (field.bit_width - 1)) & 1u) {
+  if (integer.kind == Kind::Int && field.bit_width < 64 && (value >> (field.bit_width - 1)) & 1u) {
     value |= ~mask;  // sign-extend
   }
   if (type.kind == Kind::Bool) value = value != 0;
@@ -412,8 +423,7 @@ void Encoder::encode_reference(const TypeInfo& type, const void* target, bool sh
   }
   if (entry == kOutside) {
     if (shared) {
-      return fail_unsupported("a shared_ptr into static storage or the stack (object %p)",
-                              target);
+      return fail_unsupported("a shared_ptr into static storage or the stack (object %p)", target);
     }
     return put_u32(1);
   }
@@ -421,8 +431,7 @@ void Encoder::encode_reference(const TypeInfo& type, const void* target, bool sh
   put_u32(entry + 2);
 }
 
-void Encoder::fail_unsupported(const char* format,
-                                                                            ...) {
+void Encoder::fail_unsupported(const char* format, ...) {
   if (!ok()) return;
   char buffer[200];
   va_list args;
@@ -436,8 +445,8 @@ void Encoder::fail_unsupported(const char* format,
 
 namespace {
 
-using encoding::EncodeScratch;
 using encoding::Encoder;
+using encoding::EncodeScratch;
 
 EncodeScratch& thread_encode_scratch() {
   thread_local EncodeScratch scratch;

@@ -47,17 +47,18 @@ std::uint32_t Encoder::new_heap_object(const PointerTarget& reference) {
     if (!dynamic_type(start, type)) {
       char candidates[80];
       list_dynamic_types(reference.type, candidates, sizeof candidates);
-      fail_unsupported("a pointer to polymorphic class %s at %p: its object is no member or "
-                       "element of the state, and not of a class this build can create (%s)",
-                       types_[reference.type].name,
-                       reinterpret_cast<const void*>(reference.address), candidates);
+      fail_unsupported(
+          "a pointer to polymorphic class %s at %p: its object is no member or "
+          "element of the state, and not of a class this build can create (%s)",
+          types_[reference.type].name, reinterpret_cast<const void*>(reference.address),
+          candidates);
       return 0;
     }
   }
   const std::uint32_t object = schema_.root_count + static_cast<std::uint32_t>(s_.heap.size());
-  const std::uint32_t region = add_region(Region{start, start + size_of(type), type,
-                                                 RegionKind::Object, object, 0, 0, 0, 0},
-                                          /*heap_object=*/true);
+  const std::uint32_t region =
+      add_region(Region{start, start + size_of(type), type, RegionKind::Object, object, 0, 0, 0, 0},
+                 /*heap_object=*/true);
   if (!ok()) return region;
   put_u32(type);
   s_.heap.push_back(HeapObject{region, pos_});
@@ -84,8 +85,7 @@ bool Encoder::dynamic_type(std::uintptr_t& address, std::uint32_t& type) const {
   return false;
 }
 
-void Encoder::list_dynamic_types(std::uint32_t base, char* out,
-                                              std::size_t size) const {
+void Encoder::list_dynamic_types(std::uint32_t base, char* out, std::size_t size) const {
   std::size_t used = 0;
   out[0] = '\0';
   std::vector<std::uint32_t> pending;
@@ -108,15 +108,14 @@ void Encoder::check_shared_targets() {
   for (const PointerTarget& reference : s_.references) {
     if (!reference.shared) continue;
     const Region& region = s_.regions[reference.region];
-    const bool whole_heap_object = region.kind == RegionKind::Object &&
-                                   region.object >= schema_.root_count &&
-                                   region.start == reference.address &&
-                                   region.type == reference.type;
+    const bool whole_heap_object =
+        region.kind == RegionKind::Object && region.object >= schema_.root_count &&
+        region.start == reference.address && region.type == reference.type;
     if (!whole_heap_object) {
-      return fail_unsupported("a shared_ptr<%s> whose object (%p) lies inside another "
-                              "checkpointed object",
-                              types_[reference.type].name,
-                              reinterpret_cast<const void*>(reference.address));
+      return fail_unsupported(
+          "a shared_ptr<%s> whose object (%p) lies inside another "
+          "checkpointed object",
+          types_[reference.type].name, reinterpret_cast<const void*>(reference.address));
     }
     out_[s_.heap[region.object - schema_.root_count].owner_byte] = 1;
   }
@@ -126,7 +125,7 @@ void Encoder::check_shared_targets() {
 // Descends from an object of `type` at `base` to the subobject of `target_type` at
 // `target`, appending steps; backtracks where several fields start at the same address.
 bool Encoder::descend(std::uint32_t type_index, std::uintptr_t base, std::uintptr_t target,
-             std::uint32_t target_type) {
+                      std::uint32_t target_type) {
   if (target == base && type_index == target_type) return true;
   const TypeInfo& type = types_[type_index];
   switch (type.kind) {
@@ -151,8 +150,8 @@ bool Encoder::descend(std::uint32_t type_index, std::uintptr_t base, std::uintpt
       return false;
     }
     case Kind::Optional: {
-      const void* value = static_cast<const OptionalOps*>(type.ops)->get(
-          reinterpret_cast<const void*>(base));
+      const void* value =
+          static_cast<const OptionalOps*>(type.ops)->get(reinterpret_cast<const void*>(base));
       const auto start = reinterpret_cast<std::uintptr_t>(value);
       if (!value || target < start || target >= start + size_of(type.element)) return false;
       s_.steps.push_back(0);
@@ -194,14 +193,15 @@ bool Encoder::descend(std::uint32_t type_index, std::uintptr_t base, std::uintpt
 
 // Fills s_.steps and `base` for the subobject of `type` at `address` inside `region_index`.
 bool Encoder::resolve(std::uint32_t region_index, std::uintptr_t address, std::uint32_t type,
-             Base& base, int depth) {
+                      Base& base, int depth) {
   const Region region = s_.regions[region_index];
   switch (region.kind) {
     case RegionKind::Object:
       base = Base{0, region.object, 0};
       return descend(region.type, region.start, address, type);
     case RegionKind::ContainerRun: {
-      const std::uint32_t offset = static_cast<std::uint32_t>((address - region.start) / region.stride);
+      const std::uint32_t offset =
+          static_cast<std::uint32_t>((address - region.start) / region.stride);
       base = Base{1, region.object, region.first_index + offset};
       return descend(region.type, region.start + std::uintptr_t{offset} * region.stride, address,
                      type);
@@ -240,11 +240,11 @@ void Encoder::write_reference(std::size_t i) {
     }
     char where[120];
     describe(s_.regions[reference.region], where, sizeof where);
-    return fail_unsupported("a pointer to %s at %p: it lies inside %s but not at a %s "
-                            "subobject",
-                            types_[reference.type].name,
-                            reinterpret_cast<const void*>(reference.address), where,
-                            types_[reference.type].name);
+    return fail_unsupported(
+        "a pointer to %s at %p: it lies inside %s but not at a %s "
+        "subobject",
+        types_[reference.type].name, reinterpret_cast<const void*>(reference.address), where,
+        types_[reference.type].name);
   }
   if (s_.steps.size() > 0xFFFF) return fail_unsupported("a pointer nested 65536 levels deep");
   put_u8(base.kind);

@@ -21,7 +21,7 @@ namespace symcr::detail::encoding {
 
 constexpr std::uint32_t kNoRegion = 0xFFFFFFFFu;
 constexpr std::uint32_t kOutside = 0xFFFFFFFEu;  // memo value: target outside the state
-constexpr unsigned kBucketShift = 6;              // region index granularity: 64 bytes
+constexpr unsigned kBucketShift = 6;             // region index granularity: 64 bytes
 constexpr std::uintptr_t kLargeRegion = std::uintptr_t{64} << 10;  // indexed in a list instead
 
 enum class RegionKind : std::uint8_t {
@@ -45,9 +45,9 @@ struct Region {
 // A distinct (address, pointee type) a saved pointer holds: one reference-table entry.
 struct PointerTarget {
   std::uintptr_t address;
-  std::uint32_t type;     // pointee type
-  std::uint32_t region;   // after classification
-  bool shared;            // some shared_ptr holds this target
+  std::uint32_t type;    // pointee type
+  std::uint32_t region;  // after classification
+  bool shared;           // some shared_ptr holds this target
 };
 
 struct HeapObject {
@@ -74,7 +74,7 @@ struct EncodeScratch {
   std::vector<PointerTarget> references;
   std::vector<HeapObject> heap;
   std::vector<std::uint32_t> steps;
-  std::vector<Span> spans;  // overlap check of the fast pass
+  std::vector<Span> spans;          // overlap check of the fast pass
   std::vector<Span> spans_scratch;  // its radix sort's other buffer
   ProcessMemory memory;
 };
@@ -155,7 +155,8 @@ class Encoder {
   __attribute__((noinline)) void encode_container(const TypeInfo& type, const std::uint8_t* p);
 
   // ---- references ----------------------------------------------------------------------
-  __attribute__((noinline)) void encode_reference(const TypeInfo& type, const void* target, bool shared);
+  __attribute__((noinline)) void encode_reference(const TypeInfo& type, const void* target,
+                                                  bool shared);
 
   bool is_outside(std::uintptr_t address);
 
@@ -204,8 +205,8 @@ class Encoder {
   };
 
   // Fills s_.steps and `base` for the subobject of `type` at `address` inside `region_index`.
-  bool resolve(std::uint32_t region_index, std::uintptr_t address, std::uint32_t type,
-               Base& base, int depth);
+  bool resolve(std::uint32_t region_index, std::uintptr_t address, std::uint32_t type, Base& base,
+               int depth);
 
   void write_reference(std::size_t i);
 
@@ -222,7 +223,7 @@ class Encoder {
   const bool track_references_;
   const SchemaFacts& facts_;
   bool memory_refreshed_ = false;
-  bool exact_ = false;              // heap objects indexed too (the second pass)
+  bool exact_ = false;  // heap objects indexed too (the second pass)
   bool overlap_suspected_ = false;
   std::uint32_t container_ordinal_ = 0;
   int depth_ = 0;

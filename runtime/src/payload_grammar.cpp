@@ -33,8 +33,14 @@ class SizeFacts {
     std::uint64_t least = 0;
     bool fixed = true;
     switch (type.kind) {
-      case Kind::Bool: least = 1; break;
-      case Kind::Int: case Kind::UInt: case Kind::Float: case Kind::Enum: case Kind::Union:
+      case Kind::Bool:
+        least = 1;
+        break;
+      case Kind::Int:
+      case Kind::UInt:
+      case Kind::Float:
+      case Kind::Enum:
+      case Kind::Union:
         least = type.size;
         break;
       case Kind::Struct:
@@ -49,12 +55,16 @@ class SizeFacts {
         least = saturating_multiply(out_.least[type.element], type.count);
         fixed = out_.fixed[type.element] != WireSizes::kVariable;
         break;
-      case Kind::String: case Kind::Container: case Kind::Variant: case Kind::Pointer:
+      case Kind::String:
+      case Kind::Container:
+      case Kind::Variant:
+      case Kind::Pointer:
       case Kind::SharedPtr:
         least = 4;
         fixed = type.kind == Kind::Pointer || type.kind == Kind::SharedPtr;
         break;
-      case Kind::Optional: case Kind::UniquePtr:
+      case Kind::Optional:
+      case Kind::UniquePtr:
         least = 1;
         fixed = false;
         break;

@@ -153,8 +153,8 @@ class PayloadReader {
   // is checked against the type it steps into and passed to `on_step(step)`.
   bool reference_count(std::uint32_t& count);
   template <typename ObjectType, typename ElementType, typename OnStep>
-  bool reference(std::uint32_t i, Reference& ref, ObjectType object_type,
-                 ElementType element_type, OnStep on_step) {
+  bool reference(std::uint32_t i, Reference& ref, ObjectType object_type, ElementType element_type,
+                 OnStep on_step) {
     if (!in_.read(ref.base) || !in_.read(ref.a)) return truncated("reference");
     if (ref.base > 1) return invalid_reference(i, "has base kind", ref.base);
     if ((ref.base == 1 && !in_.read(ref.b)) || !in_.read(ref.step_count)) {
@@ -220,7 +220,11 @@ bool walk_value(PayloadReader& in, std::uint32_t type_index, int depth, Sink& si
     return in.skip(in.sizes().fixed[type_index]);  // its bools are not looked at
   }
   switch (type.kind) {
-    case Kind::Bool: case Kind::Int: case Kind::UInt: case Kind::Float: case Kind::Enum:
+    case Kind::Bool:
+    case Kind::Int:
+    case Kind::UInt:
+    case Kind::Float:
+    case Kind::Enum:
     case Kind::Union:
       if (!in.scalar(type, bytes)) return false;
       sink.leaf(type, bytes, type.size);

@@ -39,7 +39,8 @@ void Planner::run() {
     const TypeInfo& type = writer_.types[t];
     if ((type.kind == Kind::Pointer || type.kind == Kind::SharedPtr) &&
         type.element < writer_.type_count && !plan_.heap_nodes[type.element]) {
-      plan_.heap_nodes[type.element] = node(type.element, find_reader_type(writer_.types[type.element]));
+      plan_.heap_nodes[type.element] =
+          node(type.element, find_reader_type(writer_.types[type.element]));
     }
   }
   // A heap object behind a pointer to a polymorphic base is saved as its dynamic type.
@@ -54,8 +55,8 @@ void Planner::run() {
   for (PlanNode& n : plan_.nodes) compute_copy(n);
   compute_copy_only_payload();
   if (too_deep_) {
-    plan_.status = Status(Error::Corrupt, "invalid schema: types nest deeper than %d levels",
-                          kMaxPlanDepth);
+    plan_.status =
+        Status(Error::Corrupt, "invalid schema: types nest deeper than %d levels", kMaxPlanDepth);
   }
 }
 
@@ -73,7 +74,8 @@ void Planner::find_dynamic_bases() {
 // ---- matching ------------------------------------------------------------------------
 std::uint32_t Planner::find_reader_type(const TypeInfo& writer) const {
   for (std::uint32_t t = 0; t < reader_.type_count; ++t) {
-    if (same_name(reader_.types[t].name, writer.name) && reader_.types[t].kind == writer.kind) return t;
+    if (same_name(reader_.types[t].name, writer.name) && reader_.types[t].kind == writer.kind)
+      return t;
   }
   for (std::uint32_t t = 0; t < reader_.type_count; ++t) {
     if (names_match(writer, reader_.types[t])) return t;
@@ -90,8 +92,9 @@ void Planner::plan_roots() {
   for (int pass = 0; pass < 2; ++pass) {
     for (std::uint32_t wr = 0; wr < writer_.root_count; ++wr) {
       for (std::uint32_t rr = 0; rr < reader_.root_count && matches[wr] == kNoType; ++rr) {
-        const bool named = pass == 0 ? same_name(reader_.roots[rr].name, writer_.roots[wr].name)
-                                     : in_aliases(writer_.roots[wr].name, reader_.roots[rr].renamed_from);
+        const bool named = pass == 0
+                               ? same_name(reader_.roots[rr].name, writer_.roots[wr].name)
+                               : in_aliases(writer_.roots[wr].name, reader_.roots[rr].renamed_from);
         if (named && !taken[rr]) {
           matches[wr] = rr;
           taken[rr] = true;
@@ -109,8 +112,8 @@ void Planner::plan_roots() {
     if (match != kNoType && root.node->action != Action::Reject) any_restorable = true;
   }
   if (writer_.root_count > 0 && !any_restorable) {
-    plan_.status = Status(Error::Incompatible,
-                          "no root of the checkpoint can be restored into this build");
+    plan_.status =
+        Status(Error::Incompatible, "no root of the checkpoint can be restored into this build");
   }
 }
 
@@ -123,8 +126,8 @@ std::uint32_t Planner::new_counter(std::string path) {
 
 namespace {
 
-using planning::Planner;
 using planning::in_aliases;
+using planning::Planner;
 using planning::same_name;
 
 struct CachedPlan {
@@ -174,8 +177,7 @@ std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_
   // The plan keeps its own copy of the writer schema (a round trip through the wire form) so
   // that cached plans never point into a caller's buffers.
   serialise_blob(writer, plan->writer_blob);
-  status = parse_schema(plan->writer_blob.data, plan->writer_blob.size,
-                        plan->writer_copy);
+  status = parse_schema(plan->writer_blob.data, plan->writer_blob.size, plan->writer_copy);
   if (!status.ok()) return nullptr;
   plan->writer = &plan->writer_copy.schema();
   plan->reader = &reader;

@@ -24,14 +24,13 @@ void Planner::add_run(PlanNode& n, std::uint64_t wire, std::uint64_t dst, std::u
       return;
     }
   }
-  n.copy_runs.push_back(CopyRun{static_cast<std::uint32_t>(wire),
-                                static_cast<std::uint32_t>(dst),
+  n.copy_runs.push_back(CopyRun{static_cast<std::uint32_t>(wire), static_cast<std::uint32_t>(dst),
                                 static_cast<std::uint32_t>(length)});
 }
 
 // Appends `child`'s program at (wire, dst); false when `n` grows past the limits.
 bool Planner::append_copy(PlanNode& n, const PlanNode& child, std::uint64_t wire,
-                        std::uint64_t dst) {
+                          std::uint64_t dst) {
   if (wire + child.copy_wire > kMaxCopyWire || dst + kMaxCopyWire > 0xFFFFFFFFu) return false;
   for (std::uint32_t offset : child.copy_bools) {
     if (n.copy_bools.size() >= kMaxCopyBools) return false;

@@ -51,8 +51,13 @@ bool Planner::is_flat(std::uint32_t t, int depth) const {
   if (depth > 64) return false;
   const TypeInfo& type = reader_.types[t];
   switch (type.kind) {
-    case Kind::Bool: case Kind::Int: case Kind::UInt: case Kind::Float: case Kind::Enum:
-    case Kind::Union: case Kind::Pointer:
+    case Kind::Bool:
+    case Kind::Int:
+    case Kind::UInt:
+    case Kind::Float:
+    case Kind::Enum:
+    case Kind::Union:
+    case Kind::Pointer:
       return true;
     case Kind::Array:
       return is_flat(type.element, depth + 1);
@@ -80,7 +85,10 @@ void Planner::fill_skip(PlanNode& n) {
         n.fields[f].counter = 0;
       }
       break;
-    case Kind::Array: case Kind::Container: case Kind::Optional: case Kind::UniquePtr:
+    case Kind::Array:
+    case Kind::Container:
+    case Kind::Optional:
+    case Kind::UniquePtr:
       n.element = node(type.element, kNoType);
       n.element_skip = n.element;
       break;
@@ -116,7 +124,8 @@ void Planner::fill(PlanNode& n) {
                          " -> " + kind_name(rt.kind) + " " + rt.name);
   }
   switch (wt.kind) {
-    case Kind::Struct: return fill_struct(n, wt, rt);
+    case Kind::Struct:
+      return fill_struct(n, wt, rt);
     case Kind::Union:
       if (wt.size != rt.size) {
         return reject(n, "union size changed: " + std::to_string(wt.size) + " -> " +
@@ -133,19 +142,20 @@ void Planner::fill(PlanNode& n) {
       if (wt.count > rt.count) {
         n.decision = Decision::Converted;
         n.lossy = true;
-        n.detail = "array shrinks " + std::to_string(wt.count) + " -> " +
-                   std::to_string(rt.count) + ": trailing elements dropped";
+        n.detail = "array shrinks " + std::to_string(wt.count) + " -> " + std::to_string(rt.count) +
+                   ": trailing elements dropped";
       } else if (wt.count < rt.count) {
         n.decision = Decision::Converted;
-        n.detail = "array grows " + std::to_string(wt.count) + " -> " +
-                   std::to_string(rt.count) + ": new elements keep this build's values";
+        n.detail = "array grows " + std::to_string(wt.count) + " -> " + std::to_string(rt.count) +
+                   ": new elements keep this build's values";
       }
       return inherit_element(n);
     }
     case Kind::String: {
       n.action = Action::String;
       n.element = node(wt.element, rt.element);  // the characters, for pointers into them
-      const std::uint32_t from = writer_.types[wt.element].size, to = reader_.types[rt.element].size;
+      const std::uint32_t from = writer_.types[wt.element].size,
+                          to = reader_.types[rt.element].size;
       if (from != to) {
         // Re-encoded per value; a value that is not valid in its encoding is rejected.
         n.decision = Decision::Converted;
@@ -268,16 +278,14 @@ void Planner::fill_scalar(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
       n.enum_map.push_back(mapping);
     }
     if (rt.kind == Kind::Enum && rt.enumerator_count != wt.enumerator_count) n.identical = false;
-    if (rt.kind == Kind::Enum &&
-        writer_.types[wt.element].kind != reader_.types[rt.element].kind) {
+    if (rt.kind == Kind::Enum && writer_.types[wt.element].kind != reader_.types[rt.element].kind) {
       n.identical = false;
     }
   }
   // Sorted by writer value: restore looks values up by binary search.
-  std::sort(n.enum_map.begin(), n.enum_map.end(),
-            [](const EnumMapping& a, const EnumMapping& b) {
-              return a.writer_value < b.writer_value;
-            });
+  std::sort(n.enum_map.begin(), n.enum_map.end(), [](const EnumMapping& a, const EnumMapping& b) {
+    return a.writer_value < b.writer_value;
+  });
   collapse_enum_aliases(n.enum_map);
   if (n.identical) return;
   n.decision = Decision::Converted;
@@ -349,7 +357,7 @@ void Planner::fill_struct(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
 }
 
 std::uint32_t Planner::match_field(const TypeInfo& wt, std::uint32_t wf, const TypeInfo& rt,
-                          const std::vector<bool>& used) const {
+                                   const std::vector<bool>& used) const {
   const FieldInfo& writer = wt.fields[wf];
   const bool base = (writer.flags & kFieldBase) != 0;
   for (std::uint32_t f = 0; f < rt.field_count; ++f) {
@@ -381,15 +389,17 @@ bool Planner::same_member(const char* writer, const char* reader) {
   return same_name(writer, reader) || (is_anonymous_member(writer) && is_anonymous_member(reader));
 }
 
-std::uint32_t Planner::match_anonymous_member(const TypeInfo& wt, std::uint32_t wf, const TypeInfo& rt,
-                                     const std::vector<bool>& used) const {
+std::uint32_t Planner::match_anonymous_member(const TypeInfo& wt, std::uint32_t wf,
+                                              const TypeInfo& rt,
+                                              const std::vector<bool>& used) const {
   const TypeInfo& member = writer_.types[wt.fields[wf].type];
   auto anonymous_of_kind = [](const Schema& schema, const FieldInfo& field, Kind kind) {
     return is_anonymous_member(field.name) && schema.types[field.type].kind == kind;
   };
   if (member.kind == Kind::Union) {
     std::uint32_t rank = 0;
-    for (std::uint32_t f = 0; f < wf; ++f) rank += anonymous_of_kind(writer_, wt.fields[f], Kind::Union);
+    for (std::uint32_t f = 0; f < wf; ++f)
+      rank += anonymous_of_kind(writer_, wt.fields[f], Kind::Union);
     for (std::uint32_t f = 0; f < rt.field_count; ++f) {
       if (!anonymous_of_kind(reader_, rt.fields[f], Kind::Union)) continue;
       if (rank-- == 0) return used[f] ? kNoType : f;

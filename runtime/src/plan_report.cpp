@@ -51,16 +51,22 @@ bool Planner::changes_values(const PlanNode& n) const {
   const TypeInfo& wt = writer_.types[n.writer];
   const TypeInfo& rt = reader_.types[n.reader];
   switch (n.action) {
-    case Action::Skip: case Action::Reject: return true;
-    case Action::Scalar: return !n.identical;
-    case Action::Union: case Action::Pointer: case Action::SharedPtr: return false;
-    case Action::String: return n.decision != Decision::Restored;
+    case Action::Skip:
+    case Action::Reject:
+      return true;
+    case Action::Scalar:
+      return !n.identical;
+    case Action::Union:
+    case Action::Pointer:
+    case Action::SharedPtr:
+      return false;
+    case Action::String:
+      return n.decision != Decision::Restored;
     case Action::Struct: {
       if (wt.field_count != rt.field_count) return true;
       for (const FieldPlan& field : n.fields) {
         if (field.reader_field == kNoType ||
-            !same_member(field.name, rt.fields[field.reader_field].name) ||
-            differs(field.node)) {
+            !same_member(field.name, rt.fields[field.reader_field].name) || differs(field.node)) {
           return true;
         }
       }
@@ -68,7 +74,9 @@ bool Planner::changes_values(const PlanNode& n) const {
     }
     case Action::Array:
       return wt.count != n.reader_count || differs(n.element);
-    case Action::Container: case Action::Optional: case Action::UniquePtr:
+    case Action::Container:
+    case Action::Optional:
+    case Action::UniquePtr:
       return differs(n.element);
     case Action::Variant:
       if (wt.alternative_count != rt.alternative_count) return true;
@@ -214,7 +222,8 @@ void Planner::expand(const PlanNode* n, const std::string& path) {
         std::string detail = field.node->detail;
         if (!same_member(reader.name, writer.name)) {
           if (decision != Decision::Rejected) decision = Decision::Converted;
-          detail = std::string("renamed from ") + writer.name + (detail.empty() ? "" : "; ") + detail;
+          detail =
+              std::string("renamed from ") + writer.name + (detail.empty() ? "" : "; ") + detail;
         }
         const bool own_lossy = field.node->lossy && field.node->action != Action::Struct;
         note_migration(field.node, decision, detail);

@@ -18,7 +18,9 @@
 
 namespace symcr::detail::planning {
 
-inline bool same_name(const char* a, const char* b) { return std::strcmp(a ? a : "", b ? b : "") == 0; }
+inline bool same_name(const char* a, const char* b) {
+  return std::strcmp(a ? a : "", b ? b : "") == 0;
+}
 
 inline bool in_aliases(const char* name, const char* const* aliases) {
   for (std::size_t i = 0; aliases && aliases[i]; ++i) {
@@ -135,8 +137,8 @@ class Planner {
   static void add_run(PlanNode& n, std::uint64_t wire, std::uint64_t dst, std::uint64_t length);
 
   // Appends `child`'s program at (wire, dst); false when `n` grows past the limits.
-  __attribute__((noinline, cold)) static bool append_copy(PlanNode& n, const PlanNode& child, std::uint64_t wire,
-                          std::uint64_t dst);
+  __attribute__((noinline, cold)) static bool append_copy(PlanNode& n, const PlanNode& child,
+                                                          std::uint64_t wire, std::uint64_t dst);
 
   // An integer or bool bit-field whose writer and reader types are identical, at `wire`.
   bool add_bit_field(PlanNode& n, const FieldPlan& field, std::uint64_t wire);

@@ -14,6 +14,7 @@
 
 #include "c_handles.hpp"
 #include "symcr/symcr.hpp"
+#include "report_access.hpp"
 
 extern "C" void symcr_on_restore_point(const struct symcr_point* point,
                                        struct symcr_report* report) __attribute__((weak));
@@ -101,7 +102,7 @@ bool restore(PointState& s, symcr_point& point, symcr_report& report) {
     options.accept_other_program = (point.restore_flags & SYMCR_RESTORE_ACCEPT_OTHER_PROGRAM) != 0;
     report.report = s.store.restore_latest(options);
   } else {
-    report.report.set_status(opened);
+    symcr::detail::ReportAccess::set_status(report.report, opened);
   }
   if (report.report.ok()) {
     std::fprintf(stderr, "symcr: %s: restored checkpoint #%llu of %s\n", point.inserted_at,

@@ -9,6 +9,7 @@
 #include "engine.hpp"
 #include "little_endian.hpp"
 #include "plan.hpp"
+#include "report_access.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -173,13 +174,13 @@ Report restore_record(const RecordView& record, const Schema& writer, std::uint6
                                        reader.program, options.accept_other_program);
   if (!program.ok()) {
     Report report;
-    report.set_status(program);
-    report.set_sequence(record.header.sequence);
+    ReportAccess::set_status(report, program);
+    ReportAccess::set_sequence(report, record.header.sequence);
     return report;
   }
   Report report = restore_payload(writer, writer_hash, record.payload, record.payload_size,
                                   reader, options);
-  report.set_sequence(record.header.sequence);
+  ReportAccess::set_sequence(report, record.header.sequence);
   return report;
 }
 
@@ -207,7 +208,7 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
                     static_cast<unsigned long long>(record.header.schema_hash));
   }
   if (!status.ok()) {
-    report.set_status(status);
+    ReportAccess::set_status(report, status);
     return report;
   }
   // Written by this very build (the usual case): the inline schema is byte for byte the
@@ -222,7 +223,7 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
   ParsedSchema writer;
   status = parse_schema(record.schema, record.header.schema_size, writer);
   if (!status.ok()) {
-    report.set_status(status);
+    ReportAccess::set_status(report, status);
     return report;
   }
   return restore_record(record, writer.schema(), record.header.schema_hash, reader, options);

@@ -19,6 +19,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "report_access.hpp"
 #include "restorer.hpp"
 
 namespace symcr::detail {
@@ -35,7 +36,6 @@ thread_local std::size_t last_restore_scratch = 0;
 }  // namespace
 
 namespace restoring {
-
 
 Status Restorer::check() {
   mode_ = Mode::Check;
@@ -55,16 +55,14 @@ Status Restorer::check() {
 
 // Capacity of the decoding tables (thread_scratch_bytes).
 std::size_t Restorer::scratch_bytes() const {
-  std::size_t bytes = bytes_of(frames_) + bytes_of(rejection_counts_) + bytes_of(verdicts_) +
-                      bytes_of(slots_) + bytes_of(containers_) + bytes_of(heap_) +
-                      bytes_of(refs_) + bytes_of(steps_) + bytes_of(mapped_) +
-                      bytes_of(claimed_) + materialisable_.capacity() / 8 +
-                      bytes_of(element_needed_) + bytes_of(heap_live_) + bytes_of(holders_) +
-                      bytes_of(applied_slots_) + bytes_of(element_slots_) +
-                      bytes_of(element_addresses_) + bytes_of(string_scratch_) +
-                      explained_.bucket_count() * sizeof(void*) +
-                      explained_.size() * (sizeof(std::pair<std::uint32_t, std::string>) +
-                                           2 * sizeof(void*));
+  std::size_t bytes =
+      bytes_of(frames_) + bytes_of(rejection_counts_) + bytes_of(verdicts_) + bytes_of(slots_) +
+      bytes_of(containers_) + bytes_of(heap_) + bytes_of(refs_) + bytes_of(steps_) +
+      bytes_of(mapped_) + bytes_of(claimed_) + materialisable_.capacity() / 8 +
+      bytes_of(element_needed_) + bytes_of(heap_live_) + bytes_of(holders_) +
+      bytes_of(applied_slots_) + bytes_of(element_slots_) + bytes_of(element_addresses_) +
+      bytes_of(string_scratch_) + explained_.bucket_count() * sizeof(void*) +
+      explained_.size() * (sizeof(std::pair<std::uint32_t, std::string>) + 2 * sizeof(void*));
   for (const std::vector<void*>& addresses : element_addresses_) bytes += bytes_of(addresses);
   return bytes;
 }
@@ -114,7 +112,8 @@ bool restore_copy_only(const Plan& plan, const std::uint8_t* payload, std::size_
   if (!apply) return true;
   at = payload;
   for (const RootPlan& root : plan.roots) {
-    copy_only_write(*root.node, at, static_cast<std::uint8_t*>(reader.roots[root.reader_root].address));
+    copy_only_write(*root.node, at,
+                    static_cast<std::uint8_t*>(reader.roots[root.reader_root].address));
     at += root.node->copy_wire;
   }
   return true;
@@ -127,19 +126,19 @@ Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::u
   Status status;
   std::shared_ptr<const Plan> plan = plan_for(writer, writer_hash, reader, status);
   if (!plan) {
-    report.set_status(status);
+    ReportAccess::set_status(report, status);
     return report;
   }
   // The schema-level entries depend only on the plan: shared with it, copied only if a
   // value-level entry is added.
-  report.set_shared_entries(
-      std::shared_ptr<const std::vector<ReportEntry>>(plan, &plan->entries));
+  ReportAccess::set_shared_entries(
+      report, std::shared_ptr<const std::vector<ReportEntry>>(plan, &plan->entries));
   if (!plan->status.ok()) {
-    report.set_status(plan->status);
+    ReportAccess::set_status(report, plan->status);
     return report;
   }
   if (!payload && size) {
-    report.set_status(Status(Error::Corrupt, "invalid payload: no bytes"));
+    ReportAccess::set_status(report, Status(Error::Corrupt, "invalid payload: no bytes"));
     return report;
   }
   const bool strict_refusal = options.strict && plan->any_lossy;
@@ -153,7 +152,7 @@ Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::u
   if (!plan_only) {
     status = restorer.check();
     if (!status.ok()) {
-      report.set_status(status);
+      ReportAccess::set_status(report, status);
       return report;
     }
     value_rejections = restorer.value_rejections();
@@ -166,10 +165,11 @@ Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::u
         break;
       }
     }
-    report.set_status(Status(Error::Strict, "strict mode: lossy restore refused (first: %s: %s %s)",
-                             first ? first->path.c_str() : "?",
-                             first ? decision_name(first->decision) : "",
-                             first ? first->detail.c_str() : ""));
+    ReportAccess::set_status(
+        report,
+        Status(Error::Strict, "strict mode: lossy restore refused (first: %s: %s %s)",
+               first ? first->path.c_str() : "?", first ? decision_name(first->decision) : "",
+               first ? first->detail.c_str() : ""));
     return report;
   }
   if (apply) restorer.apply();
@@ -186,9 +186,8 @@ ScratchBytes thread_scratch_bytes() {
   return bytes;
 }
 
-Report restore_payload(const Schema& writer, std::uint64_t writer_hash,
-                       const std::uint8_t* payload, std::size_t size, const Schema& reader,
-                       const RestoreOptions& options) {
+Report restore_payload(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,
+                       std::size_t size, const Schema& reader, const RestoreOptions& options) {
   return run_restore(writer, writer_hash, payload, size, reader, options, false, true);
 }
 

@@ -11,9 +11,9 @@
 #include <unordered_set>
 #include <vector>
 
-#include "schema_facts.hpp"
-
+#include "report_access.hpp"
 #include "restorer.hpp"
+#include "schema_facts.hpp"
 
 namespace symcr::detail::restoring {
 
@@ -46,10 +46,13 @@ bool Restorer::check_slots() {
   for (const SlotRecord& slot : slots_) {
     if (slot.code < 2) continue;
     const std::uint32_t index = slot.code - 2;
-    if (index >= refs_.size()) return corrupt("pointer to reference %u of %zu", index, refs_.size()).ok();
+    if (index >= refs_.size())
+      return corrupt("pointer to reference %u of %zu", index, refs_.size()).ok();
     const RefRecord& ref = refs_[index];
     if (ref.target != writer_.types[slot.pointer_type].element) {
-      return corrupt("a %s refers to a %s", writer_.types[slot.pointer_type].name, writer_.types[ref.target].name).ok();
+      return corrupt("a %s refers to a %s", writer_.types[slot.pointer_type].name,
+                     writer_.types[ref.target].name)
+          .ok();
     }
     if (slot.shared && (ref.base != 0 || ref.a < writer_.root_count || ref.step_count != 0 ||
                         heap_[ref.a - writer_.root_count].owner != 1)) {
@@ -62,13 +65,14 @@ bool Restorer::check_slots() {
 bool Restorer::inside_reader_root(std::uintptr_t address) const {
   for (std::uint32_t r = 0; r < reader_.root_count; ++r) {
     const auto start = reinterpret_cast<std::uintptr_t>(reader_.roots[r].address);
-    if (address >= start && address < start + reader_.types[reader_.roots[r].type].size) return true;
+    if (address >= start && address < start + reader_.types[reader_.roots[r].type].size)
+      return true;
   }
   return false;
 }
 
-// docs/resolution.md, pointers: a non-null pointer the new build already holds, of the pointee's type,
-// lends its object to the heap object it now refers to (once; never an object in a root).
+// docs/resolution.md, pointers: a non-null pointer the new build already holds, of the pointee's
+// type, lends its object to the heap object it now refers to (once; never an object in a root).
 void Restorer::claim_live_objects() {
   claimed_.assign(heap_.size(), nullptr);
   std::unordered_set<std::uintptr_t> taken;
@@ -78,7 +82,8 @@ void Restorer::claim_live_objects() {
     if (ref.base != 0 || ref.a < writer_.root_count || ref.step_count != 0) continue;
     const std::uint32_t h = ref.a - writer_.root_count;
     if (heap_[h].owner != 0 || claimed_[h]) continue;
-    if (heap_[h].node->reader == kNoType || heap_[h].node->reader != slot.node->element->reader) continue;
+    if (heap_[h].node->reader == kNoType || heap_[h].node->reader != slot.node->element->reader)
+      continue;
     if (inside_reader_root(slot.live) || !taken.insert(slot.live).second) continue;
     claimed_[h] = reinterpret_cast<void*>(slot.live);
   }
@@ -202,7 +207,8 @@ void Restorer::map_reference(RefRecord& ref) {
           ref.why = "target element " + std::to_string(step) + " beyond this build's array";
           return;
         }
-        mapped_.push_back({MappedStep::Kind::Offset, node->reader, std::uint64_t{step} * node->reader_stride});
+        mapped_.push_back(
+            {MappedStep::Kind::Offset, node->reader, std::uint64_t{step} * node->reader_stride});
         node = node->element;
         break;
       case Action::Optional:
@@ -240,7 +246,8 @@ void Restorer::map_reference(RefRecord& ref) {
     }
   }
   if (node->action == Action::Skip || node->action == Action::Reject) {
-    ref.why = std::string("target's type ") + writer_.types[ref.target].name + " changed incompatibly";
+    ref.why =
+        std::string("target's type ") + writer_.types[ref.target].name + " changed incompatibly";
     return;
   }
   ref.mapped_count = static_cast<std::uint32_t>(mapped_.size()) - ref.mapped_at;
@@ -280,8 +287,8 @@ void Restorer::decide_slots() {
       if (!ref.resolved) {
         reject(ref.why);
       } else if (ref.reader_type != slot.node->element->reader) {
-        reject(std::string("target is a ") + reader_.types[ref.reader_type].name + " in this build, not a " +
-               reader_.types[slot.node->element->reader].name);
+        reject(std::string("target is a ") + reader_.types[ref.reader_type].name +
+               " in this build, not a " + reader_.types[slot.node->element->reader].name);
       } else {
         slot.outcome = SlotOutcome::Target;
       }
@@ -298,15 +305,15 @@ void Restorer::decide_slots() {
     decode_objects();  // cannot fail: the same bytes decoded in pass 1
     mode_ = Mode::Check;
     for (Pending& entry : pending) {
-      report_.add(explained_[entry.ordinal], entry.decision, std::move(entry.detail),
-                  entry.decision == Decision::Rejected);
+      ReportAccess::add(report_, explained_[entry.ordinal], entry.decision, std::move(entry.detail),
+                        entry.decision == Decision::Rejected);
     }
   }
   if (outside_count_ > kMaxConcretePerField) {
-    report_.add("pointers", Decision::Kept,
-                "and " + std::to_string(outside_count_ - kMaxConcretePerField) +
-                    " more pointed outside the checkpointed state",
-                false);
+    ReportAccess::add(report_, "pointers", Decision::Kept,
+                      "and " + std::to_string(outside_count_ - kMaxConcretePerField) +
+                          " more pointed outside the checkpointed state",
+                      false);
   }
 }
 
@@ -324,7 +331,8 @@ void Restorer::create_heap_objects() {
     if (heap_[h].owner == 0) {
       heap_live_[h] = reader_.types[reader].lifecycle->create();
     } else {
-      const auto* ops = static_cast<const SharedPtrOps*>(reader_.types[plan_.shared_types[reader]].ops);
+      const auto* ops =
+          static_cast<const SharedPtrOps*>(reader_.types[plan_.shared_types[reader]].ops);
       holders_[h] = ops->make_holder();
       heap_live_[h] = ops->holder_get(holders_[h]);
     }
@@ -353,12 +361,16 @@ void* Restorer::target_of(const RefRecord& ref) {
     const MappedStep& step = mapped_[ref.mapped_at + s];
     const void* ops = reader_.types[step.holder_type].ops;
     switch (step.kind) {
-      case MappedStep::Kind::Offset: at += step.value; break;
+      case MappedStep::Kind::Offset:
+        at += step.value;
+        break;
       case MappedStep::Kind::Optional:
-        at = static_cast<std::uint8_t*>(const_cast<void*>(static_cast<const OptionalOps*>(ops)->get(at)));
+        at = static_cast<std::uint8_t*>(
+            const_cast<void*>(static_cast<const OptionalOps*>(ops)->get(at)));
         break;
       case MappedStep::Kind::Unique:
-        at = static_cast<std::uint8_t*>(const_cast<void*>(static_cast<const UniquePtrOps*>(ops)->get(at)));
+        at = static_cast<std::uint8_t*>(
+            const_cast<void*>(static_cast<const UniquePtrOps*>(ops)->get(at)));
         break;
       case MappedStep::Kind::Variant: {
         const auto* variant = static_cast<const VariantOps*>(ops);
@@ -385,11 +397,15 @@ void* Restorer::target_of(const RefRecord& ref) {
 void Restorer::fix_up_slots() {
   for (const AppliedSlot& applied : applied_slots_) {
     const SlotRecord& slot = slots_[applied.ordinal];
-    const auto* shared_ops = slot.shared ? static_cast<const SharedPtrOps*>(reader_.types[slot.node->reader].ops) : nullptr;
+    const auto* shared_ops =
+        slot.shared ? static_cast<const SharedPtrOps*>(reader_.types[slot.node->reader].ops)
+                    : nullptr;
     switch (slot.outcome) {
       case SlotOutcome::Null:
-        if (shared_ops) shared_ops->reset(applied.address);
-        else std::memset(applied.address, 0, sizeof(void*));
+        if (shared_ops)
+          shared_ops->reset(applied.address);
+        else
+          std::memset(applied.address, 0, sizeof(void*));
         break;
       case SlotOutcome::Target: {
         const RefRecord& ref = refs_[slot.code - 2];
@@ -399,8 +415,8 @@ void Restorer::fix_up_slots() {
         }
         void* target = target_of(ref);
         if (!target) {
-          report_.add(counter_path(slot.counter), Decision::Rejected,
-                      "pointer not restored: its target does not exist after restore", true);
+          ReportAccess::add(report_, counter_path(slot.counter), Decision::Rejected,
+                            "pointer not restored: its target does not exist after restore", true);
           break;
         }
         std::memcpy(applied.address, &target, sizeof target);

@@ -11,9 +11,9 @@
 #include <unordered_set>
 #include <vector>
 
-#include "unicode.hpp"
-
+#include "report_access.hpp"
 #include "restorer.hpp"
+#include "unicode.hpp"
 
 namespace symcr::detail::restoring {
 
@@ -27,8 +27,7 @@ const Status& Restorer::corrupt(const char* format, ...) {
 }
 
 // A value-level rejection: the reader keeps its value. Concrete paths are capped per field.
-void Restorer::reject_value(std::uint32_t counter,
-                                                                  const char* format, ...) {
+void Restorer::reject_value(std::uint32_t counter, const char* format, ...) {
   if (mode_ != Mode::Check) return;
   ++value_rejections_;
   if (++rejection_counts_[counter] > kMaxConcretePerField) return;
@@ -37,17 +36,18 @@ void Restorer::reject_value(std::uint32_t counter,
   va_start(args, format);
   std::vsnprintf(buffer, sizeof buffer, format, args);
   va_end(args);
-  report_.add(render_path(frames_.data(), frames_.size()), Decision::Rejected, buffer, true);
+  ReportAccess::add(report_, render_path(frames_.data(), frames_.size()), Decision::Rejected,
+                    buffer, true);
 }
 
 void Restorer::summarise_rejections() {
   if (value_rejections_ <= kMaxConcretePerField) return;  // no counter can exceed the cap
   for (std::size_t c = 0; c < rejection_counts_.size(); ++c) {
     if (rejection_counts_[c] <= kMaxConcretePerField) continue;
-    report_.add(counter_path(static_cast<std::uint32_t>(c)), Decision::Rejected,
-                "and " + std::to_string(rejection_counts_[c] - kMaxConcretePerField) +
-                    " more values rejected",
-                true);
+    ReportAccess::add(report_, counter_path(static_cast<std::uint32_t>(c)), Decision::Rejected,
+                      "and " + std::to_string(rejection_counts_[c] - kMaxConcretePerField) +
+                          " more values rejected",
+                      true);
   }
 }
 
@@ -78,7 +78,8 @@ bool Restorer::decode_objects() {
     if (mode_ == Mode::Check) {
       if (!plan_.heap_nodes[type]) {
         return corrupt("heap object %u of type %s, which no pointer points to", h,
-                       writer_.types[type].name).ok();
+                       writer_.types[type].name)
+            .ok();
       }
       heap_.push_back(HeapRecord{type, owner, plan_.heap_nodes[type]});
     }
@@ -133,8 +134,10 @@ bool Restorer::validated_value(const PlanNode* n, std::uint8_t* dst, const Field
   } else if (n->flat_reader) {
     flat.resize((type.size + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t) + 1);
     staged = flat.data();
-    if (dst) std::memcpy(staged, dst, type.size);
-    else std::memset(staged, 0, type.size);
+    if (dst)
+      std::memcpy(staged, dst, type.size);
+    else
+      std::memset(staged, 0, type.size);
   } else {
     why = "has a symcr_validate but no lifecycle to check a staged copy";
   }
@@ -171,7 +174,11 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
   }
   const TypeInfo& wt = writer_.types[n->writer];
   switch (wt.kind) {
-    case Kind::Bool: case Kind::Int: case Kind::UInt: case Kind::Float: case Kind::Enum:
+    case Kind::Bool:
+    case Kind::Int:
+    case Kind::UInt:
+    case Kind::Float:
+    case Kind::Enum:
       return scalar(n, wt, dst, field);
     case Kind::Struct: {
       const std::uint32_t saved = counter_;
@@ -182,7 +189,8 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       for (const FieldPlan& child : n->fields) {
         frames_[frame].name = child.name;
         counter_ = child.counter;
-        std::uint8_t* at = dst && child.reader_field != kNoType ? dst + child.reader_offset : nullptr;
+        std::uint8_t* at =
+            dst && child.reader_field != kNoType ? dst + child.reader_offset : nullptr;
         if (!value(child.node, at, &child)) return false;
       }
       frames_.pop_back();
@@ -202,14 +210,18 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       if (n->action == Action::Union && dst && writing()) std::memcpy(dst, bytes, wt.size);
       return true;
     }
-    case Kind::Array: return array(n, wt, dst);
-    case Kind::String: return string(n, wt, dst);
-    case Kind::Container: return container(n, wt, dst);
+    case Kind::Array:
+      return array(n, wt, dst);
+    case Kind::String:
+      return string(n, wt, dst);
+    case Kind::Container:
+      return container(n, wt, dst);
     case Kind::Optional: {
       bool engaged = false;
       if (!in_.presence(wt, engaged)) return false;
       const bool to_reader = n->action == Action::Optional && dst;
-      const auto* ops = to_reader ? static_cast<const OptionalOps*>(reader_.types[n->reader].ops) : nullptr;
+      const auto* ops =
+          to_reader ? static_cast<const OptionalOps*>(reader_.types[n->reader].ops) : nullptr;
       if (!engaged) {
         if (to_reader && writing()) ops->reset(dst);
         return true;
@@ -225,7 +237,8 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       bool present = false;
       if (!in_.presence(wt, present)) return false;
       const bool to_reader = n->action == Action::UniquePtr && dst;
-      const auto* ops = to_reader ? static_cast<const UniquePtrOps*>(reader_.types[n->reader].ops) : nullptr;
+      const auto* ops =
+          to_reader ? static_cast<const UniquePtrOps*>(reader_.types[n->reader].ops) : nullptr;
       if (!present) {
         if (to_reader && writing()) ops->reset(dst);
         return true;
@@ -282,7 +295,8 @@ bool Restorer::copy(const PlanNode* n, std::uint8_t* dst) {
   return true;
 }
 
-bool Restorer::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst, const FieldPlan* field) {
+bool Restorer::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst,
+                      const FieldPlan* field) {
   const std::uint8_t* bytes = nullptr;
   if (!in_.scalar(wt, bytes)) return false;
   if (n->action != Action::Scalar) return true;
@@ -290,14 +304,16 @@ bool Restorer::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst, 
   const bool ranged = field && field->has_range;
   const TypeInfo& rt = reader_.types[n->reader];
   if (n->identical && !bit_field && !ranged) {
-    if (dst && writing()) std::memcpy(dst, bytes, wt.kind == Kind::Float && wt.size == 16 ? 10 : wt.size);
+    if (dst && writing())
+      std::memcpy(dst, bytes, wt.kind == Kind::Float && wt.size == 16 ? 10 : wt.size);
     return true;
   }
   const std::uint32_t counter = field ? field->counter : counter_;
   Number in;
   read_number(writer_, wt, bytes, in);
   if (wt.kind == Kind::Enum && rt.kind == Kind::Enum && !n->identical) {
-    const std::int64_t value = in.tag == Number::Tag::Signed ? in.s : static_cast<std::int64_t>(in.u);
+    const std::int64_t value =
+        in.tag == Number::Tag::Signed ? in.s : static_cast<std::int64_t>(in.u);
     const EnumMapping* mapping = nullptr;
     const auto found = std::lower_bound(
         n->enum_map.begin(), n->enum_map.end(), value,
@@ -343,8 +359,10 @@ bool Restorer::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst, 
     }
   }
   if (dst && writing()) {
-    if (bit_field) store_bits(dst, field->bit_offset, field->bit_width, out);
-    else store_number(reader_, rt, out, dst);
+    if (bit_field)
+      store_bits(dst, field->bit_offset, field->bit_width, out);
+    else
+      store_number(reader_, rt, out, dst);
   }
   return true;
 }
@@ -354,7 +372,8 @@ bool Restorer::array(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
   const TypeInfo& we = writer_.types[wt.element];
   const PlanNode* e = n->element;
   // Identical packed scalars: one bounds check and one copy.
-  if (to_reader && e->identical && we.kind != Kind::Bool && !(we.kind == Kind::Float && we.size == 16)) {
+  if (to_reader && e->identical && we.kind != Kind::Bool &&
+      !(we.kind == Kind::Float && we.size == 16)) {
     const std::uint8_t* bytes = nullptr;
     if (!in_.scalar_run(we, wt.count, bytes)) return false;
     const std::uint64_t common = wt.count < n->reader_count ? wt.count : n->reader_count;
@@ -390,8 +409,8 @@ bool Restorer::string(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) 
     // Another character width: re-encoded (UTF-8/16/32), both passes alike; a string not
     // valid in its encoding is rejected and keeps this build's value.
     char why[160];
-    if (!transcode_string(bytes, length, width, reader_width, string_scratch_, reader_length,
-                          why, sizeof why)) {
+    if (!transcode_string(bytes, length, width, reader_width, string_scratch_, reader_length, why,
+                          sizeof why)) {
       reject_value(counter_, "%s", why);
       return true;
     }
@@ -414,12 +433,14 @@ bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* ds
   if (to_reader && mode_ == Mode::Check && !allocation_justified(count, n->reader)) {
     return corrupt("container of %u elements would need %" PRIu64
                    " bytes in this build, more than the checkpoint can justify",
-                   count, std::uint64_t{count} * reader_.types[reader_.types[n->reader].element].size)
+                   count,
+                   std::uint64_t{count} * reader_.types[reader_.types[n->reader].element].size)
         .ok();
   }
   if (mode_ == Mode::Check) containers_.push_back(ContainerRecord{count, e, current_object_});
   std::vector<void*>* addresses = nullptr;
-  if (mode_ == Mode::Apply && ordinal < element_slots_.size() && element_slots_[ordinal] != kNoType) {
+  if (mode_ == Mode::Apply && ordinal < element_slots_.size() &&
+      element_slots_[ordinal] != kNoType) {
     addresses = &element_addresses_[element_slots_[ordinal]];
   }
   // Identical fixed-width scalars (not bool: its bytes need checking) need no per-element
@@ -450,7 +471,8 @@ bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* ds
     auto* elements = static_cast<std::uint8_t*>(ops->resize_default(dst, count));
     std::memcpy(elements, bytes, std::size_t{count} * we.size);
     if (addresses) {
-      for (std::uint32_t i = 0; i < count; ++i) addresses->push_back(elements + std::size_t{i} * we.size);
+      for (std::uint32_t i = 0; i < count; ++i)
+        addresses->push_back(elements + std::size_t{i} * we.size);
     }
     return true;
   }
@@ -501,8 +523,8 @@ bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* ds
     } else {
       applied_slots_.resize(first_slot);
       if (mode_ == Mode::Apply) {
-        report_.add(render_path(frames_.data(), frames_.size()), Decision::Rejected,
-                    "duplicate key: element not inserted", true);
+        ReportAccess::add(report_, render_path(frames_.data(), frames_.size()), Decision::Rejected,
+                          "duplicate key: element not inserted", true);
       }
     }
     if (addresses) addresses->push_back(inserted);

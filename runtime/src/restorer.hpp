@@ -61,9 +61,9 @@ inline void copy_only_write(const PlanNode& n, const std::uint8_t* wire, std::ui
 }
 
 enum class Mode : std::uint8_t {
-  Check,  // pass 1: read and record, never write
-  Stage,  // pass 1, inside a validated value: write into a staged copy, record nothing
-  Apply,  // pass 2: write into live objects, record slot and element addresses
+  Check,    // pass 1: read and record, never write
+  Stage,    // pass 1, inside a validated value: write into a staged copy, record nothing
+  Apply,    // pass 2: write into live objects, record slot and element addresses
   Explain,  // between the passes, only if needed: render the paths of reported pointers
 };
 
@@ -72,13 +72,13 @@ constexpr std::uint32_t kMaxConcretePerField = 100;
 enum class SlotOutcome : std::uint8_t { Skip, Null, Outside, Target, Rejected };
 
 struct SlotRecord {
-  std::uint32_t code;              // wire value: 0 null, 1 outside, n >= 2 reference n - 2
-  std::uint32_t pointer_type;      // writer pointer type
-  const PlanNode* node;            // restorable pointer node, or nullptr
+  std::uint32_t code;          // wire value: 0 null, 1 outside, n >= 2 reference n - 2
+  std::uint32_t pointer_type;  // writer pointer type
+  const PlanNode* node;        // restorable pointer node, or nullptr
   bool shared;
-  std::uintptr_t live;             // the reader's current pointer (raw slots with a place)
+  std::uintptr_t live;  // the reader's current pointer (raw slots with a place)
   std::uint32_t counter;
-  std::uint32_t object;            // the object (root or heap) holding the slot
+  std::uint32_t object;  // the object (root or heap) holding the slot
   SlotOutcome outcome;
 };
 
@@ -117,8 +117,8 @@ class Restorer {
  public:
   // `dry_run`: a plan of a build known only by its schema (no code): types it can create are
   // known by their kTypeCreatable flag instead of a Lifecycle; nothing is ever applied.
-  Restorer(const Plan& plan, const std::uint8_t* payload, std::size_t size,
-           Report& report, bool dry_run)
+  Restorer(const Plan& plan, const std::uint8_t* payload, std::size_t size, Report& report,
+           bool dry_run)
       : plan_(plan),
         writer_(*plan.writer),
         reader_(*plan.reader),
@@ -170,7 +170,8 @@ class Restorer {
   // general path then finds and reports the same error at its place.
   __attribute__((noinline)) bool copy(const PlanNode* n, std::uint8_t* dst);
 
-  __attribute__((noinline)) bool scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst, const FieldPlan* field);
+  __attribute__((noinline)) bool scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst,
+                                        const FieldPlan* field);
 
   bool array(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
 
@@ -206,8 +207,8 @@ class Restorer {
 
   bool inside_reader_root(std::uintptr_t address) const;
 
-  // docs/resolution.md, pointers: a non-null pointer the new build already holds, of the pointee's type,
-  // lends its object to the heap object it now refers to (once; never an object in a root).
+  // docs/resolution.md, pointers: a non-null pointer the new build already holds, of the pointee's
+  // type, lends its object to the heap object it now refers to (once; never an object in a root).
   void claim_live_objects();
 
   // A heap object is created (or claimed) only when the new build can make it and a pointer

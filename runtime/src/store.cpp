@@ -25,6 +25,7 @@
 #include "record.hpp"
 #include "store_layout.hpp"
 #include "symcr/symcr.hpp"
+#include "report_access.hpp"
 
 namespace symcr {
 namespace {
@@ -642,13 +643,13 @@ Status Store::save() {
 Report Store::restore_latest(const RestoreOptions& options) {
   Report report;
   if (!is_open()) {
-    report.set_status(Status(Error::Io, "the store is not open"));
+    detail::ReportAccess::set_status(report, Status(Error::Io, "the store is not open"));
     return report;
   }
   Impl& impl = *impl_;
   Status status = impl.scan_slots(fd_);
   if (!status.ok()) {
-    report.set_status(status);
+    detail::ReportAccess::set_status(report, status);
     return report;
   }
   impl.newest_first.clear();
@@ -674,7 +675,7 @@ Report Store::restore_latest(const RestoreOptions& options) {
       Impl::Slot reread;
       status = impl.read_slot(fd_, i, reread);
       if (!status.ok()) {
-        report.set_status(status);
+        detail::ReportAccess::set_status(report, status);
         return report;
       }
       if (reread.state != StoreSlotState::Valid) continue;
@@ -698,7 +699,7 @@ Report Store::restore_latest(const RestoreOptions& options) {
     future += slot.state == StoreSlotState::FutureVersion;
   }
   report.clear();
-  report.set_status(Status(
+  detail::ReportAccess::set_status(report, Status(
       Error::NoValidSlot,
       "%s: no restorable checkpoint in %zu slots (%u empty, %u corrupt or torn, %u with an "
       "unknown schema, %u from a future format, %u rejected by restore%s%s)",

@@ -112,7 +112,7 @@ class Walker {
       };
       auto on_step = [&](std::uint32_t step) {
         const TypeInfo& t = writer_.types[type];
-        type = t.kind == Kind::Struct  ? t.fields[step].type
+        type = t.kind == Kind::Struct    ? t.fields[step].type
                : t.kind == Kind::Variant ? t.alternatives[step]
                                          : t.element;
         if (t.kind == Kind::Struct) {

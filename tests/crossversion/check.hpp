@@ -41,9 +41,7 @@ inline int save(int argc, char** argv) {
 inline symcr::Report restore(int argc, char** argv, bool strict = false) {
   if (argc < 2) {
     std::fprintf(stderr, "usage: %s <checkpoint>\n", argv[0]);
-    symcr::Report report;
-    report.set_status(symcr::Status(symcr::Error::Io, "no checkpoint path"));
-    return report;
+    return symcr::restore("", symcr::RestoreOptions());  // fails: no such file
   }
   symcr::RestoreOptions options;
   options.strict = strict;

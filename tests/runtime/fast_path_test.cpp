@@ -14,6 +14,7 @@
 #include "handwritten_schemas.hpp"
 #include "plan.hpp"
 #include "symcr/ops.hpp"
+#include "report_access.hpp"
 
 namespace engine_tests {
 namespace {
@@ -431,7 +432,7 @@ TEST(FastPath, ReportsAreIndependentCopies) {
   const symcr::Report second = load(saved, flat_schema());
   ASSERT_TRUE(first.ok());
   const std::size_t count = second.entries().size();
-  first.add("extra", symcr::Decision::Rejected, "added later", true);
+  symcr::detail::ReportAccess::add(first, "extra", symcr::Decision::Rejected, "added later", true);
   EXPECT_EQ(first.entries().size(), count + 1);
   EXPECT_EQ(second.entries().size(), count);
   EXPECT_EQ(first.entries().back().path, "extra");

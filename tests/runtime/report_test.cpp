@@ -4,6 +4,7 @@
 #include <string>
 
 #include "symcr/symcr.hpp"
+#include "report_access.hpp"
 
 namespace {
 
@@ -33,10 +34,10 @@ TEST(EngineStatus, NamesEveryErrorAndDecision) {
 
 TEST(EngineReport, CountsAndAlignsText) {
   symcr::Report report;
-  report.add("copter.yaw", symcr::Decision::Converted, "renamed from heading", false);
-  report.add("copter.mission.items[].lat", symcr::Decision::Restored, "", false);
-  report.add("copter.old", symcr::Decision::Dropped, "field removed in this build", true);
-  report.set_sequence(7);
+  symcr::detail::ReportAccess::add(report, "copter.yaw", symcr::Decision::Converted, "renamed from heading", false);
+  symcr::detail::ReportAccess::add(report, "copter.mission.items[].lat", symcr::Decision::Restored, "", false);
+  symcr::detail::ReportAccess::add(report, "copter.old", symcr::Decision::Dropped, "field removed in this build", true);
+  symcr::detail::ReportAccess::set_sequence(report, 7);
   EXPECT_EQ(report.count(symcr::Decision::Converted), 1u);
   EXPECT_EQ(report.count(symcr::Decision::Kept), 0u);
   const std::string text = report.to_text();
@@ -51,8 +52,8 @@ TEST(EngineReport, CountsAndAlignsText) {
 
 TEST(EngineReport, JsonEscapesEverything) {
   symcr::Report report;
-  report.add("a\"b\\c\n\x01", symcr::Decision::Rejected, "bad \xff byte, ok \xc3\xa9", true);
-  report.set_status(symcr::Status(symcr::Error::Strict, "no \"way\""));
+  symcr::detail::ReportAccess::add(report, "a\"b\\c\n\x01", symcr::Decision::Rejected, "bad \xff byte, ok \xc3\xa9", true);
+  symcr::detail::ReportAccess::set_status(report, symcr::Status(symcr::Error::Strict, "no \"way\""));
   EXPECT_EQ(report.to_json(),
             "{\"ok\":false,\"error\":\"Strict\",\"message\":\"no \\\"way\\\"\",\"sequence\":0,"
             "\"entries\":[{\"path\":\"a\\\"b\\\\c\\n\\u0001\",\"decision\":\"rejected\","

@@ -96,6 +96,10 @@ struct ReportEntry {
   bool lossy;           // refused in strict mode (data lost or value not restored)
 };
 
+namespace detail {
+struct ReportAccess;
+}  // namespace detail
+
 class Report {
  public:
   // Out of line: the shared entries' control block is the runtime's (built without RTTI), so
@@ -120,16 +124,13 @@ class Report {
   std::string to_text() const;  // aligned table, one line per entry, status last
   std::string to_json() const;  // {"ok":..,"error":..,"sequence":..,"entries":[{...}]}
 
-  // For the runtime and tools that build reports.
-  void set_status(const Status& status) { status_ = status; }
-  void set_sequence(std::uint64_t sequence) { sequence_ = sequence; }
-  void add(std::string path, Decision decision, std::string detail, bool lossy);
-  // Starts an empty report with `entries` (shared, not copied: a cached plan's schema-level
-  // entries); a later add() copies them first.
-  void set_shared_entries(std::shared_ptr<const std::vector<ReportEntry>> entries);
   void clear() { *this = Report(); }
 
  private:
+  friend struct detail::ReportAccess;  // the runtime and symcr's tools fill reports
+  void add(std::string path, Decision decision, std::string detail, bool lossy);
+  void set_shared_entries(std::shared_ptr<const std::vector<ReportEntry>> entries);
+
   Status status_;
   std::vector<ReportEntry> entries_;
   std::shared_ptr<const std::vector<ReportEntry>> shared_entries_;  // when set: the entries

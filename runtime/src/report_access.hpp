@@ -1,0 +1,33 @@
+// How the runtime and symcr's tools fill a Report: its mutators are private to keep the public
+// API read-only for programs. Internal to the runtime; the CLI and tests may include it too.
+#ifndef SYMCR_SRC_REPORT_ACCESS_HPP
+#define SYMCR_SRC_REPORT_ACCESS_HPP
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "symcr/symcr.hpp"
+
+namespace symcr::detail {
+
+struct ReportAccess {
+  static void set_status(Report& report, const Status& status) { report.status_ = status; }
+  static void set_sequence(Report& report, std::uint64_t sequence) { report.sequence_ = sequence; }
+  static void add(Report& report, std::string path, Decision decision, std::string detail,
+                  bool lossy) {
+    report.add(std::move(path), decision, std::move(detail), lossy);
+  }
+  // Starts an empty report with `entries` (shared, not copied: a cached plan's schema-level
+  // entries); a later add() copies them first.
+  static void set_shared_entries(Report& report,
+                                 std::shared_ptr<const std::vector<ReportEntry>> entries) {
+    report.set_shared_entries(std::move(entries));
+  }
+};
+
+}  // namespace symcr::detail
+
+#endif  // SYMCR_SRC_REPORT_ACCESS_HPP
