@@ -20,7 +20,7 @@
 #include <string>
 
 #include "schema_tables.hpp"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace critical {
 

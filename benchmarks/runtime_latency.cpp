@@ -21,7 +21,7 @@
 #include <benchmark/benchmark.h>
 
 #include "critical_state.hpp"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 
 namespace {

@@ -38,7 +38,7 @@
 #include "engine.hpp"  // thread_scratch_bytes: the memo tables' size
 #include "schema_tables.hpp"
 #include "symcr/ops.hpp"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 
 namespace {

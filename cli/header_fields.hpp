@@ -9,7 +9,7 @@
 
 #include "json_writer.hpp"
 #include "record.hpp"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace symcr::cli {
 

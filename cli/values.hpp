@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "json_writer.hpp"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::cli {

@@ -9,7 +9,7 @@
 #ifndef SYMCR_GENERATOR_MODEL_H
 #define SYMCR_GENERATOR_MODEL_H
 
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 #include <cstdint>
 #include <map>

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace benchmark {
 class State;

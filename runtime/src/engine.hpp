@@ -10,7 +10,7 @@
 #include <memory>
 #include <vector>
 
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 #include "wire.hpp"
 

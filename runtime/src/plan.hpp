@@ -12,7 +12,7 @@
 
 #include "engine.hpp"
 #include "payload_grammar.hpp"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {

@@ -2,7 +2,7 @@
 #ifndef SYMCR_SRC_PROGRAM_SCHEMA_HPP
 #define SYMCR_SRC_PROGRAM_SCHEMA_HPP
 
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {

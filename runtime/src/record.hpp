@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {

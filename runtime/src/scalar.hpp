@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace symcr::detail {
 

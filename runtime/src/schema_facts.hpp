@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "engine.hpp"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace symcr::detail {
 

@@ -8,7 +8,7 @@
 
 #include "schema_tables.hpp"
 #include "symcr/ops.hpp"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace cli_fixture {
 

@@ -10,7 +10,7 @@
 
 #include "schema_tables.hpp"
 #include "symcr/ops.hpp"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace reliability {
 

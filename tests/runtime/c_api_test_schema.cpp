@@ -3,7 +3,7 @@
 #include <cstddef>
 
 #include "c_api_test_state.h"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace {
 

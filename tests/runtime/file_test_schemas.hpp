@@ -11,7 +11,7 @@
 #include <cstdint>
 
 #include "schema_tables.hpp"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace file_tests {
 

@@ -22,7 +22,7 @@
 
 #include "schema_tables.hpp"
 #include "symcr/ops.hpp"
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace engine_tests {
 

@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace schema_tables {
 

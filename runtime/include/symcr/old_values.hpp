@@ -21,10 +21,10 @@
 #include <cstdint>
 #include <string>
 
-#include "symcr/schema.hpp"
 
 namespace symcr {
 
+struct Schema;  // <symcr/generated.hpp>
 class OldValues;
 namespace detail {
 struct WireSizes;
@@ -79,7 +79,7 @@ class OldValues {
 
   const Schema* writer_ = nullptr;
   const detail::WireSizes* sizes_ = nullptr;
-  std::uint32_t type_ = kNoType;
+  std::uint32_t type_ = 0xFFFFFFFFu;  // no type
   const std::uint8_t* bytes_ = nullptr;
   std::size_t size_ = 0;
 };

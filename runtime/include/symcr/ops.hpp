@@ -20,7 +20,7 @@
 #include <variant>
 #endif
 
-#include "symcr/schema.hpp"
+#include "symcr/generated.hpp"
 
 namespace symcr {
 namespace ops {

@@ -16,7 +16,6 @@
 #include <vector>
 
 #include "symcr/old_values.hpp"
-#include "symcr/schema.hpp"
 
 // ---------------------------------------------------------------------------------------------
 // Annotations (generator/README.md). For an ordinary compiler they expand to nothing; symcr-gen
@@ -38,6 +37,17 @@
 #define SYMCR_RENAMED_FROM(old_name)
 #define SYMCR_RANGE(lo, hi)
 #endif
+
+namespace symcr {
+// The tables describing a program's checkpointed state, emitted by symcr-gen
+// (<symcr/generated.hpp>; programs only pass them around).
+struct Schema;
+}  // namespace symcr
+
+// The program's schema, defined by the code symcr-gen emits for a target. The argument-less
+// checkpoint()/restore() use it; it is weak so that a program without generated code links and
+// gets a clear "no schema" error instead.
+extern "C" const symcr::Schema* symcr_program_schema(void) __attribute__((weak));
 
 namespace symcr {
 

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <symcr/generated.hpp>  // the test inspects the generated tables
+
 #include "check.hpp"
 
 namespace {

@@ -3,6 +3,8 @@
 // and keep v1's initial values; strict mode refuses the whole restore and writes nothing.
 #include <vector>
 
+#include <symcr/generated.hpp>  // the test inspects the generated tables
+
 #include "check.hpp"
 
 struct Motor {

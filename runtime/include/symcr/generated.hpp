@@ -1,17 +1,20 @@
-// The schema model: how a program describes its checkpointed state to the runtime.
+// The contract between the code symcr-gen emits and the runtime: the schema tables (types,
+// fields, enumerators, roots), the per-kind operations tables and lifecycles, and the program's
+// serialised schema. User code never needs to include or read this header: programs use
+// <symcr/symcr.hpp>, migration hooks <symcr/old_values.hpp>.
 //
-// symcr-gen emits one `symcr::Schema` per program as constant tables (types, fields,
-// enumerators, roots). The runtime walks live memory with it when saving, serialises it into
-// checkpoints (docs/format.md), and resolves a checkpoint's (writer) schema against the running
-// build's (reader) schema when restoring. Nothing here allocates or needs exceptions/RTTI.
-//
-// Everything in this header is part of the generator/runtime contract: change it only together
-// with the generator and docs/format.md.
-#ifndef SYMCR_SCHEMA_HPP
-#define SYMCR_SCHEMA_HPP
+// symcr-gen emits one `symcr::Schema` per program as constant tables. The runtime walks live
+// memory with it when saving, serialises it into checkpoints (docs/format.md), and resolves a
+// checkpoint's (writer) schema against the running build's (reader) schema when restoring.
+// Nothing here allocates or needs exceptions/RTTI. Change it only together with the generator
+// and docs/format.md.
+#ifndef SYMCR_GENERATED_HPP
+#define SYMCR_GENERATED_HPP
 
 #include <cstddef>
 #include <cstdint>
+
+#include "symcr/symcr.hpp"  // symcr_program_schema(), which the generated code defines
 
 namespace symcr {
 
@@ -216,11 +219,6 @@ struct Schema {
 
 }  // namespace symcr
 
-// The program's schema, defined by the code symcr-gen emits for a target. The runtime's
-// argument-less checkpoint()/restore() use it; it is weak so that a program without
-// generated code links and gets a clear "no schema" error instead.
-extern "C" const symcr::Schema* symcr_program_schema(void) __attribute__((weak));
-
 namespace symcr {
 // The program's schema serialised (docs/format.md §2) and its FNV-1a 64 hash, as symcr-gen
 // computed them from the same tables: a program never serialises or hashes its own schema at
@@ -234,4 +232,4 @@ struct SerialisedSchema {
 extern "C" const symcr::SerialisedSchema* symcr_program_serialised_schema(void)
     __attribute__((weak));
 
-#endif  // SYMCR_SCHEMA_HPP
+#endif  // SYMCR_GENERATED_HPP
