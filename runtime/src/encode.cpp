@@ -409,7 +409,7 @@ void Encoder::encode_container(const TypeInfo& type, const std::uint8_t* p) {
 
 // ---- references ----------------------------------------------------------------------
 void Encoder::encode_reference(const TypeInfo& type, const void* target, bool shared) {
-  if (!target) return put_u32(0);
+  if (!target) return put_u32(kNullCode);
   const auto address = reinterpret_cast<std::uintptr_t>(target);
   bool inserted = false;
   std::uint32_t& entry = s_.memo.find_or_insert(address, type.element, kNoRegion, inserted);
@@ -425,10 +425,10 @@ void Encoder::encode_reference(const TypeInfo& type, const void* target, bool sh
     if (shared) {
       return fail_unsupported("a shared_ptr into static storage or the stack (object %p)", target);
     }
-    return put_u32(1);
+    return put_u32(kOutsideCode);
   }
   if (shared) s_.references[entry].shared = true;
-  put_u32(entry + 2);
+  put_u32(entry + kFirstReference);
 }
 
 void Encoder::fail_unsupported(const char* format, ...) {

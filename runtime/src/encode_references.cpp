@@ -197,12 +197,12 @@ bool Encoder::resolve(std::uint32_t region_index, std::uintptr_t address, std::u
   const Region region = s_.regions[region_index];
   switch (region.kind) {
     case RegionKind::Object:
-      base = Base{0, region.object, 0};
+      base = Base{kBaseObject, region.object, 0};
       return descend(region.type, region.start, address, type);
     case RegionKind::ContainerRun: {
       const std::uint32_t offset =
           static_cast<std::uint32_t>((address - region.start) / region.stride);
-      base = Base{1, region.object, region.first_index + offset};
+      base = Base{kBaseElement, region.object, region.first_index + offset};
       return descend(region.type, region.start + std::uintptr_t{offset} * region.stride, address,
                      type);
     }

@@ -200,7 +200,7 @@ class Encoder {
                std::uint32_t target_type);
 
   struct Base {
-    std::uint8_t kind;  // 0 object, 1 container element
+    std::uint8_t kind;  // a ReferenceBase
     std::uint32_t a, b;
   };
 

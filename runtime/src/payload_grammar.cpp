@@ -200,7 +200,7 @@ bool PayloadReader::invalid_reference(std::uint32_t i, const char* what, std::ui
   return fail("reference %u %s %u", i, what, value);
 }
 bool PayloadReader::missing_base(std::uint32_t i, const Reference& ref) {
-  if (ref.base == 0) return fail("reference %u to a missing object %u", i, ref.a);
+  if (ref.base == kBaseObject) return fail("reference %u to a missing object %u", i, ref.a);
   return fail("reference %u to a missing element %u of container %u", i, ref.b, ref.a);
 }
 bool PayloadReader::wrong_target(std::uint32_t i, std::uint32_t type, std::uint32_t target) {

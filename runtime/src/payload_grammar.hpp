@@ -37,6 +37,15 @@ struct WireSizes {
 };
 WireSizes wire_sizes(const Schema& writer);
 
+// A Pointer's or SharedPtr's reference code: null, outside the saved state (raw pointers only),
+// or kFirstReference + the index of its target in the reference table.
+constexpr std::uint32_t kNullCode = 0;
+constexpr std::uint32_t kOutsideCode = 1;
+constexpr std::uint32_t kFirstReference = 2;
+
+// What a reference starts from: a saved object (a root or heap object) or a container element.
+enum ReferenceBase : std::uint8_t { kBaseObject = 0, kBaseElement = 1 };
+
 // One step of a value's symbolic path: "copter", ".mission", "[3]", "heap#2(ModeAuto)".
 // Decoders keep a stack of frames and render the path only when they report it.
 struct PathFrame {
@@ -47,9 +56,9 @@ struct PathFrame {
 void append_path(std::string& path, const PathFrame& frame);
 std::string render_path(const PathFrame* frames, std::size_t count);
 
-// A reference of the payload's reference table: an object (base 0: root or heap object `a`)
-// or a container element (base 1: element `b` of the `a`th container in stream order), then
-// `step_count` steps into it, ending at writer type `target`.
+// A reference of the payload's reference table: an object (kBaseObject: root or heap object
+// `a`) or a container element (kBaseElement: element `b` of the `a`th container in stream order),
+// then `step_count` steps into it, ending at writer type `target`.
 struct Reference {
   std::uint8_t base = 0;
   std::uint32_t a = 0;
@@ -128,11 +137,11 @@ class PayloadReader {
     if (index != kNoType && index >= type.alternative_count) return invalid_alternative(index);
     return true;
   }
-  // A Pointer's or SharedPtr's reference code: 0 null, 1 outside (raw pointers only), or
-  // 2 + an index into the reference table (checked once the table is read).
+  // A Pointer's or SharedPtr's reference code (kNullCode, kOutsideCode, or a reference index
+  // from kFirstReference on, checked once the table is read).
   bool pointer(const TypeInfo& type, std::uint32_t& code) {
     if (!in_.read(code)) return truncated("pointer");
-    if (code == 1 && type.kind == Kind::SharedPtr) return shared_outside();
+    if (code == kOutsideCode && type.kind == Kind::SharedPtr) return shared_outside();
     return true;
   }
   // Values of a fixed encoded size, not looked into.
@@ -156,12 +165,12 @@ class PayloadReader {
   bool reference(std::uint32_t i, Reference& ref, ObjectType object_type, ElementType element_type,
                  OnStep on_step) {
     if (!in_.read(ref.base) || !in_.read(ref.a)) return truncated("reference");
-    if (ref.base > 1) return invalid_reference(i, "has base kind", ref.base);
-    if ((ref.base == 1 && !in_.read(ref.b)) || !in_.read(ref.step_count)) {
+    if (ref.base > kBaseElement) return invalid_reference(i, "has base kind", ref.base);
+    if ((ref.base == kBaseElement && !in_.read(ref.b)) || !in_.read(ref.step_count)) {
       return truncated("reference");
     }
     std::uint32_t type = 0;
-    if (ref.base == 0 ? !object_type(ref.a, type) : !element_type(ref.a, ref.b, type)) {
+    if (ref.base == kBaseObject ? !object_type(ref.a, type) : !element_type(ref.a, ref.b, type)) {
       return missing_base(i, ref);
     }
     for (std::uint16_t s = 0; s < ref.step_count; ++s) {

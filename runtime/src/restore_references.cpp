@@ -44,8 +44,8 @@ bool Restorer::decode_references() {
 
 bool Restorer::check_slots() {
   for (const SlotRecord& slot : slots_) {
-    if (slot.code < 2) continue;
-    const std::uint32_t index = slot.code - 2;
+    if (slot.code < kFirstReference) continue;
+    const std::uint32_t index = slot.code - kFirstReference;
     if (index >= refs_.size())
       return corrupt("pointer to reference %u of %zu", index, refs_.size()).ok();
     const RefRecord& ref = refs_[index];
@@ -77,8 +77,8 @@ void Restorer::claim_live_objects() {
   claimed_.assign(heap_.size(), nullptr);
   std::unordered_set<std::uintptr_t> taken;
   for (const SlotRecord& slot : slots_) {
-    if (!slot.node || slot.shared || slot.code < 2 || !slot.live) continue;
-    const RefRecord& ref = refs_[slot.code - 2];
+    if (!slot.node || slot.shared || slot.code < kFirstReference || !slot.live) continue;
+    const RefRecord& ref = refs_[slot.code - kFirstReference];
     if (ref.base != 0 || ref.a < writer_.root_count || ref.step_count != 0) continue;
     const std::uint32_t h = ref.a - writer_.root_count;
     if (heap_[h].owner != 0 || claimed_[h]) continue;
@@ -117,10 +117,10 @@ void Restorer::decide_materialisation() {
   }
   for (const SlotRecord& slot : slots_) {
     if (!everything_restorable) break;
-    if (slot.code < 2) continue;
+    if (slot.code < kFirstReference) continue;
     everything_restorable = slot.node != nullptr;
     if (everything_restorable && slot.shared) {  // shared targets are whole heap objects
-      const std::uint32_t h = refs_[slot.code - 2].a - roots;
+      const std::uint32_t h = refs_[slot.code - kFirstReference].a - roots;
       everything_restorable = heap_[h].node->reader == slot.node->element->reader;
     }
   }
@@ -147,9 +147,9 @@ void Restorer::decide_materialisation() {
     queue.pop_back();
     for (std::uint32_t i = first[object]; i < first[object + 1]; ++i) {
       const SlotRecord& slot = slots_[by_object[i]];
-      if (!slot.node || slot.code < 2) continue;
-      const RefRecord& ref = refs_[slot.code - 2];
-      const std::uint32_t target = ref.base == 0 ? ref.a : containers_[ref.a].object;
+      if (!slot.node || slot.code < kFirstReference) continue;
+      const RefRecord& ref = refs_[slot.code - kFirstReference];
+      const std::uint32_t target = ref.base == kBaseObject ? ref.a : containers_[ref.a].object;
       if (target < roots) continue;
       const std::uint32_t h = target - roots;
       if (!creatable[h] || materialisable_[h]) continue;
@@ -166,14 +166,14 @@ void Restorer::decide_materialisation() {
 // Maps a reference's writer steps onto reader steps by name (via the plan), never offsets.
 void Restorer::map_reference(RefRecord& ref) {
   const PlanNode* node = nullptr;
-  if (ref.base == 0 && ref.a < writer_.root_count) {
+  if (ref.base == kBaseObject && ref.a < writer_.root_count) {
     const RootPlan& root = plan_.roots[ref.a];
     if (root.reader_root == kNoType) {
       ref.why = std::string("root ") + writer_.roots[ref.a].name + " not in this build";
       return;
     }
     node = root.node;
-  } else if (ref.base == 0) {
+  } else if (ref.base == kBaseObject) {
     const std::uint32_t h = ref.a - writer_.root_count;
     if (!materialisable_[h]) {
       ref.why = std::string("heap object of type ") + writer_.types[heap_[h].type].name +
@@ -274,16 +274,16 @@ void Restorer::decide_slots() {
       pending.push_back({static_cast<std::uint32_t>(ordinal), Decision::Rejected,
                          "pointer not restored: " + why});
     };
-    if (slot.code == 0) {
+    if (slot.code == kNullCode) {
       slot.outcome = SlotOutcome::Null;
-    } else if (slot.code == 1) {
+    } else if (slot.code == kOutsideCode) {
       slot.outcome = SlotOutcome::Outside;
       if (++outside_count_ <= kMaxConcretePerField) {
         pending.push_back({static_cast<std::uint32_t>(ordinal), Decision::Kept,
                            "pointed outside the checkpointed state: kept this build's value"});
       }
     } else {
-      const RefRecord& ref = refs_[slot.code - 2];
+      const RefRecord& ref = refs_[slot.code - kFirstReference];
       if (!ref.resolved) {
         reject(ref.why);
       } else if (ref.reader_type != slot.node->element->reader) {
@@ -348,9 +348,9 @@ void Restorer::create_heap_objects() {
 
 void* Restorer::target_of(const RefRecord& ref) {
   std::uint8_t* at = nullptr;
-  if (ref.base == 0 && ref.a < writer_.root_count) {
+  if (ref.base == kBaseObject && ref.a < writer_.root_count) {
     at = static_cast<std::uint8_t*>(reader_.roots[plan_.roots[ref.a].reader_root].address);
-  } else if (ref.base == 0) {
+  } else if (ref.base == kBaseObject) {
     at = static_cast<std::uint8_t*>(heap_live_[ref.a - writer_.root_count]);
   } else {
     const std::uint32_t slot = element_slots_[ref.a];
@@ -408,7 +408,7 @@ void Restorer::fix_up_slots() {
           std::memset(applied.address, 0, sizeof(void*));
         break;
       case SlotOutcome::Target: {
-        const RefRecord& ref = refs_[slot.code - 2];
+        const RefRecord& ref = refs_[slot.code - kFirstReference];
         if (shared_ops) {
           shared_ops->assign_from_holder(applied.address, holders_[ref.a - writer_.root_count]);
           break;

@@ -72,7 +72,7 @@ constexpr std::uint32_t kMaxConcretePerField = 100;
 enum class SlotOutcome : std::uint8_t { Skip, Null, Outside, Target, Rejected };
 
 struct SlotRecord {
-  std::uint32_t code;          // wire value: 0 null, 1 outside, n >= 2 reference n - 2
+  std::uint32_t code;          // wire value: kNullCode, kOutsideCode, kFirstReference + i
   std::uint32_t pointer_type;  // writer pointer type
   const PlanNode* node;        // restorable pointer node, or nullptr
   bool shared;

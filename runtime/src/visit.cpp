@@ -46,8 +46,11 @@ class Walker {
   void pointer(const TypeInfo& type, const std::uint8_t* code_bytes, std::uint32_t code) {
     if (!emit_) return;
     const char* text = "null";
-    if (code == 1) text = "outside";
-    if (code >= 2) text = code - 2 < targets_.size() ? targets_[code - 2].c_str() : "-> ?";
+    if (code == kOutsideCode) text = "outside";
+    if (code >= kFirstReference) {
+      const std::uint32_t index = code - kFirstReference;
+      text = index < targets_.size() ? targets_[index].c_str() : "-> ?";
+    }
     visitor_.leaf(path_.c_str(), type, code_bytes, 4, text);
   }
   void container(const TypeInfo& type, std::uint32_t count) {
