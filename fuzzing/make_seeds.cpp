@@ -306,8 +306,8 @@ int main(int argc, char** argv) {
         std::vector<std::uint8_t> seed{control};
         put32(seed, static_cast<std::uint32_t>(blob.size));
         seed.insert(seed.end(), blob.data, blob.data + blob.size);
-        put32(seed, static_cast<std::uint32_t>(other.bytes.size()));
-        seed.insert(seed.end(), other.bytes.begin(), other.bytes.end());
+        put32(seed, static_cast<std::uint32_t>(other.size));
+        seed.insert(seed.end(), other.data, other.data + other.size);
         seed.insert(seed.end(), payload.begin(), payload.end());
         write_seed(plans, std::string(world_name(world)) + "-vs-" + world_name(reader) + "-" +
                               std::to_string(control), seed);
