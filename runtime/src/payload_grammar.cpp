@@ -26,8 +26,9 @@ class SizeFacts {
     out_.least.assign(writer.type_count, kUnknown);
     out_.fixed.assign(writer.type_count, WireSizes::kVariable);
   }
-  // By-value nesting is acyclic and bounded in a parsed schema, so this recursion is too.
-  void compute(std::uint32_t t) {
+  // By-value nesting is acyclic and bounded in a parsed schema, so this recursion is too. Once
+  // per schema: cold (compiled for size).
+  __attribute__((cold)) void compute(std::uint32_t t) {
     if (out_.least[t] != kUnknown) return;
     const TypeInfo& type = writer_.types[t];
     std::uint64_t least = 0;
@@ -81,14 +82,15 @@ class SizeFacts {
 
 }  // namespace
 
-WireSizes wire_sizes(const Schema& writer) {
+__attribute__((cold)) WireSizes wire_sizes(const Schema& writer) {
   WireSizes sizes;
   SizeFacts facts(writer, sizes);
   for (std::uint32_t t = 0; t < writer.type_count; ++t) facts.compute(t);
   return sizes;
 }
 
-void append_path(std::string& path, const PathFrame& frame) {
+// Paths are rendered only for reports and errors: cold.
+__attribute__((cold)) void append_path(std::string& path, const PathFrame& frame) {
   char buffer[48];
   switch (frame.kind) {
     case PathFrame::Kind::Name:
@@ -113,7 +115,7 @@ void append_path(std::string& path, const PathFrame& frame) {
   }
 }
 
-std::string render_path(const PathFrame* frames, std::size_t count) {
+__attribute__((cold)) std::string render_path(const PathFrame* frames, std::size_t count) {
   std::string path;
   for (std::size_t i = 0; i < count; ++i) append_path(path, frames[i]);
   return path;

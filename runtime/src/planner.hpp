@@ -36,6 +36,8 @@ inline bool is_associative(const TypeInfo& container) {
   return ops && !ops->append;
 }
 
+// Every method is cold: a plan is built once per pair of schemas, so the planner is compiled for
+// size (tens of KB of .text) and kept off the hot pages, wherever its methods are defined.
 class Planner {
  public:
   Planner(Plan& plan) : plan_(plan), writer_(*plan.writer), reader_(*plan.reader) {}
@@ -47,25 +49,25 @@ class Planner {
  private:
   // Per writer type: the writer knew a class equal to it or derived from it that it could save
   // as a heap object's dynamic type.
-  void find_dynamic_bases();
+  __attribute__((cold)) void find_dynamic_bases();
 
   // ---- matching ------------------------------------------------------------------------
-  std::uint32_t find_reader_type(const TypeInfo& writer) const;
+  __attribute__((cold)) std::uint32_t find_reader_type(const TypeInfo& writer) const;
 
   __attribute__((cold)) void plan_roots();
 
-  std::uint32_t new_counter(std::string path);
+  __attribute__((cold)) std::uint32_t new_counter(std::string path);
 
   // ---- nodes ---------------------------------------------------------------------------
   __attribute__((cold)) const PlanNode* node(std::uint32_t writer, std::uint32_t reader);
 
-  bool is_flat(std::uint32_t t, int depth) const;
+  __attribute__((cold)) bool is_flat(std::uint32_t t, int depth) const;
 
   __attribute__((cold)) void fill_skip(PlanNode& n);
 
-  void reject(PlanNode& n, std::string why);
+  __attribute__((cold)) void reject(PlanNode& n, std::string why);
 
-  std::string pair_text(const TypeInfo& writer, const TypeInfo& reader) const;
+  __attribute__((cold)) std::string pair_text(const TypeInfo& writer, const TypeInfo& reader) const;
 
   __attribute__((cold)) void fill(PlanNode& n);
 
@@ -73,31 +75,33 @@ class Planner {
   // lossiness, at every nesting level (an inner array shrinking, a string re-encoded inside a
   // vector). Struct elements are not folded in: their fields get entries of their own, and so
   // do pointees.
-  void inherit_element(PlanNode& n);
+  __attribute__((cold)) void inherit_element(PlanNode& n);
 
   __attribute__((cold)) void fill_scalar(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt);
 
   // A writer value with several names (an alias kept while renaming: `Loiter = 3, Hold = 3`)
   // maps through whichever of its names the reader has, whatever their declaration order: one
   // entry per value, mapped when its names that the reader knows agree on one reader value.
-  static void collapse_enum_aliases(std::vector<EnumMapping>& map);
+  static __attribute__((cold)) void collapse_enum_aliases(std::vector<EnumMapping>& map);
 
   __attribute__((cold)) void fill_struct(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt);
 
-  std::uint32_t match_field(const TypeInfo& wt, std::uint32_t wf, const TypeInfo& rt,
-                            const std::vector<bool>& used) const;
+  __attribute__((cold)) std::uint32_t match_field(const TypeInfo& wt, std::uint32_t wf,
+                                                  const TypeInfo& rt,
+                                                  const std::vector<bool>& used) const;
 
   // Unnamed struct and union members are named after their declaration index, which moves when
   // a field is added or removed before them. Their members are what the program names: an
   // anonymous struct matches the reader's anonymous struct sharing the most member names; an
   // anonymous union (restored as raw bytes, its members unlisted) matches the reader's anonymous
   // union of the same rank among the anonymous unions.
-  static bool is_anonymous_member(const char* name);
+  static __attribute__((cold)) bool is_anonymous_member(const char* name);
   // The same member for the report: the same name, or two unnamed members matched above.
-  static bool same_member(const char* writer, const char* reader);
+  static __attribute__((cold)) bool same_member(const char* writer, const char* reader);
 
-  std::uint32_t match_anonymous_member(const TypeInfo& wt, std::uint32_t wf, const TypeInfo& rt,
-                                       const std::vector<bool>& used) const;
+  __attribute__((cold)) std::uint32_t match_anonymous_member(const TypeInfo& wt, std::uint32_t wf,
+                                                             const TypeInfo& rt,
+                                                             const std::vector<bool>& used) const;
 
   // ---- migration hooks ------------------------------------------------------------------
   // A node "differs" when restoring it changes values beyond a plain restore: a field removed,
@@ -111,53 +115,57 @@ class Planner {
   bool differs(const PlanNode* n) const { return differs_.count(n) != 0; }
 
   // Whether `n` itself changes values, or a part already known to differ.
-  bool changes_values(const PlanNode& n) const;
+  __attribute__((cold)) bool changes_values(const PlanNode& n) const;
 
   // The node whose hook runs for a value: the value's own, or its optional's/unique_ptr's.
-  static const PlanNode* migration_of(const PlanNode* n);
+  static __attribute__((cold)) const PlanNode* migration_of(const PlanNode* n);
 
-  std::string migrated_by(const PlanNode& n) const;
+  __attribute__((cold)) std::string migrated_by(const PlanNode& n) const;
 
   // A root's or field's entry also says that its value is migrated.
-  void note_migration(const PlanNode* n, Decision& decision, std::string& detail) const;
+  __attribute__((cold)) void note_migration(const PlanNode* n, Decision& decision,
+                                            std::string& detail) const;
 
   // An element (or pointee, or variant alternative) has no entry of its own unless migrated,
   // or validated where the verdict cannot be known.
-  void add_migration_entry(const PlanNode* n, const std::string& path);
+  __attribute__((cold)) void add_migration_entry(const PlanNode* n, const std::string& path);
 
   // A build known only by its schema file (the CLI's plan) has validators it cannot run: each
   // value they check says so, rather than being promised.
-  void note_unforeseen_validation(const PlanNode* n, std::string& detail) const;
+  __attribute__((cold)) void note_unforeseen_validation(const PlanNode* n,
+                                                        std::string& detail) const;
 
   // ---- copy-only programs (restore's fast path) ------------------------------------------
   static constexpr std::size_t kMaxCopyRuns = 512;
   static constexpr std::size_t kMaxCopyBools = 1024;
   static constexpr std::uint32_t kMaxCopyWire = 1u << 24;
 
-  static void add_run(PlanNode& n, std::uint64_t wire, std::uint64_t dst, std::uint64_t length);
+  static __attribute__((cold)) void add_run(PlanNode& n, std::uint64_t wire, std::uint64_t dst,
+                                            std::uint64_t length);
 
   // Appends `child`'s program at (wire, dst); false when `n` grows past the limits.
   __attribute__((noinline, cold)) static bool append_copy(PlanNode& n, const PlanNode& child,
                                                           std::uint64_t wire, std::uint64_t dst);
 
   // An integer or bool bit-field whose writer and reader types are identical, at `wire`.
-  bool add_bit_field(PlanNode& n, const FieldPlan& field, std::uint64_t wire);
+  __attribute__((cold)) bool add_bit_field(PlanNode& n, const FieldPlan& field, std::uint64_t wire);
 
   __attribute__((noinline, cold)) void compute_copy(PlanNode& n);
 
   // The whole payload is copy-only when every writer root is kept and copy-only: then it is
   // the roots' copy programs back to back and two empty sections (heap objects, references).
-  void compute_copy_only_payload();
+  __attribute__((cold)) void compute_copy_only_payload();
 
-  bool child_copy_only(const PlanNode* child);
+  __attribute__((cold)) bool child_copy_only(const PlanNode* child);
 
   __attribute__((noinline, cold)) bool build_copy(PlanNode& n);
 
   __attribute__((cold)) void build_report();
 
-  void add(std::string path, Decision decision, std::string detail, bool lossy);
+  __attribute__((cold)) void add(std::string path, Decision decision, std::string detail,
+                                 bool lossy);
 
-  void note_pointee(const PlanNode* n);
+  __attribute__((cold)) void note_pointee(const PlanNode* n);
 
   __attribute__((cold)) void expand(const PlanNode* n, const std::string& path);
 
