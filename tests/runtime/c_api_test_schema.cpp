@@ -3,37 +3,30 @@
 #include <cstddef>
 
 #include "c_api_test_state.h"
+#include "schema_tables.hpp"
 #include "symcr/generated.hpp"
 
 namespace {
 
-using symcr::Kind;
-using symcr::kNoType;
+using namespace schema_tables;  // scalar(), record(), field(), ...: tests/support
 
 enum : std::uint32_t { kInt16, kInt32, kUInt16, kUInt32, kFloat64, kTrims, kVehicle, kTypes };
 
-const symcr::FieldInfo vehicle_fields[] = {
-    {"altitude_cm", kInt32, offsetof(c_vehicle, altitude_cm), 0, 0, 0, nullptr, 0, 0},
-    {"waypoint", kUInt16, offsetof(c_vehicle, waypoint), 0, 0, 0, nullptr, 0, 0},
-    {"heading", kFloat64, offsetof(c_vehicle, heading), 0, 0, 0, nullptr, 0, 0},
-    {"trims", kTrims, offsetof(c_vehicle, trims), 0, 0, 0, nullptr, 0, 0},
+const FieldInfo vehicle_fields[] = {
+    field("altitude_cm", kInt32, offsetof(c_vehicle, altitude_cm)),
+    field("waypoint", kUInt16, offsetof(c_vehicle, waypoint)),
+    field("heading", kFloat64, offsetof(c_vehicle, heading)),
+    field("trims", kTrims, offsetof(c_vehicle, trims)),
 };
 
-const symcr::TypeInfo types[] = {
-    {"int16", Kind::Int, 0, 2, 2, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr,
-     nullptr, nullptr, nullptr, nullptr, nullptr},
-    {"int32", Kind::Int, 0, 4, 4, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr,
-     nullptr, nullptr, nullptr, nullptr, nullptr},
-    {"uint16", Kind::UInt, 0, 2, 2, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr,
-     nullptr, nullptr, nullptr, nullptr, nullptr},
-    {"uint32", Kind::UInt, 0, 4, 4, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr,
-     nullptr, nullptr, nullptr, nullptr, nullptr},
-    {"float64", Kind::Float, 0, 8, 8, nullptr, 0, nullptr, 0, kNoType, 0, nullptr, 0, 0,
-     nullptr, nullptr, nullptr, nullptr, nullptr, nullptr},
-    {"int16[3]", Kind::Array, 0, sizeof(c_vehicle::trims), alignof(std::int16_t), nullptr, 0,
-     nullptr, 0, kInt16, 3, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr},
-    {"c_vehicle", Kind::Struct, 0, sizeof(c_vehicle), alignof(c_vehicle), vehicle_fields, 4,
-     nullptr, 0, kNoType, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr},
+const TypeInfo types[] = {
+    scalar("int16", Kind::Int, 2),
+    scalar("int32", Kind::Int, 4),
+    scalar("uint16", Kind::UInt, 2),
+    scalar("uint32", Kind::UInt, 4),
+    scalar("float64", Kind::Float, 8),
+    array("int16[3]", kInt16, 3, sizeof(c_vehicle::trims), alignof(std::int16_t)),
+    record("c_vehicle", sizeof(c_vehicle), alignof(c_vehicle), vehicle_fields, 4),
 };
 
 const symcr::RootInfo roots[] = {
