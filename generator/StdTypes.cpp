@@ -111,12 +111,7 @@ std::uint32_t TypeWalker::stdRecord(QualType Type, const RecordDecl *RD,
                                     const WalkContext &C) {
   const auto *Spec = dyn_cast<ClassTemplateSpecializationDecl>(RD);
   auto Arg = [&](unsigned I) { return Spec->getTemplateArgs()[I].getAsType(); };
-  TypeModel Model;
-  Model.Name = canonicalName(Type, C);
-  Model.Spelling = spelling(Type);
-  Model.Accessible = accessible(Type);
-  Model.Size = Context.getTypeSizeInChars(Type).getQuantity();
-  Model.Align = Context.getTypeAlignInChars(Type).getQuantity();
+  TypeModel Model = describe(Type, C);
   bool Fresh;
   auto Reserve = [&] {
     std::uint32_t Index = reserve(Model.Name, Model.Name, Fresh);

@@ -239,18 +239,23 @@ std::uint32_t TypeWalker::scalar(const BuiltinType *BT, const WalkContext &C) {
   return Index;
 }
 
-std::uint32_t TypeWalker::enumeration(QualType Type, const EnumDecl *ED,
-                                      const WalkContext &C) {
-  ED = ED->getDefinition();
-  if (!ED)
-    return fail(C, "an incomplete enum", "its enumerators are unknown");
+TypeModel TypeWalker::describe(QualType Type, const WalkContext &C) {
   TypeModel Model;
-  Model.Kind = symcr::Kind::Enum;
   Model.Name = canonicalName(Type, C);
   Model.Spelling = spelling(Type);
   Model.Accessible = accessible(Type);
   Model.Size = Context.getTypeSizeInChars(Type).getQuantity();
   Model.Align = Context.getTypeAlignInChars(Type).getQuantity();
+  return Model;
+}
+
+std::uint32_t TypeWalker::enumeration(QualType Type, const EnumDecl *ED,
+                                      const WalkContext &C) {
+  ED = ED->getDefinition();
+  if (!ED)
+    return fail(C, "an incomplete enum", "its enumerators are unknown");
+  TypeModel Model = describe(Type, C);
+  Model.Kind = symcr::Kind::Enum;
   if (ED->isScoped())
     Model.Flags |= symcr::kTypeScopedEnum;
   Model.RenamedFrom = renamedFromAnnotations(ED);
@@ -683,12 +688,7 @@ std::uint32_t TypeWalker::record(QualType Type, const RecordDecl *Decl,
     return fail(C, "'" + PlainName + "'",
                 "threads, locks and files are process state");
 
-  TypeModel Model;
-  Model.Name = canonicalName(Type, C);
-  Model.Spelling = spelling(Type);
-  Model.Accessible = accessible(Type);
-  Model.Size = Context.getTypeSizeInChars(Type).getQuantity();
-  Model.Align = Context.getTypeAlignInChars(Type).getQuantity();
+  TypeModel Model = describe(Type, C);
   Model.RenamedFrom = renamedFromAnnotations(RD);
   for (const std::string &K : recordKeys(RD)) {
     auto It = Select.TypeRenames.find(K);

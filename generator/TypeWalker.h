@@ -97,6 +97,9 @@ public:
   const std::vector<const clang::CXXRecordDecl *> *PolymorphicClasses = nullptr;
 
 private:
+  /// A model of \p Type with its canonical name, spelling, accessibility,
+  /// size and alignment; the caller fills in the rest.
+  TypeModel describe(clang::QualType Type, const WalkContext &C);
   std::uint32_t fail(const WalkContext &C, const std::string &What,
                      const std::string &Why);
   std::uint32_t scalar(const clang::BuiltinType *BT, const WalkContext &C);
