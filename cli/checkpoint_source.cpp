@@ -76,8 +76,7 @@ Status load_record_file(const std::string& path, LoadedCheckpoint& out) {
   if (!status.ok()) return with_path(path, status);
   if (out.record.record_size != out.bytes.size()) {
     return Status(Error::Corrupt, "%s: %zu unexpected bytes after the %zu-byte record",
-                  path.c_str(), out.bytes.size() - out.record.record_size,
-                  out.record.record_size);
+                  path.c_str(), out.bytes.size() - out.record.record_size, out.record.record_size);
   }
   if (out.record.schema == nullptr) {
     return Status(Error::SchemaUnknown,
@@ -85,8 +84,8 @@ Status load_record_file(const std::string& path, LoadedCheckpoint& out) {
                   "and carries no schema of its own",
                   path.c_str(), static_cast<unsigned long long>(out.record.header.schema_hash));
   }
-  status = detail::parse_schema(out.record.schema, out.record.header.schema_size,
-                                out.inline_schema);
+  status =
+      detail::parse_schema(out.record.schema, out.record.header.schema_size, out.inline_schema);
   if (!status.ok()) return with_path(path, status);
   out.writer = &out.inline_schema.schema();
   out.writer_hash = out.record.header.schema_hash;
@@ -100,17 +99,14 @@ Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slo
   if (!status.ok()) return status;
   if (kind == FileKind::Record) {
     if (slot) {
-      return Status(Error::Io, "%s is a single-file checkpoint, which has no slots",
-                    path.c_str());
+      return Status(Error::Io, "%s is a single-file checkpoint, which has no slots", path.c_str());
     }
     status = load_record_file(path, out);
     if (!status.ok()) return status;
     if (out.record.payload_size == 0) {
-      return Status(Error::Corrupt, "%s is a schema file, which holds no values",
-                    path.c_str());
+      return Status(Error::Corrupt, "%s is a schema file, which holds no values", path.c_str());
     }
-    return with_path(path, check_payload(*out.writer, out.record.payload,
-                                         out.record.payload_size));
+    return with_path(path, check_payload(*out.writer, out.record.payload, out.record.payload_size));
   }
 
   out.path = path;
@@ -130,7 +126,7 @@ Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slo
     status = out.store->read_record(index, out.bytes, out.record, area_index);
     if (status.ok()) {
       const detail::StoreSchemaArea& area = out.store->area(area_index);
-      out.writer = &area.schema.schema();
+      out.writer = &area.schema();
       out.writer_hash = area.hash;
       out.slot = index;
       status = check_payload(*out.writer, out.record.payload, out.record.payload_size);

@@ -26,7 +26,8 @@ std::vector<Root> roots_of(const Schema& schema) {
   std::vector<Root> roots;
   for (std::uint32_t r = 0; r < schema.root_count; ++r) {
     const RootInfo& root = schema.roots[r];
-    roots.push_back({root.name, root.type < schema.type_count ? schema.types[root.type].name : "?"});
+    roots.push_back(
+        {root.name, root.type < schema.type_count ? schema.types[root.type].name : "?"});
   }
   return roots;
 }
@@ -122,19 +123,19 @@ int inspect_store(const InspectArgs& args) {
   if (!selected) {
     failure = args.path + ": no slot holds a restorable checkpoint";
   } else if (*selected >= survey.slots.size()) {
-    failure = args.path + " has " + std::to_string(survey.slots.size()) + " slots; there is no slot " +
-              std::to_string(*selected);
+    failure = args.path + " has " + std::to_string(survey.slots.size()) +
+              " slots; there is no slot " + std::to_string(*selected);
     selected.reset();
   } else if (!survey.slots[*selected].restorable) {
-    failure = args.path + ": slot " + std::to_string(*selected) + " is " +
-              survey.slots[*selected].state +
-              (survey.slots[*selected].problem.empty() ? "" : ": " + survey.slots[*selected].problem);
+    failure =
+        args.path + ": slot " + std::to_string(*selected) + " is " + survey.slots[*selected].state +
+        (survey.slots[*selected].problem.empty() ? "" : ": " + survey.slots[*selected].problem);
   } else {
     std::vector<std::uint8_t> bytes;
     detail::RecordView view;
     int area = -1;
     status = store.read_record(*selected, bytes, view, area);
-    const Schema* writer = area >= 0 ? &store.area(area).schema.schema() : nullptr;
+    const Schema* writer = area >= 0 ? &store.area(area).schema() : nullptr;
     if (status.ok()) status = decode_values(*writer, view.payload, view.payload_size, values);
     if (status.ok()) {
       fields = describe_header(view.header, writer, "store area " + std::to_string(area));
@@ -149,8 +150,8 @@ int inspect_store(const InspectArgs& args) {
     json.field("file", args.path);
     json.field("kind", "store");
     write_store_json(json, store, survey);
-    json.field("selected_slot", selected && failure.empty() ? JsonScalar::of_uint(*selected)
-                                                            : JsonScalar::null());
+    json.field("selected_slot",
+               selected && failure.empty() ? JsonScalar::of_uint(*selected) : JsonScalar::null());
     if (failure.empty()) {
       json.key_begin("header");
       write_fields_json(json, fields);

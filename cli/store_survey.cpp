@@ -30,8 +30,7 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
       int area = -1;
       Status status = store.read_record(i, bytes, view, area);
       if (status.ok()) {
-        status = check_payload(store.area(area).schema.schema(), view.payload,
-                               view.payload_size);
+        status = check_payload(store.area(area).schema(), view.payload, view.payload_size);
       }
       s.restorable = status.ok();
       if (!s.restorable) {
@@ -56,8 +55,8 @@ namespace {
 std::string area_text(const detail::StoreSchemaArea& area) {
   if (!area.valid) return "empty or invalid";
   return "hash " + hex64(area.hash) + ", " + std::to_string(area.size) + " bytes, " +
-         std::to_string(area.schema.schema().type_count) + " types, " +
-         std::to_string(area.schema.schema().root_count) + " roots";
+         std::to_string(area.schema().type_count) + " types, " +
+         std::to_string(area.schema().root_count) + " roots";
 }
 
 Colour state_colour(const SlotSurvey& slot) {
@@ -75,25 +74,29 @@ void print_store_overview(const std::string& path, const detail::StoreReader& st
   Table header;
   header.add({{"store"}, {path}});
   header.add({{"format_version"}, {std::to_string(detail::kStoreFileFormatVersion)}});
-  header.add({{"slots"}, {std::to_string(g.slot_count) + " x " + std::to_string(g.slot_size) +
-                          " bytes"}});
+  header.add(
+      {{"slots"}, {std::to_string(g.slot_count) + " x " + std::to_string(g.slot_size) + " bytes"}});
   for (int i = 0; i < 2; ++i) {
     header.add({{"schema_area " + std::to_string(i)}, {area_text(store.area(i))}});
   }
   std::string restore_text = "none (no restorable slot)";
   if (survey.restore_latest_slot) {
     const SlotSurvey& s = survey.slots[*survey.restore_latest_slot];
-    restore_text = "slot " + std::to_string(s.index) + " (sequence " +
-                   std::to_string(s.header.sequence) + ")";
+    restore_text =
+        "slot " + std::to_string(s.index) + " (sequence " + std::to_string(s.header.sequence) + ")";
   }
-  header.add({{"restore_latest"}, {restore_text, survey.restore_latest_slot ? Colour::Green
-                                                                            : Colour::Red}});
+  header.add({{"restore_latest"},
+              {restore_text, survey.restore_latest_slot ? Colour::Green : Colour::Red}});
   print(header.render(terminal));
   print("\n");
 
   Table table;
-  table.add({{"slot", Colour::Bold}, {"state", Colour::Bold}, {"sequence", Colour::Bold},
-             {"time", Colour::Bold}, {"payload", Colour::Bold}, {"schema", Colour::Bold},
+  table.add({{"slot", Colour::Bold},
+             {"state", Colour::Bold},
+             {"sequence", Colour::Bold},
+             {"time", Colour::Bold},
+             {"payload", Colour::Bold},
+             {"schema", Colour::Bold},
              {"note", Colour::Bold}});
   for (const SlotSurvey& s : survey.slots) {
     std::string note = s.problem;
@@ -131,8 +134,8 @@ void write_store_json(JsonWriter& json, const detail::StoreReader& store,
     if (area.valid) {
       json.field("hash", hex64(area.hash));
       json.field("size", area.size);
-      json.field("types", area.schema.schema().type_count);
-      json.field("roots", area.schema.schema().root_count);
+      json.field("types", area.schema().type_count);
+      json.field("roots", area.schema().root_count);
     }
     json.object_end();
   }

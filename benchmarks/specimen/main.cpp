@@ -8,15 +8,17 @@
 //       program built from a patched autopilot (schema_change.cpp): DIR/specimen-v0.ckpt
 //       (single file), DIR/specimen-v0.store (a store holding one checkpoint) and
 //       DIR/specimen-v0.txt (the number of mission commands, which the restore must bring back)
+//   symcr_bench_specimen --cold-restore N STORE
+//       the first restore in a fresh process, N times (cold_restore.hpp)
+#include <benchmark/benchmark.h>
 #include <unistd.h>
 
 #include <cstdio>
 #include <cstring>
 #include <string>
 
-#include <benchmark/benchmark.h>
-
 #include "Copter.hpp"
+#include "cold_restore.hpp"
 #include "state.hpp"
 #include "symcr/symcr.hpp"
 
@@ -46,9 +48,16 @@ int write_fixture(const std::string& dir) {
   return 0;
 }
 
+// After a cold restore: the in-flight state's marks (flying a mission in AUTO, armed).
+bool restored_in_flight() {
+  return copter.armed() && copter.get_mode() == Mode::AUTO && copter.mission.num_commands() > 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  const int cold = specimen_bench::run_cold_restore_mode(argc, argv, restored_in_flight);
+  if (cold >= 0) return cold;
   if (argc == 3 && std::strcmp(argv[1], "--write-fixture") == 0) return write_fixture(argv[2]);
   benchmark::AddCustomContext("specimen_flight", specimen_bench::flight_description());
   benchmark::Initialize(&argc, argv);

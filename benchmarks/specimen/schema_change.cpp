@@ -7,6 +7,8 @@
 // benchmarks/run reports its rows beside symcr_bench_specimen's.
 //
 //   symcr_bench_specimen_<version> [--fixture DIR] [Google Benchmark flags]
+//   symcr_bench_specimen_<version> --cold-restore N STORE   (cold_restore.hpp)
+#include <benchmark/benchmark.h>
 #include <unistd.h>
 
 #include <cstdint>
@@ -17,9 +19,8 @@
 #include <string>
 #include <vector>
 
-#include <benchmark/benchmark.h>
-
 #include "Copter.hpp"
+#include "cold_restore.hpp"
 #include "common.hpp"
 #include "initial_state.hpp"
 #include "symcr/symcr.hpp"
@@ -152,6 +153,8 @@ BENCHMARK(BM_SchemaChangeStoreRestoreLatest);
 }  // namespace specimen_bench
 
 int main(int argc, char** argv) {
+  const int cold = specimen_bench::run_cold_restore_mode(argc, argv, specimen_bench::restored);
+  if (cold >= 0) return cold;
   if (argc >= 3 && std::strcmp(argv[1], "--fixture") == 0) {
     specimen_bench::fixture_dir() = argv[2];
     argv[2] = argv[0];

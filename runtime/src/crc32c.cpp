@@ -7,6 +7,9 @@
 #if defined(__x86_64__)
 #include <cpuid.h>
 #include <nmmintrin.h>
+#if __has_include(<sys/platform/x86.h>)
+#include <sys/platform/x86.h>  // glibc 2.33+: the features the dynamic loader already read
+#endif
 #endif
 
 namespace symcr::detail {
@@ -62,12 +65,18 @@ std::uint32_t crc32c_extend_portable(std::uint32_t crc, const void* data, std::s
 
 #if defined(__x86_64__)
 
-// CPUID leaf 1, ECX bit 20, read directly: __builtin_cpu_supports would link libgcc's CPU
-// model detection (__cpu_indicator_init, about 4.5 KB of .text) into every program.
+// Asked of glibc where it can tell: a CPUID instruction traps to the hypervisor in a virtual
+// machine, which cost a fresh process tens of microseconds on its first checksum. Else CPUID
+// leaf 1, ECX bit 20, read directly: __builtin_cpu_supports would link libgcc's CPU model
+// detection (__cpu_indicator_init, about 4.5 KB of .text) into every program.
 bool crc32c_hardware_available() {
   static const bool available = [] {
+#if defined(CPU_FEATURE_ACTIVE)
+    return CPU_FEATURE_ACTIVE(SSE4_2);
+#else
     unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
     return __get_cpuid(1, &eax, &ebx, &ecx, &edx) != 0 && (ecx & bit_SSE4_2) != 0;
+#endif
   }();
   return available;
 }
@@ -81,7 +90,7 @@ namespace {
 constexpr std::size_t kLongBlock = 8192;  // bytes per chain; powers of two
 constexpr std::size_t kShortBlock = 256;
 
-std::uint32_t gf2_times(const std::uint32_t* matrix, std::uint32_t vector) {
+constexpr std::uint32_t gf2_times(const std::uint32_t* matrix, std::uint32_t vector) {
   std::uint32_t sum = 0;
   for (; vector; vector >>= 1, ++matrix) {
     if (vector & 1u) sum ^= *matrix;
@@ -89,7 +98,7 @@ std::uint32_t gf2_times(const std::uint32_t* matrix, std::uint32_t vector) {
   return sum;
 }
 
-void gf2_square(std::uint32_t* square, const std::uint32_t* matrix) {
+constexpr void gf2_square(std::uint32_t* square, const std::uint32_t* matrix) {
   for (int n = 0; n < 32; ++n) square[n] = gf2_times(matrix, matrix[n]);
 }
 
@@ -98,8 +107,10 @@ struct ShiftTable {
 };
 
 // The operator appending `length` zero bytes (a power of two, at least 1) to a CRC register.
-ShiftTable make_shift_table(std::size_t length) {
-  std::uint32_t odd[32], even[32];
+// Computed at compile time: at run time it cost a fresh process tens of microseconds on its
+// first checksum.
+constexpr ShiftTable make_shift_table(std::size_t length) {
+  std::uint32_t odd[32] = {}, even[32] = {};
   odd[0] = kPolynomial;  // one zero bit
   std::uint32_t row = 1;
   for (int n = 1; n < 32; ++n, row <<= 1) odd[n] = row;
@@ -127,14 +138,12 @@ ShiftTable make_shift_table(std::size_t length) {
   return t;
 }
 
-struct ShiftTables {
-  ShiftTable long_block = make_shift_table(kLongBlock);
-  ShiftTable short_block = make_shift_table(kShortBlock);
-};
+constexpr ShiftTable kLongBlockShift = make_shift_table(kLongBlock);
+constexpr ShiftTable kShortBlockShift = make_shift_table(kShortBlock);
 
 inline std::uint32_t shift(const ShiftTable& t, std::uint32_t crc) {
-  return t.table[0][crc & 0xFF] ^ t.table[1][(crc >> 8) & 0xFF] ^
-         t.table[2][(crc >> 16) & 0xFF] ^ t.table[3][crc >> 24];
+  return t.table[0][crc & 0xFF] ^ t.table[1][(crc >> 8) & 0xFF] ^ t.table[2][(crc >> 16) & 0xFF] ^
+         t.table[3][crc >> 24];
 }
 
 __attribute__((target("sse4.2"))) inline std::uint64_t load_word(const std::uint8_t* p) {
@@ -144,8 +153,7 @@ __attribute__((target("sse4.2"))) inline std::uint64_t load_word(const std::uint
 }
 
 // `c` is the raw register (not inverted); processes 3 * block bytes.
-__attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c,
-                                                             const std::uint8_t* p,
+__attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c, const std::uint8_t* p,
                                                              std::size_t block,
                                                              const ShiftTable& t) {
   std::uint64_t c0 = c, c1 = 0, c2 = 0;
@@ -162,19 +170,18 @@ __attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c,
 }  // namespace
 
 __attribute__((target("sse4.2"))) std::uint32_t crc32c_extend_hardware(std::uint32_t crc,
-                                                                        const void* data,
-                                                                        std::size_t size) {
+                                                                       const void* data,
+                                                                       std::size_t size) {
   const auto* p = static_cast<const std::uint8_t*>(data);
   std::uint32_t c = ~crc;
   if (size >= 3 * kShortBlock) {
-    static const ShiftTables tables;
     while (size >= 3 * kLongBlock) {
-      c = three_chains(c, p, kLongBlock, tables.long_block);
+      c = three_chains(c, p, kLongBlock, kLongBlockShift);
       p += 3 * kLongBlock;
       size -= 3 * kLongBlock;
     }
     while (size >= 3 * kShortBlock) {
-      c = three_chains(c, p, kShortBlock, tables.short_block);
+      c = three_chains(c, p, kShortBlock, kShortBlockShift);
       p += 3 * kShortBlock;
       size -= 3 * kShortBlock;
     }

@@ -65,6 +65,7 @@ class ParsedSchema {
   ParsedSchema& operator=(ParsedSchema&&) noexcept;
   const Schema& schema() const;
   std::uint64_t hash() const;
+  const std::vector<std::uint8_t>& bytes() const;  // the serialised form it was parsed from
 
   struct Storage;
   std::unique_ptr<Storage> storage;
@@ -80,10 +81,11 @@ Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out);
 
 // Restores a payload written with `writer` into the live roots of `reader`: resolves (plans are
 // cached per writer-hash/reader pair), decodes and checks everything, and only then writes.
-// On any failure the report is !ok() and no live object has been modified.
-Report restore_payload(const Schema& writer, std::uint64_t writer_hash,
-                       const std::uint8_t* payload, std::size_t size, const Schema& reader,
-                       const RestoreOptions& options);
+// On any failure the report is !ok() and no live object has been modified. `writer_owner`,
+// if given, owns `writer` (a parsed schema): a plan built for it shares it instead of copying.
+Report restore_payload(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,
+                       std::size_t size, const Schema& reader, const RestoreOptions& options,
+                       std::shared_ptr<const ParsedSchema> writer_owner = nullptr);
 
 // Pass 1 of restore_payload only: the full report (schema-level and value-level decisions)
 // and status of restoring the payload into `reader`, without writing anything. The reader's

@@ -51,7 +51,6 @@ void Planner::run() {
     }
   }
   decide_migrations();
-  build_report();
   for (PlanNode& n : plan_.nodes) compute_copy(n);
   compute_copy_only_payload();
   if (too_deep_) {
@@ -108,7 +107,7 @@ void Planner::plan_roots() {
     RootPlan& root = plan_.roots[wr];
     root.reader_root = match;
     root.node = node(writer.type, match == kNoType ? kNoType : reader_.roots[match].type);
-    root.counter = new_counter(writer.name);
+    root.counter = new_counter(nullptr, writer.name);
     if (match != kNoType && root.node->action != Action::Reject) any_restorable = true;
   }
   if (writer_.root_count > 0 && !any_restorable) {
@@ -117,8 +116,8 @@ void Planner::plan_roots() {
   }
 }
 
-std::uint32_t Planner::new_counter(std::string path) {
-  plan_.counter_paths.push_back(std::move(path));
+std::uint32_t Planner::new_counter(const char* scope, const char* name) {
+  plan_.counter_paths.push_back(Plan::CounterPath{scope, name});
   return static_cast<std::uint32_t>(plan_.counter_paths.size() - 1);
 }
 
@@ -160,7 +159,8 @@ bool names_match(const TypeInfo& writer, const TypeInfo& reader) {
 }
 
 std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_hash,
-                                     const Schema& reader, Status& status) {
+                                     const Schema& reader, Status& status,
+                                     std::shared_ptr<const ParsedSchema> writer_owner) {
   constexpr std::size_t kMaxPlans = 8;
   {
     std::lock_guard<std::mutex> lock(plan_cache_mutex());
@@ -174,12 +174,23 @@ std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_
     }
   }
   auto plan = std::make_shared<Plan>();
-  // The plan keeps its own copy of the writer schema (a round trip through the wire form) so
-  // that cached plans never point into a caller's buffers.
-  serialise_blob(writer, plan->writer_blob);
-  status = parse_schema(plan->writer_blob.data, plan->writer_blob.size, plan->writer_copy);
-  if (!status.ok()) return nullptr;
-  plan->writer = &plan->writer_copy.schema();
+  // Cached plans never point into a caller's buffers: the writer is the reader (which outlives
+  // its plans, as the cache's key), a parsed schema shared with the caller, or else a copy (a
+  // round trip through the wire form).
+  if (&writer == &reader) {
+    plan->writer = &reader;
+  } else if (writer_owner && &writer_owner->schema() == &writer) {
+    plan->writer_owner = std::move(writer_owner);
+    plan->writer = &writer;
+  } else {
+    SchemaBlob blob;
+    serialise_blob(writer, blob);
+    auto copy = std::make_shared<ParsedSchema>();
+    status = parse_schema(blob.data, blob.size, *copy);
+    if (!status.ok()) return nullptr;
+    plan->writer = &copy->schema();
+    plan->writer_owner = std::move(copy);
+  }
   plan->reader = &reader;
   Planner(*plan).run();
   std::lock_guard<std::mutex> lock(plan_cache_mutex());

@@ -7,22 +7,24 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
 #include "engine.hpp"
 #include "payload_grammar.hpp"
+#include "report_access.hpp"
 #include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {
 
 enum class Action : std::uint8_t {
-  Skip,       // no reader counterpart: decode and check the writer value, write nothing
-  Reject,     // incompatible: decode with `skip`, keep the reader's value
-  Scalar,     // Bool/Int/UInt/Float/Enum to Bool/Int/UInt/Float/Enum, converted per value
+  Skip,    // no reader counterpart: decode and check the writer value, write nothing
+  Reject,  // incompatible: decode with `skip`, keep the reader's value
+  Scalar,  // Bool/Int/UInt/Float/Enum to Bool/Int/UInt/Float/Enum, converted per value
   Struct,
-  Union,      // raw bytes, sizes equal
+  Union,  // raw bytes, sizes equal
   Array,
   String,
   Container,
@@ -39,12 +41,12 @@ struct FieldPlan {
   const PlanNode* node = nullptr;        // (writer field type, reader field type or kNoType)
   std::uint32_t reader_field = kNoType;  // kNoType: the field was removed
   std::uint32_t reader_offset = 0;
-  std::uint16_t bit_offset = 0;          // reader bit-field
+  std::uint16_t bit_offset = 0;  // reader bit-field
   std::uint16_t bit_width = 0;
-  bool has_range = false;                // reader field's SYMCR_RANGE
+  bool has_range = false;  // reader field's SYMCR_RANGE
   double range_min = 0, range_max = 0;
-  std::uint32_t counter = 0;             // per-field index for capping value-level entries
-  const char* name = "";                 // writer field name (concrete paths)
+  std::uint32_t counter = 0;  // per-field index for capping value-level entries
+  const char* name = "";      // writer field name (concrete paths)
 };
 
 struct EnumMapping {
@@ -80,18 +82,18 @@ struct PlanNode {
   bool lossy = false;
   std::string detail;
 
-  const PlanNode* skip = nullptr;     // Reject: how to consume the writer value
-  bool identical = false;             // Scalar: same representation, copy the bytes
-  std::vector<EnumMapping> enum_map;  // Scalar from an enum: writer value -> reader value
-  std::vector<FieldPlan> fields;      // Struct: one per writer field, in writer order
-  const PlanNode* element = nullptr;  // Array, Container, Optional, UniquePtr, pointers
-  const PlanNode* element_skip = nullptr;  // Array: elements beyond the reader's length
-  std::uint64_t reader_count = 0;     // Array
-  std::uint32_t reader_stride = 0;    // Array: reader element size
-  std::vector<const PlanNode*> alternatives;     // Variant: per writer alternative
-  std::vector<std::uint32_t> alternative_map;    // Variant: reader index or kNoType
+  const PlanNode* skip = nullptr;              // Reject: how to consume the writer value
+  bool identical = false;                      // Scalar: same representation, copy the bytes
+  std::vector<EnumMapping> enum_map;           // Scalar from an enum: writer value -> reader value
+  std::vector<FieldPlan> fields;               // Struct: one per writer field, in writer order
+  const PlanNode* element = nullptr;           // Array, Container, Optional, UniquePtr, pointers
+  const PlanNode* element_skip = nullptr;      // Array: elements beyond the reader's length, if any
+  std::uint64_t reader_count = 0;              // Array
+  std::uint32_t reader_stride = 0;             // Array: reader element size
+  std::vector<const PlanNode*> alternatives;   // Variant: per writer alternative
+  std::vector<std::uint32_t> alternative_map;  // Variant: reader index or kNoType
 
-  bool validated = false;    // reader type has a symcr_validate
+  bool validated = false;  // reader type has a symcr_validate
   // Struct: the writer's type differs from the reader's in its values (a field added, removed,
   // renamed or converted, at any depth; see docs/resolution.md), and the reader type has a
   // symcr_migrate hook (or, in a schema file, kTypeMigrated): restore calls `migrate`, which
@@ -118,33 +120,51 @@ struct RootPlan {
   std::uint32_t counter = 0;
 };
 
-struct Plan {
-  ParsedSchema writer_copy;  // the plan's own copy: its names outlive the caller's schema
-  SchemaBlob writer_blob;    // writer_copy's serialised form and its hash
+struct Plan final : ReportSource {
+  // The schema-level report, written on first use (a restore that is not strict and whose
+  // report is not read never writes it) and then kept; thread-safe.
+  const std::vector<ReportEntry>& entries() const override;
+  // Some schema-level decision loses data (what strict mode refuses); writes the report.
+  bool any_lossy() const;
+
+  // Owns *writer, whose names the cached plan must outlive the caller's schema with; null when
+  // the writer is the reader itself (restoring the same build).
+  std::shared_ptr<const ParsedSchema> writer_owner;
   const Schema* writer = nullptr;
   const Schema* reader = nullptr;
-  std::deque<PlanNode> nodes;                 // stable addresses
-  std::vector<RootPlan> roots;                // per writer root
-  std::vector<const PlanNode*> heap_nodes;    // per writer type: how a heap object maps
-  std::vector<std::uint32_t> shared_types;    // per reader type: a SharedPtr<it> type or kNoType
-  WireSizes wire_sizes;                       // per writer type (payload_grammar.hpp)
-  std::vector<ReportEntry> entries;           // schema-level report
-  std::vector<std::string> counter_paths;     // schema-level path per counter
-  bool any_lossy = false;
+  std::deque<PlanNode> nodes;               // stable addresses
+  std::vector<RootPlan> roots;              // per writer root
+  std::vector<const PlanNode*> heap_nodes;  // per writer type: how a heap object maps
+  std::vector<std::uint32_t> shared_types;  // per reader type: a SharedPtr<it> type or kNoType
+  WireSizes wire_sizes;                     // per writer type (payload_grammar.hpp)
+  // Per counter, its schema-level path "scope::name" (a root: its name alone), spelled only
+  // when a value-level entry needs it. The names point into the writer schema.
+  struct CounterPath {
+    const char* scope;  // a field's writer type name, or nullptr for a root
+    const char* name;
+  };
+  std::vector<CounterPath> counter_paths;
   // Every root kept and copy-only (see PlanNode::copy_only): restore checks the size and the
   // bools and copies, without the general decoder.
   bool copy_only_payload = false;
   std::uint64_t copy_only_payload_size = 0;
-  Status status;                              // Incompatible when nothing can be restored
+  Status status;  // Incompatible when nothing can be restored
+
+  // Written once by entries() (Planner::build_report).
+  mutable std::once_flag report_written;
+  mutable std::vector<ReportEntry> report_entries;
+  mutable bool report_lossy = false;
 };
 
 // The cached plan for restoring checkpoints written with `writer` (whose serialised form
-// hashes to `writer_hash`) into `reader`.
+// hashes to `writer_hash`) into `reader`. A new plan shares `writer_owner` (which owns
+// `writer`) if given, uses the reader if `writer` is the reader, and else keeps a copy.
 std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_hash,
-                                     const Schema& reader, Status& status);
+                                     const Schema& reader, Status& status,
+                                     std::shared_ptr<const ParsedSchema> writer_owner = nullptr);
 
 // A cached plan for (writer_hash, reader), or nullptr; no plan is built. For callers holding
-// an inline schema: when its bytes are the plan's writer_blob, it need not be hashed or parsed.
+// an inline schema: when its bytes are the plan's writer's, it need not be hashed or parsed.
 std::shared_ptr<const Plan> cached_plan(std::uint64_t writer_hash, const Schema& reader);
 
 bool names_match(const TypeInfo& writer, const TypeInfo& reader);

@@ -136,7 +136,8 @@ void Planner::fill(PlanNode& n) {
     case Kind::Array: {
       n.action = Action::Array;
       n.element = node(wt.element, rt.element);
-      n.element_skip = node(wt.element, kNoType);
+      // Only elements beyond the reader's length are skipped: no skip tree otherwise.
+      n.element_skip = wt.count > rt.count ? node(wt.element, kNoType) : nullptr;
       n.reader_count = rt.count;
       n.reader_stride = reader_.types[rt.element].size;
       if (wt.count > rt.count) {
@@ -338,7 +339,7 @@ void Planner::fill_struct(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
     const std::uint32_t match = match_field(wt, f, rt, reader_used);
     FieldPlan& field = n.fields[f];
     field.name = writer.name;
-    field.counter = new_counter(std::string(wt.name) + "::" + writer.name);
+    field.counter = new_counter(wt.name, writer.name);
     if (match == kNoType) {
       field.node = node(writer.type, kNoType);
       continue;

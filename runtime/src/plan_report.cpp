@@ -169,11 +169,13 @@ void Planner::build_report() {
     add_migration_entry(pointee, path);
     expand(pointee, path);
   }
-  for (const ReportEntry& entry : plan_.entries) plan_.any_lossy = plan_.any_lossy || entry.lossy;
+  for (const ReportEntry& entry : plan_.report_entries) {
+    plan_.report_lossy = plan_.report_lossy || entry.lossy;
+  }
 }
 
 void Planner::add(std::string path, Decision decision, std::string detail, bool lossy) {
-  plan_.entries.push_back(ReportEntry{std::move(path), decision, std::move(detail), lossy});
+  plan_.report_entries.push_back(ReportEntry{std::move(path), decision, std::move(detail), lossy});
 }
 
 void Planner::note_pointee(const PlanNode* n) {
@@ -268,3 +270,19 @@ void Planner::expand(const PlanNode* n, const std::string& path) {
 }
 
 }  // namespace symcr::detail::planning
+
+namespace symcr::detail {
+
+// The report is written from the finished plan: its nodes, decisions and migration hooks.
+__attribute__((cold)) const std::vector<ReportEntry>& Plan::entries() const {
+  std::call_once(report_written,
+                 [this] { planning::Planner(const_cast<Plan&>(*this)).build_report(); });
+  return report_entries;
+}
+
+bool Plan::any_lossy() const {
+  entries();
+  return report_lossy;
+}
+
+}  // namespace symcr::detail

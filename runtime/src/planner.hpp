@@ -45,6 +45,9 @@ class Planner {
   // Once per (writer, reader) pair, then cached: cold, so that it and what only it calls are
   // optimised for size (tens of KB of .text) and kept off the hot pages.
   __attribute__((cold, noinline)) void run();
+  // The schema-level report of a finished plan (Plan::entries()): touches only the plan's
+  // report fields.
+  __attribute__((cold)) void build_report();
 
  private:
   // Per writer type: the writer knew a class equal to it or derived from it that it could save
@@ -56,7 +59,7 @@ class Planner {
 
   __attribute__((cold)) void plan_roots();
 
-  __attribute__((cold)) std::uint32_t new_counter(std::string path);
+  __attribute__((cold)) std::uint32_t new_counter(const char* scope, const char* name);
 
   // ---- nodes ---------------------------------------------------------------------------
   __attribute__((cold)) const PlanNode* node(std::uint32_t writer, std::uint32_t reader);
@@ -159,8 +162,6 @@ class Planner {
   __attribute__((cold)) bool child_copy_only(const PlanNode* child);
 
   __attribute__((noinline, cold)) bool build_copy(PlanNode& n);
-
-  __attribute__((cold)) void build_report();
 
   __attribute__((cold)) void add(std::string path, Decision decision, std::string detail,
                                  bool lossy);

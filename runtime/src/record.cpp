@@ -40,8 +40,7 @@ std::uint32_t record_checksum(const std::uint8_t* record, std::size_t size) {
   static constexpr std::uint8_t kZero[4] = {};
   std::uint32_t crc = crc32c(record, kRecordChecksumOffset);
   crc = crc32c_extend(crc, kZero, sizeof kZero);
-  return crc32c_extend(crc, record + kRecordChecksumOffset + 4,
-                       size - kRecordChecksumOffset - 4);
+  return crc32c_extend(crc, record + kRecordChecksumOffset + 4, size - kRecordChecksumOffset - 4);
 }
 
 // True when `bytes` are exactly `blob`'s and `hash` is its hash: then the hash need not be
@@ -99,8 +98,8 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
     return Status(Error::NotACheckpoint, "not a symcr checkpoint (bad magic)");
   }
   if (size < kRecordHeaderSize) {
-    return Status(Error::Truncated, "truncated: %zu bytes, shorter than the %u-byte header",
-                  size, unsigned{kRecordHeaderSize});
+    return Status(Error::Truncated, "truncated: %zu bytes, shorter than the %u-byte header", size,
+                  unsigned{kRecordHeaderSize});
   }
   RecordHeader& h = out.header;
   h.format_version = le::load16(data + 8);
@@ -122,8 +121,8 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
   }
   if (h.format_version == 0) return Status(Error::Corrupt, "format version 0 is invalid");
   if (h.header_size < kRecordHeaderSize) {
-    return Status(Error::Corrupt, "header size %u is below the minimum %u",
-                  unsigned{h.header_size}, unsigned{kRecordHeaderSize});
+    return Status(Error::Corrupt, "header size %u is below the minimum %u", unsigned{h.header_size},
+                  unsigned{kRecordHeaderSize});
   }
   // 64-bit sum of 16- and 32-bit fields: cannot overflow.
   const std::uint64_t record_size = std::uint64_t{h.header_size} + h.schema_size + h.payload_size;
@@ -158,8 +157,8 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
 
 Status check_program(std::uint32_t writer_program_id, std::uint32_t reader_program_id,
                      const char* reader_name, bool accept_other_program) {
-  if (writer_program_id == 0 || reader_program_id == 0 ||
-      writer_program_id == reader_program_id || accept_other_program) {
+  if (writer_program_id == 0 || reader_program_id == 0 || writer_program_id == reader_program_id ||
+      accept_other_program) {
     return Status();
   }
   return Status(Error::Incompatible,
@@ -169,7 +168,8 @@ Status check_program(std::uint32_t writer_program_id, std::uint32_t reader_progr
 }
 
 Report restore_record(const RecordView& record, const Schema& writer, std::uint64_t writer_hash,
-                      const Schema& reader, const RestoreOptions& options) {
+                      const Schema& reader, const RestoreOptions& options,
+                      std::shared_ptr<const ParsedSchema> writer_owner) {
   const Status program = check_program(record.header.program_id, schema_blob(reader).program_id,
                                        reader.program, options.accept_other_program);
   if (!program.ok()) {
@@ -178,14 +178,14 @@ Report restore_record(const RecordView& record, const Schema& writer, std::uint6
     ReportAccess::set_sequence(report, record.header.sequence);
     return report;
   }
-  Report report = restore_payload(writer, writer_hash, record.payload, record.payload_size,
-                                  reader, options);
+  Report report = restore_payload(writer, writer_hash, record.payload, record.payload_size, reader,
+                                  options, std::move(writer_owner));
   ReportAccess::set_sequence(report, record.header.sequence);
   return report;
 }
 
-Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
-                                 const Schema& reader, const RestoreOptions& options) {
+Report restore_standalone_record(const std::uint8_t* data, std::size_t size, const Schema& reader,
+                                 const RestoreOptions& options) {
   Report report;
   RecordView record;
   // A known inline schema needs neither hashing nor parsing: the reader's own (written by this
@@ -196,7 +196,13 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
   if (size >= kRecordHeaderSize && le::load64(data + 32) != own.hash) {
     plan = cached_plan(le::load64(data + 32), reader);
   }
-  Status status = parse_record(data, size, record, plan ? &plan->writer_blob : &own);
+  SchemaBlob plan_blob;  // the cached plan's writer schema, to recognise it by its bytes
+  if (plan && plan->writer_owner) {
+    plan_blob.data = plan->writer_owner->bytes().data();
+    plan_blob.size = plan->writer_owner->bytes().size();
+    plan_blob.hash = plan->writer_owner->hash();
+  }
+  Status status = parse_record(data, size, record, plan_blob.data ? &plan_blob : &own);
   if (status.ok() && record.record_size != size) {
     status = Status(Error::Corrupt, "%zu unexpected bytes after the %zu-byte record",
                     size - record.record_size, record.record_size);
@@ -216,17 +222,20 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
   if (is_blob(&own, record.schema, record.header.schema_size, record.header.schema_hash)) {
     return restore_record(record, reader, own.hash, reader, options);
   }
-  if (plan && is_blob(&plan->writer_blob, record.schema, record.header.schema_size,
-                      record.header.schema_hash)) {
-    return restore_record(record, *plan->writer, record.header.schema_hash, reader, options);
+  if (plan_blob.data &&
+      is_blob(&plan_blob, record.schema, record.header.schema_size, record.header.schema_hash)) {
+    return restore_record(record, *plan->writer, record.header.schema_hash, reader, options,
+                          plan->writer_owner);
   }
-  ParsedSchema writer;
-  status = parse_schema(record.schema, record.header.schema_size, writer);
+  auto writer = std::make_shared<ParsedSchema>();
+  status = parse_schema(record.schema, record.header.schema_size, *writer);
   if (!status.ok()) {
     ReportAccess::set_status(report, status);
     return report;
   }
-  return restore_record(record, writer.schema(), record.header.schema_hash, reader, options);
+  const Schema& writer_schema = writer->schema();
+  return restore_record(record, writer_schema, record.header.schema_hash, reader, options,
+                        std::move(writer));
 }
 
 }  // namespace symcr::detail

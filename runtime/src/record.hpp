@@ -6,12 +6,15 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {
+
+class ParsedSchema;
 
 inline constexpr std::uint8_t kRecordMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'C', 'K', 'P'};
 inline constexpr std::uint16_t kRecordFormatVersion = 1;
@@ -63,14 +66,16 @@ Status check_program(std::uint32_t writer_program_id, std::uint32_t reader_progr
                      const char* reader_name, bool accept_other_program);
 
 // Restores a record validated by parse_record whose writer schema is `writer`, unless it is
-// another program's (check_program). The report carries the record's sequence.
+// another program's (check_program). The report carries the record's sequence. `writer_owner`:
+// as for restore_payload.
 Report restore_record(const RecordView& record, const Schema& writer, std::uint64_t writer_hash,
-                      const Schema& reader, const RestoreOptions& options);
+                      const Schema& reader, const RestoreOptions& options,
+                      std::shared_ptr<const ParsedSchema> writer_owner = nullptr);
 
 // Restores a complete, self-contained record (a single-file or in-memory checkpoint): it must
 // carry its schema inline and have no bytes after it.
-Report restore_standalone_record(const std::uint8_t* data, std::size_t size,
-                                 const Schema& reader, const RestoreOptions& options);
+Report restore_standalone_record(const std::uint8_t* data, std::size_t size, const Schema& reader,
+                                 const RestoreOptions& options);
 
 }  // namespace symcr::detail
 

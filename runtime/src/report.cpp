@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "report_access.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr {
@@ -21,13 +22,27 @@ __attribute__((cold)) void append_json_string(std::string& out, const std::strin
     const unsigned char c = bytes[i];
     if (c < 0x80) {
       switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\r': out += "\\r"; break;
-        case '\t': out += "\\t"; break;
-        case '\b': out += "\\b"; break;
-        case '\f': out += "\\f"; break;
+        case '"':
+          out += "\\\"";
+          break;
+        case '\\':
+          out += "\\\\";
+          break;
+        case '\n':
+          out += "\\n";
+          break;
+        case '\r':
+          out += "\\r";
+          break;
+        case '\t':
+          out += "\\t";
+          break;
+        case '\b':
+          out += "\\b";
+          break;
+        case '\f':
+          out += "\\f";
+          break;
         default:
           if (c < 0x20 || c == 0x7f) {
             char escaped[8];
@@ -43,13 +58,22 @@ __attribute__((cold)) void append_json_string(std::string& out, const std::strin
     // Multi-byte sequence: validate length, continuation bytes, overlongs and surrogates.
     std::size_t length = 0;
     std::uint32_t code = 0;
-    if ((c & 0xE0) == 0xC0) { length = 2; code = c & 0x1F; }
-    else if ((c & 0xF0) == 0xE0) { length = 3; code = c & 0x0F; }
-    else if ((c & 0xF8) == 0xF0) { length = 4; code = c & 0x07; }
+    if ((c & 0xE0) == 0xC0) {
+      length = 2;
+      code = c & 0x1F;
+    } else if ((c & 0xF0) == 0xE0) {
+      length = 3;
+      code = c & 0x0F;
+    } else if ((c & 0xF8) == 0xF0) {
+      length = 4;
+      code = c & 0x07;
+    }
     bool valid = length != 0 && i + length <= size;
     for (std::size_t k = 1; valid && k < length; ++k) {
-      if ((bytes[i + k] & 0xC0) != 0x80) valid = false;
-      else code = (code << 6) | (bytes[i + k] & 0x3F);
+      if ((bytes[i + k] & 0xC0) != 0x80)
+        valid = false;
+      else
+        code = (code << 6) | (bytes[i + k] & 0x3F);
     }
     if (valid) {
       static const std::uint32_t kMinimum[5] = {0, 0, 0x80, 0x800, 0x10000};
@@ -68,10 +92,14 @@ __attribute__((cold)) void append_json_string(std::string& out, const std::strin
 
 }  // namespace
 
+const std::vector<ReportEntry>& Report::entries() const {
+  return source_ ? source_->entries() : entries_;
+}
+
 void Report::add(std::string path, Decision decision, std::string detail, bool lossy) {
-  if (shared_entries_) {
-    entries_ = *shared_entries_;
-    shared_entries_.reset();
+  if (source_) {
+    entries_ = source_->entries();
+    source_.reset();
   }
   entries_.push_back(ReportEntry{std::move(path), decision, std::move(detail), lossy});
 }
@@ -82,10 +110,9 @@ Report::Report(Report&& other) noexcept = default;
 Report& Report::operator=(const Report& other) = default;
 Report& Report::operator=(Report&& other) noexcept = default;
 
-void Report::set_shared_entries(std::shared_ptr<const std::vector<ReportEntry>> entries) {
+void Report::set_source(std::shared_ptr<const detail::ReportSource> source) {
   entries_.clear();
-  shared_entries_ = std::move(entries);
-  if (shared_entries_ && shared_entries_->empty()) shared_entries_.reset();
+  source_ = std::move(source);
 }
 
 std::size_t Report::count(Decision decision) const {

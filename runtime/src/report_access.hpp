@@ -13,6 +13,15 @@
 
 namespace symcr::detail {
 
+// Entries a report shares instead of copying (a cached plan's schema-level entries), written
+// by the source when first asked for.
+struct ReportSource {
+  virtual const std::vector<ReportEntry>& entries() const = 0;
+
+ protected:
+  ~ReportSource() = default;
+};
+
 struct ReportAccess {
   static void set_status(Report& report, const Status& status) { report.status_ = status; }
   static void set_sequence(Report& report, std::uint64_t sequence) { report.sequence_ = sequence; }
@@ -20,11 +29,10 @@ struct ReportAccess {
                   bool lossy) {
     report.add(std::move(path), decision, std::move(detail), lossy);
   }
-  // Starts an empty report with `entries` (shared, not copied: a cached plan's schema-level
-  // entries); a later add() copies them first.
-  static void set_shared_entries(Report& report,
-                                 std::shared_ptr<const std::vector<ReportEntry>> entries) {
-    report.set_shared_entries(std::move(entries));
+  // Starts an empty report with the entries of `source` (shared, not copied); a later add()
+  // copies them first.
+  static void set_source(Report& report, std::shared_ptr<const ReportSource> source) {
+    report.set_source(std::move(source));
   }
 };
 

@@ -121,18 +121,18 @@ bool restore_copy_only(const Plan& plan, const std::uint8_t* payload, std::size_
 
 Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,
                    std::size_t size, const Schema& reader, const RestoreOptions& options,
-                   bool plan_only, bool apply) {
+                   bool plan_only, bool apply, std::shared_ptr<const ParsedSchema> writer_owner) {
   Report report;
   Status status;
-  std::shared_ptr<const Plan> plan = plan_for(writer, writer_hash, reader, status);
+  std::shared_ptr<const Plan> plan =
+      plan_for(writer, writer_hash, reader, status, std::move(writer_owner));
   if (!plan) {
     ReportAccess::set_status(report, status);
     return report;
   }
   // The schema-level entries depend only on the plan: shared with it, copied only if a
   // value-level entry is added.
-  ReportAccess::set_shared_entries(
-      report, std::shared_ptr<const std::vector<ReportEntry>>(plan, &plan->entries));
+  ReportAccess::set_source(report, plan);
   if (!plan->status.ok()) {
     ReportAccess::set_status(report, plan->status);
     return report;
@@ -141,7 +141,7 @@ Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::u
     ReportAccess::set_status(report, Status(Error::Corrupt, "invalid payload: no bytes"));
     return report;
   }
-  const bool strict_refusal = options.strict && plan->any_lossy;
+  const bool strict_refusal = options.strict && plan->any_lossy();
   if (!plan_only && !strict_refusal && plan->copy_only_payload &&
       restore_copy_only(*plan, payload, size, apply)) {
     last_restore_scratch = 0;  // no decoding tables
@@ -157,7 +157,7 @@ Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::u
     }
     value_rejections = restorer.value_rejections();
   }
-  if (options.strict && (plan->any_lossy || value_rejections > 0)) {
+  if (options.strict && (value_rejections > 0 || plan->any_lossy())) {
     const ReportEntry* first = nullptr;
     for (const ReportEntry& entry : report.entries()) {
       if (entry.lossy) {
@@ -187,14 +187,17 @@ ScratchBytes thread_scratch_bytes() {
 }
 
 Report restore_payload(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,
-                       std::size_t size, const Schema& reader, const RestoreOptions& options) {
-  return run_restore(writer, writer_hash, payload, size, reader, options, false, true);
+                       std::size_t size, const Schema& reader, const RestoreOptions& options,
+                       std::shared_ptr<const ParsedSchema> writer_owner) {
+  return run_restore(writer, writer_hash, payload, size, reader, options, false, true,
+                     std::move(writer_owner));
 }
 
 Report plan_payload(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,
                     std::size_t size, const Schema& reader, const RestoreOptions& options) {
   const bool plan_only = payload == nullptr && size == 0;
-  return run_restore(writer, writer_hash, payload, size, reader, options, plan_only, false);
+  return run_restore(writer, writer_hash, payload, size, reader, options, plan_only, false,
+                     nullptr);
 }
 
 }  // namespace symcr::detail

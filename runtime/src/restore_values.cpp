@@ -52,7 +52,9 @@ void Restorer::summarise_rejections() {
 }
 
 std::string Restorer::counter_path(std::uint32_t counter) const {
-  return counter < plan_.counter_paths.size() ? plan_.counter_paths[counter] : "heap objects";
+  if (counter >= plan_.counter_paths.size()) return "heap objects";
+  const Plan::CounterPath& path = plan_.counter_paths[counter];
+  return path.scope ? std::string(path.scope) + "::" + path.name : std::string(path.name);
 }
 
 // ---- objects: roots then heap objects ------------------------------------------------

@@ -23,6 +23,7 @@ struct ParsedSchema::Storage {
   std::vector<const char*> aliases;  // nullptr-terminated groups
   Schema schema{};
   std::uint64_t hash = 0;
+  std::vector<std::uint8_t> bytes;
 };
 
 ParsedSchema::ParsedSchema() : storage(new Storage()) {}
@@ -31,6 +32,7 @@ ParsedSchema::ParsedSchema(ParsedSchema&&) noexcept = default;
 ParsedSchema& ParsedSchema::operator=(ParsedSchema&&) noexcept = default;
 const Schema& ParsedSchema::schema() const { return storage->schema; }
 std::uint64_t ParsedSchema::hash() const { return storage->hash; }
+const std::vector<std::uint8_t>& ParsedSchema::bytes() const { return storage->bytes; }
 
 namespace {
 
@@ -141,8 +143,8 @@ class Parser {
     TypeInfo type{};
     TypeFixup fixup{kNone, kNone, kNone, kNone, kNone, kNone};
     std::uint8_t kind = 0;
-    if (!in_.read(kind) || !in_.read(type.flags) || !in_.read(type.size) ||
-        !in_.read(type.align) || !read_str(fixup.name) || !read_aliases(fixup.aliases) ||
+    if (!in_.read(kind) || !in_.read(type.flags) || !in_.read(type.size) || !in_.read(type.align) ||
+        !read_str(fixup.name) || !read_aliases(fixup.aliases) ||
         ((type.flags & kTypeLeavesMembers) && !read_aliases(fixup.left_to_new_build))) {
       return truncated("type");
     }
@@ -182,8 +184,8 @@ class Parser {
           FieldInfo field{};
           NamedFixup named{};
           if (!read_str(named.name) || !in_.read(field.type) || !in_.read(field.offset) ||
-              !in_.read(field.bit_offset) || !in_.read(field.bit_width) ||
-              !in_.read(field.flags) || !read_aliases(named.aliases)) {
+              !in_.read(field.bit_offset) || !in_.read(field.bit_width) || !in_.read(field.flags) ||
+              !read_aliases(named.aliases)) {
             return truncated("field");
           }
           if ((field.flags & kFieldHasRange) &&
@@ -195,8 +197,8 @@ class Parser {
                            field.type);
           }
           if (field.bit_width > 64 || field.bit_offset > 4096) {
-            return corrupt("field %u of type %u has bit-field %u:%u", f, index,
-                           field.bit_offset, field.bit_width);
+            return corrupt("field %u of type %u has bit-field %u:%u", f, index, field.bit_offset,
+                           field.bit_width);
           }
           s_.fields.push_back(field);
           field_fixups_.push_back(named);
@@ -245,8 +247,7 @@ class Parser {
         }
         if (type.container_kind < static_cast<std::uint8_t>(ContainerKind::Vector) ||
             type.container_kind > static_cast<std::uint8_t>(ContainerKind::UnorderedMultiMap)) {
-          return corrupt("container %u has unknown container kind %u", index,
-                         type.container_kind);
+          return corrupt("container %u has unknown container kind %u", index, type.container_kind);
         }
         if (!check_index(type.element)) return corrupt("container %u element out of range", index);
         break;
@@ -394,6 +395,7 @@ Status parse_schema(const std::uint8_t* data, std::size_t size, ParsedSchema& ou
   Status status = parser.run();
   if (!status.ok()) return status;
   parsed.storage->hash = fnv1a64(data, size);
+  parsed.storage->bytes.assign(data, data + size);
   out = std::move(parsed);
   return Status();
 }

@@ -23,9 +23,9 @@
 #include "little_endian.hpp"
 #include "program_schema.hpp"
 #include "record.hpp"
+#include "report_access.hpp"
 #include "store_layout.hpp"
 #include "symcr/symcr.hpp"
-#include "report_access.hpp"
 
 namespace symcr {
 namespace {
@@ -157,10 +157,10 @@ struct Store::Impl {
     return Status();
   }
 
-  Status load_areas(int fd) {
+  Status load_areas(int fd, const Schema& own) {
     for (int i = 0; i < 2; ++i) {
       Status status = detail::load_store_area(fd, path.c_str(), geometry.area_offset(i),
-                                              geometry.schema_area_size, areas[i]);
+                                              geometry.schema_area_size, &own, areas[i]);
       if (!status.ok()) return status;
     }
     return Status();
@@ -183,11 +183,10 @@ struct Store::Impl {
     std::vector<std::uint8_t> area_bytes(detail::kStoreAreaHeaderSize + blob.size);
     detail::le::store64(area_bytes.data(), blob.hash);
     detail::le::store32(area_bytes.data() + 8, static_cast<std::uint32_t>(blob.size));
-    std::memcpy(area_bytes.data() + detail::kStoreAreaHeaderSize, blob.data,
-                blob.size);
-    detail::le::store32(area_bytes.data() + 12,
-                        detail::crc32c_extend(detail::crc32c(area_bytes.data(), 12),
-                                              blob.data, blob.size));
+    std::memcpy(area_bytes.data() + detail::kStoreAreaHeaderSize, blob.data, blob.size);
+    detail::le::store32(
+        area_bytes.data() + 12,
+        detail::crc32c_extend(detail::crc32c(area_bytes.data(), 12), blob.data, blob.size));
     // Forget the old area before overwriting it: a failed write leaves it unusable either way.
     areas[target] = StoreSchemaArea();
     for (Slot& slot : slots) {
@@ -202,8 +201,7 @@ struct Store::Impl {
       status = detail::io_error("cannot fdatasync", path.c_str(), errno);
     }
     if (!status.ok()) return status;
-    status = detail::parse_schema(blob.data, blob.size, areas[target].schema);
-    if (!status.ok()) return status;
+    areas[target].own = &schema;
     areas[target].valid = true;
     areas[target].hash = blob.hash;
     areas[target].size = static_cast<std::uint32_t>(blob.size);
@@ -225,8 +223,8 @@ struct Store::Impl {
     const int rc = ::posix_fallocate(fd, 0, static_cast<off_t>(g.file_size()));
     if (rc != 0) return detail::io_error("cannot preallocate", file, rc);
     for (const Copy& copy : copies) {
-      Status status = detail::pwrite_all(fd, copy.bytes, copy.size,
-                                         static_cast<off_t>(copy.offset), file);
+      Status status =
+          detail::pwrite_all(fd, copy.bytes, copy.size, static_cast<off_t>(copy.offset), file);
       if (!status.ok()) return status;
     }
     std::uint8_t header[detail::kStoreHeaderSize];
@@ -248,7 +246,8 @@ struct Store::Impl {
   // Rewrites the store with the requested geometry: a new file, renamed over the old one, that
   // holds both schema areas and the newest valid checkpoints (as many as fit, the newest
   // first). The old file is untouched until the rename. On success `fd` is the new file's.
-  Status apply_requested_geometry(int& fd, std::size_t own_schema_bytes) {
+  Status apply_requested_geometry(int& fd, const Schema& own) {
+    const std::size_t own_schema_bytes = detail::schema_blob(own).size;
     Status status = scan_slots(fd);
     if (!status.ok()) return status;
     StoreGeometry target =
@@ -267,7 +266,8 @@ struct Store::Impl {
       status = detail::pread_full(fd, kept.back().data(), kept.back().size(),
                                   static_cast<off_t>(area_offsets[i]), got, path.c_str());
       if (!status.ok()) return status;
-      if (got != kept.back().size()) return Status(Error::Io, "%s: a schema area changed", path.c_str());
+      if (got != kept.back().size())
+        return Status(Error::Io, "%s: a schema area changed", path.c_str());
     }
     newest_first.clear();
     for (std::uint32_t i = 0; i < slots.size(); ++i) {
@@ -323,7 +323,7 @@ struct Store::Impl {
     geometry_pending = false;
     geometry = target;
     lay_out_slots();
-    status = load_areas(fd);
+    status = load_areas(fd, own);
     if (status.ok()) status = scan_slots(fd);
     if (status.ok()) status = detail::sync_parent_directory(path.c_str());
     return status;
@@ -434,8 +434,10 @@ namespace {
 
 Status open_error(const char* path, int error_number) {
   if (error_number == ELOOP) {
-    return Status(Error::Io, "cannot open store %s: it is a symbolic link, which symcr does "
-                  "not follow", path);
+    return Status(Error::Io,
+                  "cannot open store %s: it is a symbolic link, which symcr does "
+                  "not follow",
+                  path);
   }
   return detail::io_error("cannot open store", path, error_number);
 }
@@ -472,8 +474,8 @@ Status Store::open_impl(const char* path, const Schema& schema, const StoreOptio
   return Status();
 }
 
-Status Store::open_descriptor(const char* path, const Schema& schema,
-                              const StoreOptions& options, bool writable, Store& out) {
+Status Store::open_descriptor(const char* path, const Schema& schema, const StoreOptions& options,
+                              bool writable, Store& out) {
   const detail::SchemaBlob& blob = detail::schema_blob(schema);
   bool created = false;
   std::string read_only_reason;
@@ -554,7 +556,7 @@ Status Store::open_descriptor(const char* path, const Schema& schema,
     if (!status.ok()) return creation_failed(status);
     impl.become_empty(wanted);
   } else if (header_status.ok()) {
-    status = impl.load_areas(fd);
+    status = impl.load_areas(fd, schema);
     if (status.ok()) status = impl.scan_slots(fd);  // slots past a truncation read as empty
     if (!status.ok()) return status;
     if (can_write && file_size < impl.geometry.file_size()) {
@@ -598,7 +600,7 @@ Status Store::save() {
   Status status = detail::encode_record(*schema_, /*inline_schema=*/false, sequence, impl.record);
   if (!status.ok()) return status;
   if (impl.geometry_pending) {
-    status = impl.apply_requested_geometry(fd_, detail::schema_blob(*schema_).size);
+    status = impl.apply_requested_geometry(fd_, *schema_);
     if (!status.ok()) return status;
     impl.own_area = impl.area_for_hash(detail::schema_blob(*schema_).hash);
     options_.slots = impl.geometry.slot_count;
@@ -683,8 +685,8 @@ Report Store::restore_latest(const RestoreOptions& options) {
       area_index = reread.area;
     }
     const StoreSchemaArea& area = impl.areas[area_index];
-    report = detail::restore_record(*record, area.schema.schema(), area.hash, *schema_,
-                                    options);
+    report =
+        detail::restore_record(*record, area.schema(), area.hash, *schema_, options, area.parsed);
     const Error error = report.status().error();
     if (error != Error::Corrupt && error != Error::Truncated) return report;
     ++rejected;
@@ -699,12 +701,13 @@ Report Store::restore_latest(const RestoreOptions& options) {
     future += slot.state == StoreSlotState::FutureVersion;
   }
   report.clear();
-  detail::ReportAccess::set_status(report, Status(
-      Error::NoValidSlot,
-      "%s: no restorable checkpoint in %zu slots (%u empty, %u corrupt or torn, %u with an "
-      "unknown schema, %u from a future format, %u rejected by restore%s%s)",
-      impl.path.c_str(), impl.slots.size(), empty, corrupt, unknown, future, rejected,
-      rejected ? ": " : "", rejected ? last_rejection.message() : ""));
+  detail::ReportAccess::set_status(
+      report,
+      Status(Error::NoValidSlot,
+             "%s: no restorable checkpoint in %zu slots (%u empty, %u corrupt or torn, %u with an "
+             "unknown schema, %u from a future format, %u rejected by restore%s%s)",
+             impl.path.c_str(), impl.slots.size(), empty, corrupt, unknown, future, rejected,
+             rejected ? ": " : "", rejected ? last_rejection.message() : ""));
   return report;
 }
 

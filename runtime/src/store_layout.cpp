@@ -26,8 +26,7 @@ std::uint64_t round_up_to_page(std::uint64_t n) {
 
 // The size a record header claims for its whole record.
 std::uint64_t claimed_record_size(const std::uint8_t* header) {
-  return std::uint64_t{le::load16(header + 10)} + le::load32(header + 40) +
-         le::load32(header + 44);
+  return std::uint64_t{le::load16(header + 10)} + le::load32(header + 40) + le::load32(header + 44);
 }
 
 }  // namespace
@@ -94,7 +93,7 @@ Status decode_store_header(const std::uint8_t* p, std::size_t size, const char* 
 }
 
 Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint64_t capacity,
-                       StoreSchemaArea& area) {
+                       const Schema* own, StoreSchemaArea& area) {
   area = StoreSchemaArea();
   std::uint8_t head[kStoreAreaHeaderSize];
   std::size_t got = 0;
@@ -111,10 +110,17 @@ Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint
   if (!status.ok()) return status;
   const std::uint64_t hash = le::load64(head);
   const std::uint32_t crc = crc32c_extend(crc32c(head, 12), bytes.data(), size);
-  if (got < size || crc != le::load32(head + 12) || fnv1a64(bytes.data(), size) != hash ||
-      !parse_schema(bytes.data(), size, area.schema).ok()) {
-    area = StoreSchemaArea();
-    return Status();
+  if (got < size || crc != le::load32(head + 12)) return Status();
+  const SchemaBlob* own_blob = own ? &schema_blob(*own) : nullptr;
+  if (own_blob && own_blob->hash == hash && own_blob->size == size &&
+      std::memcmp(own_blob->data, bytes.data(), size) == 0) {
+    area.own = own;  // the bytes are the blob the hash was computed over: nothing to check
+  } else {
+    auto parsed = std::make_shared<ParsedSchema>();
+    if (fnv1a64(bytes.data(), size) != hash || !parse_schema(bytes.data(), size, *parsed).ok()) {
+      return Status();
+    }
+    area.parsed = std::move(parsed);
   }
   area.valid = true;
   area.hash = hash;
@@ -124,11 +130,16 @@ Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint
 
 const char* store_slot_state_name(StoreSlotState state) {
   switch (state) {
-    case StoreSlotState::Valid: return "valid";
-    case StoreSlotState::Empty: return "empty";
-    case StoreSlotState::Corrupt: return "corrupt";
-    case StoreSlotState::UnknownSchema: return "unknown-schema";
-    case StoreSlotState::FutureVersion: return "future-version";
+    case StoreSlotState::Valid:
+      return "valid";
+    case StoreSlotState::Empty:
+      return "empty";
+    case StoreSlotState::Corrupt:
+      return "corrupt";
+    case StoreSlotState::UnknownSchema:
+      return "unknown-schema";
+    case StoreSlotState::FutureVersion:
+      return "future-version";
   }
   return "?";
 }
@@ -146,7 +157,8 @@ Status read_store_slot(int fd, const char* path, std::uint64_t offset, std::uint
     // Never written, or cut off by a truncated file: nothing to restore either way.
     if (got > 0 && !all_zero(buffer.data(), std::min<std::size_t>(got, 8))) {
       out.state = StoreSlotState::Corrupt;
-      if (problem) *problem = Status(Error::Truncated, "the record is cut off by the end of the file");
+      if (problem)
+        *problem = Status(Error::Truncated, "the record is cut off by the end of the file");
     }
     return Status();
   }
@@ -156,8 +168,8 @@ Status read_store_slot(int fd, const char* path, std::uint64_t offset, std::uint
   if (wanted > got && got == first) {
     if (buffer.size() < wanted) buffer.resize(wanted);
     std::size_t more = 0;
-    status = pread_full(fd, buffer.data() + got, wanted - got,
-                        static_cast<off_t>(offset + got), more, path);
+    status = pread_full(fd, buffer.data() + got, wanted - got, static_cast<off_t>(offset + got),
+                        more, path);
     if (!status.ok()) return status;
     got += more;
   }
@@ -170,7 +182,8 @@ Status read_store_slot(int fd, const char* path, std::uint64_t offset, std::uint
   }
   if (view.schema != nullptr) {  // store records reference their schema; never inline
     out.state = StoreSlotState::Corrupt;
-    if (problem) *problem = Status(Error::Corrupt, "a store slot's record carries an inline schema");
+    if (problem)
+      *problem = Status(Error::Corrupt, "a store slot's record carries an inline schema");
     return Status();
   }
   for (int i = 0; i < 2; ++i) {
@@ -198,8 +211,8 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
   std::uint64_t position = kStorePageSize;
   while (position + kRecordHeaderSize <= file_size) {
     std::size_t got = 0;
-    Status status = pread_full(fd, chunk.data(), chunk.size(), static_cast<off_t>(position),
-                               got, path);
+    Status status =
+        pread_full(fd, chunk.data(), chunk.size(), static_cast<off_t>(position), got, path);
     if (!status.ok()) return status;
     if (got < sizeof kRecordMagic) break;
     const std::uint8_t* hit = static_cast<const std::uint8_t*>(
@@ -237,7 +250,8 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
   for (std::uint64_t area_size = kStoreMinSchemaAreaSize;
        kStorePageSize + 2 * area_size <= areas_end; area_size += kStorePageSize) {
     StoreSchemaArea candidate;
-    Status status = load_store_area(fd, path, kStorePageSize + area_size, area_size, candidate);
+    Status status =
+        load_store_area(fd, path, kStorePageSize + area_size, area_size, nullptr, candidate);
     if (!status.ok()) return status;
     if (candidate.valid) {
       out.areas[1] = std::move(candidate);
@@ -247,10 +261,11 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
     }
   }
   out.area_offsets[0] = kStorePageSize;
-  out.area_capacities[0] = out.areas[1].valid ? out.area_capacities[1]
-                                              : (areas_end > kStorePageSize
-                                                     ? areas_end - kStorePageSize : 0);
-  return load_store_area(fd, path, out.area_offsets[0], out.area_capacities[0], out.areas[0]);
+  out.area_capacities[0] = out.areas[1].valid
+                               ? out.area_capacities[1]
+                               : (areas_end > kStorePageSize ? areas_end - kStorePageSize : 0);
+  return load_store_area(fd, path, out.area_offsets[0], out.area_capacities[0], nullptr,
+                         out.areas[0]);
 }
 
 bool salvage_fits_geometry(const StoreSalvage& salvage, const StoreGeometry& g,

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "engine.hpp"
@@ -52,15 +53,21 @@ Status decode_store_header(const std::uint8_t* data, std::size_t size, const cha
                            StoreGeometry& out);
 
 struct StoreSchemaArea {
-  bool valid = false;      // CRC, hash and schema all hold
+  bool valid = false;  // CRC, hash and schema all hold
   std::uint64_t hash = 0;
   std::uint32_t size = 0;  // bytes of serialised schema
-  ParsedSchema schema;
+  // The area's schema: the opening build's own when the area holds exactly its serialised form
+  // (then nothing is parsed), else parsed and shared with the plans built from it, which may
+  // outlive the store.
+  const Schema* own = nullptr;
+  std::shared_ptr<const ParsedSchema> parsed;
+  const Schema& schema() const { return own ? *own : parsed->schema(); }
 };
 // Loads the schema area at `offset` holding at most `capacity` bytes (its header included).
-// A damaged or empty area is loaded as not valid; only an I/O error is a failure.
+// A damaged or empty area is loaded as not valid; only an I/O error is a failure. `own`, if
+// given, is the opening build's schema, recognised by its bytes instead of parsed.
 Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint64_t capacity,
-                       StoreSchemaArea& out);
+                       const Schema* own, StoreSchemaArea& out);
 
 enum class StoreSlotState : std::uint8_t {
   Valid,          // the record validates and its schema area is valid

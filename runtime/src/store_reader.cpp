@@ -39,7 +39,7 @@ Status StoreReader::open(const char* path) {
   }
   for (int i = 0; i < 2; ++i) {
     status = load_store_area(fd_, path, geometry_.area_offset(i), geometry_.schema_area_size,
-                             areas_[i]);
+                             nullptr, areas_[i]);
     if (!status.ok()) return status;
   }
   slots_.assign(geometry_.slot_count, StoreSlot());
@@ -82,8 +82,8 @@ Status StoreReader::read_record(std::uint32_t index, std::vector<std::uint8_t>& 
                                 RecordView& view, int& area) const {
   area = -1;
   if (index >= slots_.size()) {
-    return Status(Error::Io, "%s has %zu slots; there is no slot %u", path_.c_str(),
-                  slots_.size(), index);
+    return Status(Error::Io, "%s has %zu slots; there is no slot %u", path_.c_str(), slots_.size(),
+                  index);
   }
   StoreSlot slot;
   Status status = classify_slot(index, bytes, view, slot);

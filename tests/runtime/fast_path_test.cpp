@@ -13,8 +13,8 @@
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
 #include "plan.hpp"
-#include "symcr/ops.hpp"
 #include "report_access.hpp"
+#include "symcr/ops.hpp"
 
 namespace engine_tests {
 namespace {
@@ -22,7 +22,7 @@ namespace {
 struct VRoot {
   std::vector<double> doubles;
   std::vector<std::int32_t> ints;
-  std::int32_t* into = nullptr;  // points into `ints`
+  std::int32_t* into = nullptr;   // points into `ints`
   std::deque<std::int32_t> bits;  // not contiguous: the general path
 };
 VRoot vroot;
@@ -101,8 +101,8 @@ TEST(FastPath, TruncatedContiguousContainerFailsWithStateUntouched) {
   const Saved saved = save(vroot_schema());
   vroot.doubles = {9};
   vroot.ints = {8};
-  for (std::size_t size : {std::size_t{3}, std::size_t{4}, std::size_t{4 + 8 * 50},
-                           std::size_t{4 + 8 * 100 + 6}}) {
+  for (std::size_t size :
+       {std::size_t{3}, std::size_t{4}, std::size_t{4 + 8 * 50}, std::size_t{4 + 8 * 100 + 6}}) {
     const symcr::Report report = load(saved, vroot_schema(), false, size);
     EXPECT_FALSE(report.ok()) << size;
     EXPECT_EQ(vroot.doubles, (std::vector<double>{9})) << size;
@@ -126,9 +126,12 @@ const symcr::Schema& flat_schema() {
       field("b", 2, offsetof(Flat, b)), field("c", 4, offsetof(Flat, c)),
       field("flags", 5, offsetof(Flat, flags))};
   static const symcr::TypeInfo types[] = {
-      scalar("int32", Kind::Int, 4),         scalar("bool", Kind::Bool, 1),
-      scalar("double", Kind::Float, 8),      scalar("int16", Kind::Int, 2),
-      array("int16[3]", 3, 3, 6, 2),         array("bool[2]", 1, 2, 2, 1),
+      scalar("int32", Kind::Int, 4),
+      scalar("bool", Kind::Bool, 1),
+      scalar("double", Kind::Float, 8),
+      scalar("int16", Kind::Int, 2),
+      array("int16[3]", 3, 3, 6, 2),
+      array("bool[2]", 1, 2, 2, 1),
       record("Flat", sizeof(Flat), alignof(Flat), fields, 5),
   };
   static const symcr::RootInfo roots[] = {{"flat", 6, &flat, 0, nullptr}};
@@ -187,9 +190,12 @@ const symcr::Schema& flat_moved_schema() {
       field("added", 7, offsetof(FlatMoved, added)), field("c", 4, offsetof(FlatMoved, c)),
       field("flag", 1, offsetof(FlatMoved, flag)),   field("a", 0, offsetof(FlatMoved, a))};
   static const symcr::TypeInfo types[] = {
-      scalar("int32", Kind::Int, 4),         scalar("bool", Kind::Bool, 1),
-      scalar("double", Kind::Float, 8),      scalar("int16", Kind::Int, 2),
-      array("int16[3]", 3, 3, 6, 2),         array("bool[2]", 1, 2, 2, 1),
+      scalar("int32", Kind::Int, 4),
+      scalar("bool", Kind::Bool, 1),
+      scalar("double", Kind::Float, 8),
+      scalar("int16", Kind::Int, 2),
+      array("int16[3]", 3, 3, 6, 2),
+      array("bool[2]", 1, 2, 2, 1),
       record("Flat", sizeof(FlatMoved), alignof(FlatMoved), fields, 6),
       scalar("int64", Kind::Int, 8),
   };
@@ -327,8 +333,10 @@ const symcr::Schema& bits_schema() {
       bit_field("delta", 1, delta_at, 5), bit_field("on", 2, on_at, 1),
       field("whole", 3, offsetof(Bits, whole))};
   static const symcr::TypeInfo types[] = {
-      scalar("uint8", Kind::UInt, 1), scalar("int16", Kind::Int, 2),
-      scalar("bool", Kind::Bool, 1),  scalar("int32", Kind::Int, 4),
+      scalar("uint8", Kind::UInt, 1),
+      scalar("int16", Kind::Int, 2),
+      scalar("bool", Kind::Bool, 1),
+      scalar("int32", Kind::Int, 4),
       record("Bits", sizeof(Bits), alignof(Bits), fields, 5),
   };
   static const symcr::RootInfo roots[] = {{"bits", 4, &bits, 0, nullptr}};
@@ -423,6 +431,34 @@ TEST(FastPath, ScratchStatisticsSeeTheTablesOfTheGeneralPathOnly) {
   EXPECT_EQ(symcr::detail::thread_scratch_bytes().restore, 0u);  // copy-only: no tables
   // Kept between checkpoints for reuse: a smaller checkpoint does not shrink it.
   EXPECT_GE(symcr::detail::thread_scratch_bytes().checkpoint, checkpoint_scratch);
+}
+
+// The schema-level report is the slow part of a plan: a restore that is not strict writes it
+// only when the report's entries are first read; a strict one needs it to decide.
+TEST(FastPath, TheSchemaLevelReportIsWrittenWhenFirstAsked) {
+  static const symcr::Schema reader = flat_moved_schema();  // a plan of its own
+  flat = Flat{3, false, 0.5, {4, 5, 6}, {true, true}};
+  const Saved saved = save(flat_schema());
+  const symcr::Report report = load(saved, reader);
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(flat_moved.a, 3);
+  const auto plan = symcr::detail::cached_plan(saved.hash, reader);
+  ASSERT_TRUE(plan);
+  EXPECT_TRUE(plan->report_entries.empty());
+  ASSERT_FALSE(report.entries().empty());
+  EXPECT_EQ(plan->report_entries.size(), report.entries().size());
+  EXPECT_EQ(report.count(symcr::Decision::Kept), 2u);  // the added field and root
+}
+
+TEST(FastPath, AStrictRestoreWritesTheReportToDecide) {
+  static const symcr::Schema reader = flat_moved_schema();
+  flat = Flat{3, false, 0.5, {4, 5, 6}, {true, true}};
+  const Saved saved = save(flat_schema());
+  ASSERT_TRUE(load(saved, reader, /*strict=*/true).ok());
+  const auto plan = symcr::detail::cached_plan(saved.hash, reader);
+  ASSERT_TRUE(plan);
+  EXPECT_FALSE(plan->report_entries.empty());
+  EXPECT_FALSE(plan->any_lossy());
 }
 
 TEST(FastPath, ReportsAreIndependentCopies) {

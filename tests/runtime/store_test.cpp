@@ -1,5 +1,6 @@
 // The checkpoint store (docs/format.md §4): the ring, fallback past torn and corrupt slots,
 // a new build reading the previous build's checkpoints, geometry, durability and file safety.
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -11,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "crc32c.hpp"
+#include "engine.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
 #include "little_endian.hpp"
+#include "plan.hpp"
 #include "symcr/symcr.hpp"
 
 // Counts every allocation through operator new in this test binary: the store's save() must
@@ -369,6 +370,60 @@ TEST_F(StoreTest, NewBuildRestoresThePreviousBuildsCheckpointAndKeepsItUntilItSa
   EXPECT_EQ(copter_b.ticks, 6000);
 }
 
+// A fresh process restoring its own build's checkpoint parses no schema and copies none: the
+// store's area is recognised as this build's by its bytes, and the plan restores the build's
+// schema into itself.
+TEST_F(StoreTest, TheBuildsOwnSchemaAreaServesAsItsSchemaWithoutACopy) {
+  save_seeds(1, 2);
+  static const symcr::Schema reader = schema_a;  // its own plan, whatever ran before
+  symcr::Store store;
+  open(store, reader);
+  scramble_a();
+  const symcr::Report report = store.restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  expect_a(2);
+  const auto plan = symcr::detail::cached_plan(symcr::detail::schema_blob(reader).hash, reader);
+  ASSERT_TRUE(plan);
+  EXPECT_EQ(plan->writer, &reader);
+  EXPECT_FALSE(plan->writer_owner);
+}
+
+// The plan for an earlier build's area shares the store's parsed schema instead of copying it,
+// and must outlive the store: closed and deleted, the cached plan still restores that build's
+// checkpoints (the sanitizer build would see any use of the freed area).
+TEST_F(StoreTest, APlanOutlivesTheStoreWhoseSchemaAreaItWasBuiltFrom) {
+  save_seeds(1, 3);
+  static const symcr::Schema reader = schema_b;
+  std::uint64_t writer_hash = 0;
+  {
+    symcr::Store store;
+    open(store, reader);
+    copter_b = CopterB{};
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(copter_b.ticks, 1003);
+    writer_hash = symcr::detail::schema_blob(schema_a).hash;
+    const auto plan = symcr::detail::cached_plan(writer_hash, reader);
+    ASSERT_TRUE(plan);
+    EXPECT_TRUE(plan->writer_owner);
+    EXPECT_EQ(plan->writer, &plan->writer_owner->schema());
+  }
+  ASSERT_EQ(::unlink(path.c_str()), 0);
+  fill_a(8);
+  std::vector<std::uint8_t> checkpoint;
+  ASSERT_TRUE(symcr::checkpoint_to_buffer(schema_a, checkpoint).ok());
+  copter_b = CopterB{};
+  const symcr::Report report =
+      symcr::restore_from_buffer(reader, checkpoint.data(), checkpoint.size());
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(copter_b.ticks, 1008);
+  EXPECT_EQ(copter_b.mission.items[2].speed, 82);
+  const auto plan = symcr::detail::cached_plan(writer_hash, reader);
+  ASSERT_TRUE(plan);
+  EXPECT_STREQ(plan->writer->roots[0].name, schema_a.roots[0].name);
+  EXPECT_FALSE(report.entries().empty());
+}
+
 TEST_F(StoreTest, AThirdBuildReplacesOnlyTheOlderSchemaArea) {
   // Build C: B's types with only the "copter" root, so its schema (and hash) differ.
   const symcr::Schema schema_c{tables::types_b, tables::kTypeCount, tables::roots_b, 1, nullptr};
@@ -541,9 +596,9 @@ TEST_F(StoreTest, AReadOnlyStoreFileOpensForRestoring) {
   // root ignores file permissions: open_readonly() is the same path without relying on them.
   for (const bool explicit_readonly : {false, true}) {
     symcr::Store store;
-    const symcr::Status status =
-        explicit_readonly ? symcr::Store::open_readonly(path.c_str(), schema_a, store)
-                          : symcr::Store::open(path.c_str(), schema_a, options, store);
+    const symcr::Status status = explicit_readonly
+                                     ? symcr::Store::open_readonly(path.c_str(), schema_a, store)
+                                     : symcr::Store::open(path.c_str(), schema_a, options, store);
     ASSERT_TRUE(status.ok()) << status.message();
     if (!explicit_readonly && ::geteuid() == 0) continue;
     EXPECT_TRUE(store.read_only());
@@ -577,7 +632,10 @@ TEST_F(StoreTest, OpenReadonlyNeverCreatesAFile) {
 }
 
 TEST_F(StoreTest, DifferentGeometryWithoutCheckpointsIsReinitialised) {
-  { symcr::Store store; open(store); }
+  {
+    symcr::Store store;
+    open(store);
+  }
   options.slots = 3;
   options.slot_size = 8192;
   symcr::Store store;
@@ -655,8 +713,7 @@ TEST_F(StoreTest, AFutureStoreVersionIsRefusedAndLeftAlone) {
   symcr::Store store;
   const symcr::Status status = symcr::Store::open(path.c_str(), schema_a, options, store);
   EXPECT_EQ(status.error(), Error::FutureVersion);
-  EXPECT_NE(std::string(status.message()).find("version 2"), std::string::npos)
-      << status.message();
+  EXPECT_NE(std::string(status.message()).find("version 2"), std::string::npos) << status.message();
   EXPECT_EQ(read_file(path), file.bytes);
 }
 

@@ -55,19 +55,19 @@ namespace symcr {
 // Errors.
 enum class Error : std::uint8_t {
   None = 0,
-  NoSchema,          // no generated schema linked into the program
-  Io,                // open/read/write/rename failed (message has errno text)
-  NotACheckpoint,    // bad magic
-  FutureVersion,     // written by a newer format version
-  Truncated,         // shorter than its header says
-  Checksum,          // checksum mismatch
-  Corrupt,           // structurally invalid (bad schema, bad lengths, bad references)
-  SchemaUnknown,     // references a schema by hash that is not available
-  Incompatible,      // a root cannot be restored at all (e.g. struct <-> int)
-  Strict,            // strict mode refused a lossy decision
-  Unsupported,       // a state the runtime cannot save (e.g. overlapping heap objects)
-  NoValidSlot,       // store: no slot holds a valid checkpoint
-  TooLarge,          // checkpoint larger than a store slot or a format limit
+  NoSchema,        // no generated schema linked into the program
+  Io,              // open/read/write/rename failed (message has errno text)
+  NotACheckpoint,  // bad magic
+  FutureVersion,   // written by a newer format version
+  Truncated,       // shorter than its header says
+  Checksum,        // checksum mismatch
+  Corrupt,         // structurally invalid (bad schema, bad lengths, bad references)
+  SchemaUnknown,   // references a schema by hash that is not available
+  Incompatible,    // a root cannot be restored at all (e.g. struct <-> int)
+  Strict,          // strict mode refused a lossy decision
+  Unsupported,     // a state the runtime cannot save (e.g. overlapping heap objects)
+  NoValidSlot,     // store: no slot holds a valid checkpoint
+  TooLarge,        // checkpoint larger than a store slot or a format limit
 };
 
 const char* error_name(Error error);
@@ -100,14 +100,15 @@ enum class Decision : std::uint8_t {
 const char* decision_name(Decision decision);
 
 struct ReportEntry {
-  std::string path;     // "copter.mission.items[].lat"; roots are their own names
+  std::string path;  // "copter.mission.items[].lat"; roots are their own names
   Decision decision;
-  std::string detail;   // for anything but Restored: what and why
-  bool lossy;           // refused in strict mode (data lost or value not restored)
+  std::string detail;  // for anything but Restored: what and why
+  bool lossy;          // refused in strict mode (data lost or value not restored)
 };
 
 namespace detail {
 struct ReportAccess;
+struct ReportSource;
 }  // namespace detail
 
 class Report {
@@ -125,9 +126,8 @@ class Report {
   // in default mode; strict mode turns every lossy entry into a failure.
   bool ok() const { return status_.ok(); }
   const Status& status() const { return status_; }
-  const std::vector<ReportEntry>& entries() const {
-    return shared_entries_ ? *shared_entries_ : entries_;
-  }
+  // The schema-level entries are written when first asked for, not during the restore.
+  const std::vector<ReportEntry>& entries() const;
   std::size_t count(Decision decision) const;
   std::uint64_t sequence() const { return sequence_; }  // of the checkpoint restored
 
@@ -139,11 +139,11 @@ class Report {
  private:
   friend struct detail::ReportAccess;  // the runtime and symcr's tools fill reports
   void add(std::string path, Decision decision, std::string detail, bool lossy);
-  void set_shared_entries(std::shared_ptr<const std::vector<ReportEntry>> entries);
+  void set_source(std::shared_ptr<const detail::ReportSource> source);
 
   Status status_;
   std::vector<ReportEntry> entries_;
-  std::shared_ptr<const std::vector<ReportEntry>> shared_entries_;  // when set: the entries
+  std::shared_ptr<const detail::ReportSource> source_;  // when set: it holds the entries
   std::uint64_t sequence_ = 0;
 };
 
@@ -235,8 +235,8 @@ class Store {
   struct Impl;
   static Status open_impl(const char* path, const Schema& schema, const StoreOptions& options,
                           bool writable, Store& out);
-  static Status open_descriptor(const char* path, const Schema& schema,
-                                const StoreOptions& options, bool writable, Store& out);
+  static Status open_descriptor(const char* path, const Schema& schema, const StoreOptions& options,
+                                bool writable, Store& out);
   int fd_ = -1;
   const Schema* schema_ = nullptr;
   StoreOptions options_;
