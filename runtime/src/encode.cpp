@@ -940,7 +940,7 @@ Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out) {
   const SchemaCacheEntry& cached = schema_cache_entry(schema);
   EncodeScratch& scratch = thread_encode_scratch();
   const std::size_t start = out.size();
-  Encoder encoder(schema, out, scratch, cached.facts);
+  Encoder encoder(schema, out, scratch, cached.facts());
   encoder.start_ = start;
   return encoder.run();
 }

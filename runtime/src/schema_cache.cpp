@@ -64,7 +64,7 @@ const SchemaCacheEntry& schema_cache_entry(const Schema& schema) {
     serialise_blob(schema, entry->blob);
   }
   entry->blob.program_id = program_id_of(schema.program);
-  entry->facts = compute_schema_facts(schema);
+  entry->schema = &schema;
   cache->push_back(CachedSchema{key, entry});
   last = cache->back();
   return *entry;

@@ -4,6 +4,7 @@
 #define SYMCR_SRC_SCHEMA_FACTS_HPP
 
 #include <cstdint>
+#include <mutex>
 #include <vector>
 
 #include "engine.hpp"
@@ -36,14 +37,23 @@ struct SchemaFacts {
   std::vector<DynamicType> dynamic_types;
 };
 
-// The blob and facts of `schema`, computed on first use. Both live as long as the process.
+SchemaFacts compute_schema_facts(const Schema& schema);
+
+// The blob and facts of `schema`, each computed on its first use (a restore needs only the
+// blob; saving needs the facts). Both live as long as the process.
 struct SchemaCacheEntry {
   SchemaBlob blob;
-  SchemaFacts facts;
+  const Schema* schema = nullptr;
+  const SchemaFacts& facts() const {
+    std::call_once(facts_computed, [this] { facts_ = compute_schema_facts(*schema); });
+    return facts_;
+  }
+
+ private:
+  mutable std::once_flag facts_computed;
+  mutable SchemaFacts facts_;
 };
 const SchemaCacheEntry& schema_cache_entry(const Schema& schema);
-
-SchemaFacts compute_schema_facts(const Schema& schema);
 
 // Marks each type in `pending` and, transitively, its base classes (`marked` is grown to
 // type_count); empties `pending`.
