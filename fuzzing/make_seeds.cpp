@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "fuzz_worlds.hpp"
+#include "symcr/device.hpp"
 
 namespace {
 
@@ -377,6 +378,41 @@ int main(int argc, char** argv) {
     ::unlink(path.c_str());
   }
   ::rmdir(tmpl);
+
+  // The device profile's records (schema by hash) and the host's (schema inline) of each world
+  // it holds; the control byte indexes the held worlds in order, as the harness does.
+  const std::string devices = dir_of(root, "device_restore");
+  std::uint8_t held = 0;
+  for (unsigned world = 0; world < kWorldCount; ++world) {
+    const symcr::Schema& schema = world_schema(world);
+    if (symcr::device::check_schema(schema) != symcr::device::Result::Ok) continue;
+    fill_world(world);
+    std::vector<std::uint8_t> record(1 + symcr::device::record_size(schema));
+    std::size_t size = 0;
+    const symcr::device::Result result =
+        symcr::device::save({&schema, symcr::detail::schema_blob(schema).hash}, 3,
+                            record.data() + 1, record.size() - 1, &size);
+    std::vector<std::uint8_t> host;
+    const symcr::Status status = symcr::checkpoint_to_buffer(schema, host, 4);
+    reset_world(world);
+    if (result != symcr::device::Result::Ok || !status.ok()) {
+      std::fprintf(stderr, "device %s: %s\n", world_name(world),
+                   symcr::device::result_text(result));
+      return 1;
+    }
+    record.resize(1 + size);
+    for (std::uint8_t fix : {std::uint8_t{0x10}, std::uint8_t{0x00}}) {
+      record[0] = static_cast<std::uint8_t>(held | fix);
+      write_seed(devices, std::string(world_name(world)) + "-device-" + std::to_string(fix),
+                 record);
+      std::vector<std::uint8_t> inline_seed{static_cast<std::uint8_t>(held | fix)};
+      inline_seed.insert(inline_seed.end(), host.begin(), host.end());
+      write_seed(devices, std::string(world_name(world)) + "-host-" + std::to_string(fix),
+                 inline_seed);
+      written += 2;
+    }
+    ++held;
+  }
   std::printf("wrote %zu seeds under %s\n", written, root.c_str());
   return 0;
 }

@@ -7,8 +7,14 @@
 #if defined(__x86_64__)
 #include <cpuid.h>
 #include <nmmintrin.h>
-#if __has_include(<sys/platform/x86.h>)
-#include <sys/platform/x86.h>  // glibc 2.33+: the features the dynamic loader already read
+#if __has_include(<sys/platform/x86.h>)  // glibc 2.33+: the features ld.so already read
+#if defined(__clang__)
+#define _Bool bool  // the header is C: clang's C++ mode has no _Bool, unlike GCC's
+#include <sys/platform/x86.h>
+#undef _Bool
+#else
+#include <sys/platform/x86.h>
+#endif
 #endif
 #endif
 

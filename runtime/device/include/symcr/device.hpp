@@ -1,0 +1,128 @@
+// symcr's device profile: checkpoints for a microcontroller. C++11, no heap, no exceptions, no
+// RTTI, no standard containers, no files: the caller gives the memory. It saves a program's
+// roots into a buffer and restores a checkpoint written by the same build (the same schema
+// hash), in the record format of docs/format.md (schema referenced by hash), so the host's
+// tools read what a device wrote.
+//
+// What it holds: bool, integers, floating point (4 and 8 bytes), enums, structs (bit-fields,
+// bases), unions (raw bytes), fixed arrays, and raw pointers to objects inside the roots
+// (saved as references by path; a pointer elsewhere keeps the running build's value). Strings,
+// containers, optionals, variants and smart pointers need the host runtime.
+//
+// Restore is all-or-nothing and strict: the record's CRC, header, schema hash and program are
+// checked, every value is decoded into a staged copy of the roots, each SYMCR_RANGE bound and
+// symcr_validate hook is checked there, and only if everything holds are the roots written. A
+// value out of its range or refused by its validator refuses the whole checkpoint.
+#ifndef SYMCR_DEVICE_HPP
+#define SYMCR_DEVICE_HPP
+
+#include <cstddef>
+#include <cstdint>
+
+#include "symcr/generated.hpp"
+
+namespace symcr {
+namespace device {
+
+enum class Result : std::uint8_t {
+  Ok = 0,
+  NoSpace,          // the buffer (or scratch) is smaller than record_size() (scratch_size())
+  Unsupported,      // the schema has a type the device profile cannot hold: see check_schema()
+  Truncated,        // fewer bytes than the record says it has
+  Corrupt,          // bad magic, sizes or checksum, or a payload that does not decode
+  FutureVersion,    // written by a newer record format
+  OtherSchema,      // written by another build (another schema hash): convert it on the host
+  OtherProgram,     // written by another program
+  Rejected,         // a value outside its SYMCR_RANGE, or refused by its symcr_validate
+  TooManyPointers,  // more distinct pointer targets than kMaxReferences
+};
+
+// A short English description of `result`, for logs.
+const char* result_text(Result result);
+
+// The identity of a build's schema: its tables and the hash of their serialised form, which
+// symcr-gen emits as constants (symcr_program_serialised_schema()).
+struct Build {
+  const Schema* schema;
+  std::uint64_t schema_hash;
+};
+// The program's own build (symcr_program_schema() and its emitted hash); `schema` is null when
+// the program has no generated code.
+Build program_build();
+
+// Ok when every type reachable from the roots is one the device profile holds; else
+// Unsupported, with `type` (if given) set to the first type that is not.
+Result check_schema(const Schema& schema, std::uint32_t* type = nullptr);
+
+// Bytes of a record of the roots: the header and a payload whose size the schema fixes.
+std::size_t record_size(const Schema& schema);
+// Bytes of scratch restore needs: a staged copy of every root.
+std::size_t scratch_size(const Schema& schema);
+
+// The most distinct pointer targets one checkpoint may hold.
+constexpr std::size_t kMaxReferences = 32;
+// The deepest path from a root to a pointer's target (fields and array elements).
+constexpr std::size_t kMaxPathSteps = 16;
+
+// Writes the record of the roots' current values into out[0, capacity); `*size` is its size.
+Result save(const Build& build, std::uint64_t sequence, std::uint8_t* out, std::size_t capacity,
+            std::size_t* size);
+
+// Restores the record in bytes[0, size) into the roots, through `scratch` (scratch_size()
+// bytes, any alignment). On any result but Ok nothing of the roots has changed. `*sequence`,
+// if given, is the record's sequence.
+Result restore(const Build& build, const std::uint8_t* bytes, std::size_t size,
+               std::uint8_t* scratch, std::size_t scratch_capacity,
+               std::uint64_t* sequence = nullptr);
+
+// Where a ring keeps its checkpoints: a memory region that keeps its bytes across a reset
+// (backup SRAM: erase_unit 1, no erase), or a block device written after erasing whole units
+// (a flash sector: erase_unit its size, erase() required). Offsets are from the region's start.
+struct Storage {
+  std::size_t size;
+  std::size_t erase_unit;  // 0 or 1: bytes can be rewritten in place
+  bool (*read)(void* context, std::size_t offset, void* out, std::size_t n);
+  bool (*write)(void* context, std::size_t offset, const void* data, std::size_t n);
+  bool (*erase)(void* context, std::size_t offset, std::size_t n);  // units; null if none
+  void* context;
+};
+// A Storage over plain memory at `base`: backup SRAM, or RAM a reset does not clear.
+Storage memory_storage(void* base, std::size_t size);
+
+// Slots over a Storage, each holding one record: save() writes the oldest (a torn write
+// destroys only that slot), restore_latest() restores the newest slot that restores and falls
+// back past corrupt, torn and refused ones. At most kMaxSlots slots.
+constexpr std::size_t kMaxSlots = 8;
+class Ring {
+ public:
+  // `slot_size` bytes per slot, a multiple of the storage's erase unit; two slots at least.
+  Result open(const Storage& storage, std::size_t slot_size);
+
+  // Saves into the slot after the newest one; `buffer` holds the record while it is written.
+  Result save(const Build& build, std::uint8_t* buffer, std::size_t capacity);
+
+  // Restores the newest slot that restores; `buffer` receives each slot as it is read (a slot's
+  // size at least). `*slot` and `*sequence`, if given, say what was restored; `*skipped`, how
+  // many newer slots were passed over. The result is the newest slot's when none restores.
+  Result restore_latest(const Build& build, std::uint8_t* buffer, std::size_t capacity,
+                        std::uint8_t* scratch, std::size_t scratch_capacity,
+                        std::uint64_t* sequence = nullptr, std::size_t* slot = nullptr,
+                        std::size_t* skipped = nullptr);
+
+  std::size_t slot_count() const { return slot_count_; }
+  std::uint64_t last_sequence() const { return last_sequence_; }  // 0: nothing saved yet
+
+ private:
+  // Each slot's sequence from its header (0: empty or unreadable), newest first in `order`.
+  std::size_t scan(std::uint64_t* sequences, std::size_t* order) const;
+
+  Storage storage_{};
+  std::size_t slot_size_ = 0;
+  std::size_t slot_count_ = 0;
+  std::uint64_t last_sequence_ = 0;
+};
+
+}  // namespace device
+}  // namespace symcr
+
+#endif  // SYMCR_DEVICE_HPP

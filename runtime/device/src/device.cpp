@@ -1,0 +1,68 @@
+// The device profile's queries: results as text, the program's build, what a schema needs.
+#include "device_format.hpp"
+
+namespace symcr {
+namespace device {
+
+const char* result_text(Result result) {
+  switch (result) {
+    case Result::Ok:
+      return "ok";
+    case Result::NoSpace:
+      return "buffer too small";
+    case Result::Unsupported:
+      return "a type the device profile cannot hold";
+    case Result::Truncated:
+      return "record truncated";
+    case Result::Corrupt:
+      return "record corrupt";
+    case Result::FutureVersion:
+      return "record from a newer format";
+    case Result::OtherSchema:
+      return "record of another build's schema";
+    case Result::OtherProgram:
+      return "record of another program";
+    case Result::Rejected:
+      return "a value refused by its range or validator";
+    case Result::TooManyPointers:
+      return "more pointer targets than kMaxReferences";
+  }
+  return "?";
+}
+
+Build program_build() {
+  Build build{nullptr, 0};
+  if (symcr_program_schema == nullptr || symcr_program_serialised_schema == nullptr) return build;
+  const SerialisedSchema* serialised = symcr_program_serialised_schema();
+  build.schema = symcr_program_schema();
+  build.schema_hash = serialised != nullptr ? serialised->hash : 0;
+  if (serialised == nullptr) build.schema = nullptr;
+  return build;
+}
+
+Result check_schema(const Schema& schema, std::uint32_t* type) {
+  const std::uint32_t unheld = detail::first_unheld_type(schema);
+  if (type != nullptr) *type = unheld;
+  return unheld == kNoType ? Result::Ok : Result::Unsupported;
+}
+
+std::size_t record_size(const Schema& schema) {
+  std::size_t pointers = 0;
+  for (std::uint32_t r = 0; r < schema.root_count; ++r) {
+    pointers += detail::pointer_count(schema, schema.roots[r].type);
+  }
+  if (pointers > kMaxReferences) pointers = kMaxReferences;
+  return detail::kHeaderSize + detail::values_size(schema) + 8 +  // the two counts
+         pointers * detail::kMaxReferenceSize;
+}
+
+std::size_t scratch_size(const Schema& schema) {
+  std::size_t total = 0;
+  for (std::uint32_t r = 0; r < schema.root_count; ++r) {
+    total += detail::stage_size(schema.types[schema.roots[r].type].size);
+  }
+  return total + detail::kStageAlign;  // room to align the first copy
+}
+
+}  // namespace device
+}  // namespace symcr

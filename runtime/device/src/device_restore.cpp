@@ -1,0 +1,279 @@
+// The device profile's restore: the record checked whole (header, CRC, schema hash, program),
+// every value decoded into a staged copy of the roots with its range and validator checked, the
+// reference table checked to its end, and only then the roots written.
+#include <cstring>
+
+#include "device_format.hpp"
+
+namespace symcr {
+namespace device {
+namespace {
+
+using detail::load16;
+using detail::load32;
+using detail::load64;
+
+class Restorer {
+ public:
+  Restorer(const Schema& schema, const std::uint8_t* payload, std::size_t size, std::uint8_t* stage)
+      : schema_(schema), payload_(payload), size_(size), stage_(stage) {}
+
+  Result run() {
+    // The values have a fixed size: the tables behind them can be found, and checked, first.
+    const std::size_t values = detail::values_size(schema_);
+    if (size_ < values + 8) return Result::Truncated;
+    if (load32(payload_ + values) != 0) return Result::Corrupt;  // heap objects
+    reference_count_ = load32(payload_ + values + 4);
+    references_ = values + 8;
+    Result result = check_references();
+    if (result != Result::Ok) return result;
+    std::uint8_t* stage = stage_;
+    for (std::uint32_t r = 0; r < schema_.root_count; ++r) {
+      const RootInfo& root = schema_.roots[r];
+      const std::size_t size = schema_.types[root.type].size;
+      std::memcpy(stage, root.address, size);  // what the record does not hold stays as is
+      result = value(root.type, stage, static_cast<std::uint8_t*>(root.address));
+      if (result != Result::Ok) return result;
+      stage += detail::stage_size(size);
+    }
+    return Result::Ok;
+  }
+
+ private:
+  // Every reference well-formed, ending at its target type, and nothing after the table.
+  Result check_references() {
+    std::size_t at = references_;
+    for (std::uint32_t i = 0; i < reference_count_; ++i) {
+      std::uintptr_t ignored;
+      std::uint32_t type;
+      const Result result = reference_at(&at, &ignored, &type);
+      if (result != Result::Ok) return result;
+    }
+    return at == size_ ? Result::Ok : Result::Corrupt;
+  }
+
+  // Reads the reference at `*at` (advancing it): its target's address in the live roots.
+  Result reference_at(std::size_t* at, std::uintptr_t* address, std::uint32_t* type) const {
+    std::size_t p = *at;
+    if (size_ - p < 1 + 4 + 2) return Result::Truncated;
+    if (payload_[p] != detail::kBaseObject) return Result::Corrupt;  // no containers here
+    const std::uint32_t root = load32(payload_ + p + 1);
+    const std::size_t step_count = load16(payload_ + p + 5);
+    p += 7;
+    if (step_count > kMaxPathSteps) return Result::Corrupt;
+    if (size_ - p < 4 * step_count + 4) return Result::Truncated;
+    std::uint32_t steps[kMaxPathSteps];
+    for (std::size_t s = 0; s < step_count; ++s) steps[s] = load32(payload_ + p + 4 * s);
+    p += 4 * step_count;
+    const std::uint32_t target_type = load32(payload_ + p);
+    p += 4;
+    std::size_t offset = 0;
+    if (!detail::follow_path(schema_, root, steps, step_count, &offset, type) ||
+        *type != target_type) {
+      return Result::Corrupt;
+    }
+    *address = reinterpret_cast<std::uintptr_t>(schema_.roots[root].address) + offset;
+    *at = p;
+    return Result::Ok;
+  }
+
+  // The target of reference `index` (already checked), for a pointer to `pointee`.
+  Result reference(std::uint32_t index, std::uint32_t pointee, std::uintptr_t* address) const {
+    if (index >= reference_count_) return Result::Corrupt;
+    std::size_t at = references_;
+    std::uint32_t type = kNoType;
+    for (std::uint32_t i = 0; i <= index; ++i) {
+      const Result result = reference_at(&at, address, &type);
+      if (result != Result::Ok) return result;
+    }
+    return type == pointee ? Result::Ok : Result::Corrupt;
+  }
+
+  const std::uint8_t* take(std::size_t n) {
+    const std::uint8_t* bytes = payload_ + at_;
+    at_ += n;
+    return bytes;
+  }
+
+  // Decodes a value of type `t` into `stage` (the staged copy); `live` is where it will be.
+  Result value(std::uint32_t t, std::uint8_t* stage, std::uint8_t* live) {
+    const TypeInfo& type = schema_.types[t];
+    switch (type.kind) {
+      case Kind::Bool: {
+        const std::uint8_t b = *take(1);
+        if (b > 1) return Result::Corrupt;
+        *stage = b;
+        return Result::Ok;
+      }
+      case Kind::Pointer:
+        return pointer(type, stage);
+      case Kind::Array: {
+        const std::size_t stride = schema_.types[type.element].size;
+        for (std::uint64_t i = 0; i < type.count; ++i) {
+          const Result result = value(type.element, stage + i * stride, live + i * stride);
+          if (result != Result::Ok) return result;
+        }
+        return Result::Ok;
+      }
+      case Kind::Struct: {
+        for (std::uint32_t f = 0; f < type.field_count; ++f) {
+          const FieldInfo& field = type.fields[f];
+          const std::uint8_t* wire = payload_ + at_;  // a scalar's value, bit-fields' too
+          const Result result = field.bit_width != 0
+                                    ? bit_field(field, stage + field.offset)
+                                    : value(field.type, stage + field.offset, live + field.offset);
+          if (result != Result::Ok) return result;
+          if ((field.flags & kFieldHasRange) && !in_range(field, wire)) {
+            return Result::Rejected;
+          }
+        }
+        // The validator sees the staged value, whose pointers already point at live objects.
+        return type.validate != nullptr && !type.validate(stage) ? Result::Rejected : Result::Ok;
+      }
+      default:  // Int, UInt, Enum, Float, Union: their bytes
+        std::memcpy(stage, take(type.size), type.size);
+        return Result::Ok;
+    }
+  }
+
+  Result pointer(const TypeInfo& type, std::uint8_t* stage) {
+    const std::uint32_t code = load32(take(4));
+    std::uintptr_t target = 0;
+    if (code == detail::kOutsideCode) return Result::Ok;  // the running build's value stays
+    if (code != detail::kNullCode) {
+      const Result result = reference(code - detail::kFirstReference, type.element, &target);
+      if (result != Result::Ok) return result;
+    }
+    std::memcpy(stage, &target, sizeof target);
+    return Result::Ok;
+  }
+
+  Result bit_field(const FieldInfo& field, std::uint8_t* unit) {
+    const TypeInfo& type = schema_.types[field.type];
+    const TypeInfo& integer = type.kind == Kind::Enum ? schema_.types[type.element] : type;
+    const unsigned bytes = (field.bit_offset + field.bit_width + 7u) / 8u;
+    const std::size_t width = type.size > 8 ? 8 : type.size;
+    if (bytes > 8 || field.bit_width > 64) return Result::Unsupported;
+    std::uint64_t v = 0;
+    std::memcpy(&v, take(width), width);
+    if (integer.kind == Kind::Int && width < 8 && ((v >> (8 * width - 1)) & 1u)) {
+      v |= ~std::uint64_t{0} << (8 * width);  // sign-extend the wire value
+    }
+    if (type.kind == Kind::Bool && v > 1) return Result::Corrupt;
+    const std::uint64_t mask =
+        field.bit_width == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << field.bit_width) - 1;
+    // The value must survive the field's width: as written, it did.
+    const bool is_signed = integer.kind == Kind::Int;
+    const std::uint64_t high = v & ~mask;
+    const bool fits = !is_signed ? high == 0
+                                 : (high == 0 && !((v >> (field.bit_width - 1)) & 1u)) ||
+                                       (high == (~mask) && ((v >> (field.bit_width - 1)) & 1u));
+    if (field.bit_width < 64 && !fits) return Result::Corrupt;
+    std::uint64_t raw = 0;
+    std::memcpy(&raw, unit, bytes);
+    raw = (raw & ~(mask << field.bit_offset)) | ((v & mask) << field.bit_offset);
+    std::memcpy(unit, &raw, bytes);
+    return Result::Ok;
+  }
+
+  // `p`: the value's wire bytes (a bit-field's value sign-extended to its type's width).
+  bool in_range(const FieldInfo& field, const std::uint8_t* p) const {
+    const TypeInfo& type = schema_.types[field.type];
+    const TypeInfo& number = type.kind == Kind::Enum ? schema_.types[type.element] : type;
+    double v = 0;
+    if (number.kind == Kind::Float) {
+      if (number.size == 4) {
+        float f;
+        std::memcpy(&f, p, 4);
+        v = f;
+      } else {
+        std::memcpy(&v, p, 8);
+      }
+    } else if (number.kind == Kind::Int || number.kind == Kind::UInt || number.kind == Kind::Bool) {
+      std::uint64_t raw = 0;
+      std::memcpy(&raw, p, number.size);
+      if (number.kind == Kind::Int && number.size < 8 && ((raw >> (8 * number.size - 1)) & 1u)) {
+        raw |= ~std::uint64_t{0} << (8 * number.size);
+      }
+      v = number.kind == Kind::Int ? static_cast<double>(static_cast<std::int64_t>(raw))
+                                   : static_cast<double>(raw);
+    } else {
+      return true;  // a range on anything else is not the generator's
+    }
+    return v == v && v >= field.range_min && v <= field.range_max;  // NaN is outside
+  }
+
+  const Schema& schema_;
+  const std::uint8_t* payload_;
+  std::size_t size_;
+  std::uint8_t* stage_;
+  std::size_t at_ = 0;
+  std::size_t references_ = 0;
+  std::uint32_t reference_count_ = 0;
+};
+
+// The record's header checked against this build; the payload's bounds in `*payload`.
+Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t size,
+                    std::size_t* payload_offset, std::size_t* payload_size) {
+  if (size < detail::kHeaderSize) return Result::Truncated;
+  if (std::memcmp(bytes, detail::kMagic, sizeof detail::kMagic) != 0) return Result::Corrupt;
+  const std::uint16_t version = load16(bytes + detail::kOffsetVersion);
+  if (version > detail::kFormatVersion) return Result::FutureVersion;
+  if (version == 0) return Result::Corrupt;
+  const std::size_t header = load16(bytes + detail::kOffsetHeaderSize);
+  const std::uint64_t schema_size = load32(bytes + detail::kOffsetSchemaSize);
+  const std::uint64_t payload = load32(bytes + detail::kOffsetPayloadSize);
+  if (header < detail::kHeaderSize) return Result::Corrupt;
+  if (header + schema_size + payload > size) return Result::Truncated;
+  const std::size_t record = static_cast<std::size_t>(header + schema_size + payload);
+  const std::uint32_t stored = load32(bytes + detail::kOffsetChecksum);
+  const std::uint8_t zero[4] = {0, 0, 0, 0};
+  std::uint32_t crc = detail::crc32c(0, bytes, detail::kOffsetChecksum);
+  crc = detail::crc32c(crc, zero, 4);
+  crc = detail::crc32c(crc, bytes + detail::kOffsetChecksum + 4,
+                       record - detail::kOffsetChecksum - 4);
+  if (crc != stored) return Result::Corrupt;
+  const std::uint32_t flags = load32(bytes + detail::kOffsetFlags);
+  if ((flags & ~detail::kFlagInlineSchema) != 0) return Result::Corrupt;
+  if (((flags & detail::kFlagInlineSchema) != 0) != (schema_size != 0)) return Result::Corrupt;
+  const std::uint64_t schema_hash = load64(bytes + detail::kOffsetSchemaHash);
+  // An inline schema (a host's single-file checkpoint) must be the one its hash names.
+  if (schema_size != 0 && detail::fnv1a64(bytes + header, schema_size) != schema_hash) {
+    return Result::Corrupt;
+  }
+  if (schema_hash != build.schema_hash) return Result::OtherSchema;
+  const std::uint32_t writer = load32(bytes + detail::kOffsetProgramId);
+  const std::uint32_t reader = detail::program_id(build.schema->program);
+  if (writer != 0 && reader != 0 && writer != reader) return Result::OtherProgram;
+  *payload_offset = static_cast<std::size_t>(header + schema_size);  // an inline schema: skipped
+  *payload_size = static_cast<std::size_t>(payload);
+  return Result::Ok;
+}
+
+}  // namespace
+
+Result restore(const Build& build, const std::uint8_t* bytes, std::size_t size,
+               std::uint8_t* scratch, std::size_t scratch_capacity, std::uint64_t* sequence) {
+  if (build.schema == nullptr || bytes == nullptr) return Result::Unsupported;
+  const Schema& schema = *build.schema;
+  if (detail::first_unheld_type(schema) != kNoType) return Result::Unsupported;
+  if (scratch == nullptr || scratch_capacity < scratch_size(schema)) return Result::NoSpace;
+  std::size_t payload = 0, payload_size = 0;
+  Result result = check_record(build, bytes, size, &payload, &payload_size);
+  if (result != Result::Ok) return result;
+  const std::uintptr_t misalignment =
+      reinterpret_cast<std::uintptr_t>(scratch) % detail::kStageAlign;
+  std::uint8_t* stage = scratch + (misalignment ? detail::kStageAlign - misalignment : 0);
+  result = Restorer(schema, bytes + payload, payload_size, stage).run();
+  if (result != Result::Ok) return result;
+  for (std::uint32_t r = 0; r < schema.root_count; ++r) {
+    const std::size_t root_size = schema.types[schema.roots[r].type].size;
+    std::memcpy(schema.roots[r].address, stage, root_size);
+    stage += detail::stage_size(root_size);
+  }
+  if (sequence != nullptr) *sequence = load64(bytes + detail::kOffsetSequence);
+  return Result::Ok;
+}
+
+}  // namespace device
+}  // namespace symcr

@@ -1,0 +1,123 @@
+// The device profile's ring of checkpoint slots over a Storage (device.hpp): the slot to write
+// next and the newest slot to restore are found from the slots' own record headers, so the
+// ring keeps no state of its own in storage.
+#include <cstring>
+
+#include "device_format.hpp"
+
+namespace symcr {
+namespace device {
+namespace {
+
+bool memory_read(void* context, std::size_t offset, void* out, std::size_t n) {
+  std::memcpy(out, static_cast<const std::uint8_t*>(context) + offset, n);
+  return true;
+}
+
+bool memory_write(void* context, std::size_t offset, const void* data, std::size_t n) {
+  std::memcpy(static_cast<std::uint8_t*>(context) + offset, data, n);
+  return true;
+}
+
+}  // namespace
+
+Storage memory_storage(void* base, std::size_t size) {
+  Storage storage{size, 1, memory_read, memory_write, nullptr, base};
+  return storage;
+}
+
+Result Ring::open(const Storage& storage, std::size_t slot_size) {
+  *this = Ring();
+  const std::size_t unit = storage.erase_unit > 1 ? storage.erase_unit : 1;
+  if (storage.read == nullptr || storage.write == nullptr || slot_size < detail::kHeaderSize ||
+      slot_size % unit != 0 || (unit > 1 && storage.erase == nullptr)) {
+    return Result::Unsupported;
+  }
+  const std::size_t slots = storage.size / slot_size;
+  if (slots < 2) return Result::NoSpace;
+  storage_ = storage;
+  slot_size_ = slot_size;
+  slot_count_ = slots > kMaxSlots ? kMaxSlots : slots;
+  std::uint64_t sequences[kMaxSlots];
+  std::size_t order[kMaxSlots];
+  if (scan(sequences, order) > 0) last_sequence_ = sequences[order[0]];
+  return Result::Ok;
+}
+
+std::size_t Ring::scan(std::uint64_t* sequences, std::size_t* order) const {
+  std::size_t used = 0;
+  for (std::size_t i = 0; i < slot_count_; ++i) {
+    std::uint8_t header[detail::kHeaderSize];
+    sequences[i] = 0;
+    if (!storage_.read(storage_.context, i * slot_size_, header, sizeof header) ||
+        std::memcmp(header, detail::kMagic, sizeof detail::kMagic) != 0) {
+      continue;
+    }
+    sequences[i] = detail::load64(header + detail::kOffsetSequence);
+    if (sequences[i] == 0) continue;
+    // Insertion by sequence, newest first: a handful of slots.
+    std::size_t at = used++;
+    while (at > 0 && sequences[order[at - 1]] < sequences[i]) {
+      order[at] = order[at - 1];
+      --at;
+    }
+    order[at] = i;
+  }
+  return used;
+}
+
+Result Ring::save(const Build& build, std::uint8_t* buffer, std::size_t capacity) {
+  if (slot_count_ == 0) return Result::Unsupported;
+  std::uint64_t sequences[kMaxSlots];
+  std::size_t order[kMaxSlots];
+  const std::size_t used = scan(sequences, order);
+  const std::size_t target = used == 0 ? 0 : (order[0] + 1) % slot_count_;
+  const std::uint64_t sequence = (used == 0 ? last_sequence_ : sequences[order[0]]) + 1;
+  std::size_t size = 0;
+  const std::size_t limit = capacity < slot_size_ ? capacity : slot_size_;
+  Result result = device::save(build, sequence, buffer, limit, &size);
+  if (result != Result::Ok) return result;
+  const std::size_t offset = target * slot_size_;
+  // The old record goes first: a reset in between leaves an unreadable slot, never a stale one
+  // that looks new.
+  if (storage_.erase_unit > 1) {
+    if (!storage_.erase(storage_.context, offset, slot_size_)) return Result::Corrupt;
+  } else {
+    static const std::uint8_t kBlank[sizeof detail::kMagic] = {0};
+    if (!storage_.write(storage_.context, offset, kBlank, sizeof kBlank)) return Result::Corrupt;
+  }
+  if (!storage_.write(storage_.context, offset, buffer, size)) return Result::Corrupt;
+  last_sequence_ = sequence;
+  return Result::Ok;
+}
+
+Result Ring::restore_latest(const Build& build, std::uint8_t* buffer, std::size_t capacity,
+                            std::uint8_t* scratch, std::size_t scratch_capacity,
+                            std::uint64_t* sequence, std::size_t* slot, std::size_t* skipped) {
+  if (slot_count_ == 0) return Result::Unsupported;
+  if (capacity < slot_size_) return Result::NoSpace;
+  std::uint64_t sequences[kMaxSlots];
+  std::size_t order[kMaxSlots];
+  const std::size_t used = scan(sequences, order);
+  Result newest = Result::Truncated;  // an empty ring: nothing was ever saved
+  for (std::size_t k = 0; k < used; ++k) {
+    const std::size_t i = order[k];
+    Result result =
+        storage_.read(storage_.context, i * slot_size_, buffer, slot_size_)
+            ? device::restore(build, buffer, slot_size_, scratch, scratch_capacity, sequence)
+            : Result::Corrupt;
+    if (result == Result::Ok) {
+      if (slot != nullptr) *slot = i;
+      if (skipped != nullptr) *skipped = k;
+      return result;
+    }
+    if (k == 0) newest = result;
+    // The caller's own mistakes are not the slot's: no fallback past them.
+    if (result == Result::NoSpace || result == Result::Unsupported) return result;
+  }
+  if (skipped != nullptr) *skipped = used;
+  return newest;
+}
+
+}  // namespace device
+}  // namespace symcr

@@ -1,0 +1,223 @@
+// The device profile's save: the roots' values in schema order (docs/format.md §3), no heap
+// objects, and a reference per distinct pointer target inside the roots, found by address.
+#include <cstring>
+
+#include "device_format.hpp"
+
+namespace symcr {
+namespace device {
+namespace {
+
+using detail::store32;
+
+struct Target {
+  std::uintptr_t address;
+  std::uint32_t type;
+};
+
+class Saver {
+ public:
+  Saver(const Schema& schema, std::uint8_t* out, std::size_t capacity)
+      : schema_(schema), out_(out), capacity_(capacity) {}
+
+  Result run(std::size_t* size) {
+    at_ = detail::kHeaderSize;
+    for (std::uint32_t r = 0; r < schema_.root_count && result_ == Result::Ok; ++r) {
+      value(schema_.roots[r].type, static_cast<const std::uint8_t*>(schema_.roots[r].address));
+    }
+    put32(0);  // no heap objects
+    put32(static_cast<std::uint32_t>(target_count_));
+    for (std::size_t i = 0; i < target_count_ && result_ == Result::Ok; ++i) reference(i);
+    *size = at_;
+    return result_;
+  }
+
+ private:
+  void put(const void* bytes, std::size_t n) {
+    if (result_ != Result::Ok) return;
+    if (n > capacity_ - at_) {
+      result_ = Result::NoSpace;
+      return;
+    }
+    std::memcpy(out_ + at_, bytes, n);
+    at_ += n;
+  }
+  void put32(std::uint32_t v) {
+    std::uint8_t bytes[4];
+    store32(bytes, v);
+    put(bytes, 4);
+  }
+
+  void value(std::uint32_t t, const std::uint8_t* p) {
+    const TypeInfo& type = schema_.types[t];
+    switch (type.kind) {
+      case Kind::Bool: {
+        const std::uint8_t b = *p != 0;
+        return put(&b, 1);
+      }
+      case Kind::Pointer:
+        return pointer(type, p);
+      case Kind::Array: {
+        const std::size_t stride = schema_.types[type.element].size;
+        for (std::uint64_t i = 0; i < type.count && result_ == Result::Ok; ++i) {
+          value(type.element, p + i * stride);
+        }
+        return;
+      }
+      case Kind::Struct:
+        for (std::uint32_t f = 0; f < type.field_count && result_ == Result::Ok; ++f) {
+          const FieldInfo& field = type.fields[f];
+          if (field.bit_width != 0) {
+            bit_field(field, p + field.offset);
+          } else {
+            value(field.type, p + field.offset);
+          }
+        }
+        return;
+      default:  // Int, UInt, Enum, Float, Union: their bytes (little-endian in memory)
+        return put(p, type.size);
+    }
+  }
+
+  // The field's value as its type's width, sign-extended for signed types.
+  void bit_field(const FieldInfo& field, const std::uint8_t* unit) {
+    const TypeInfo& type = schema_.types[field.type];
+    const TypeInfo& integer = type.kind == Kind::Enum ? schema_.types[type.element] : type;
+    const unsigned bytes = (field.bit_offset + field.bit_width + 7u) / 8u;
+    if (bytes > 8 || field.bit_width > 64) {
+      result_ = Result::Unsupported;
+      return;
+    }
+    std::uint64_t raw = 0;
+    std::memcpy(&raw, unit, bytes);
+    const std::uint64_t mask =
+        field.bit_width == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << field.bit_width) - 1;
+    std::uint64_t v = (raw >> field.bit_offset) & mask;
+    if (integer.kind == Kind::Int && field.bit_width < 64 && ((v >> (field.bit_width - 1)) & 1u)) {
+      v |= ~mask;
+    }
+    if (type.kind == Kind::Bool) v = v != 0;
+    std::uint8_t out[8];
+    detail::store64(out, v);
+    put(out, type.size > 8 ? 8 : type.size);
+  }
+
+  void pointer(const TypeInfo& type, const std::uint8_t* p) {
+    std::uintptr_t target;
+    std::memcpy(&target, p, sizeof target);
+    if (target == 0) return put32(detail::kNullCode);
+    std::uint32_t root = 0;
+    if (!find_root(target, &root)) return put32(detail::kOutsideCode);
+    for (std::size_t i = 0; i < target_count_; ++i) {
+      if (targets_[i].address == target && targets_[i].type == type.element) {
+        return put32(detail::kFirstReference + static_cast<std::uint32_t>(i));
+      }
+    }
+    if (target_count_ == kMaxReferences) {
+      result_ = Result::TooManyPointers;
+      return;
+    }
+    targets_[target_count_] = Target{target, type.element};
+    put32(detail::kFirstReference + static_cast<std::uint32_t>(target_count_++));
+  }
+
+  bool find_root(std::uintptr_t target, std::uint32_t* root) const {
+    for (std::uint32_t r = 0; r < schema_.root_count; ++r) {
+      const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(schema_.roots[r].address);
+      if (target >= start && target - start < schema_.types[schema_.roots[r].type].size) {
+        *root = r;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  // The reference to targets_[i]: the root holding it, then fields and elements down to an
+  // object of the pointee type at that address. A pointer into a union or at a bit-field has
+  // no such path: the save is refused rather than the pointer silently lost.
+  void reference(std::size_t i) {
+    const Target& target = targets_[i];
+    std::uint32_t root = 0;
+    find_root(target.address, &root);
+    std::uint32_t steps[kMaxPathSteps];
+    std::size_t step_count = 0;
+    std::uint32_t t = schema_.roots[root].type;
+    std::uintptr_t base = reinterpret_cast<std::uintptr_t>(schema_.roots[root].address);
+    while (!(t == target.type && base == target.address)) {
+      const TypeInfo& type = schema_.types[t];
+      std::uint32_t step = kNoType;
+      if (type.kind == Kind::Struct) {
+        for (std::uint32_t f = 0; f < type.field_count && step == kNoType; ++f) {
+          const FieldInfo& field = type.fields[f];
+          const std::uintptr_t start = base + field.offset;
+          if (field.bit_width == 0 && target.address >= start &&
+              target.address - start < schema_.types[field.type].size) {
+            step = f;
+            base = start;
+            t = field.type;
+          }
+        }
+      } else if (type.kind == Kind::Array) {
+        const std::size_t stride = schema_.types[type.element].size;
+        const std::uint64_t index = stride ? (target.address - base) / stride : type.count;
+        if (index < type.count) {
+          step = static_cast<std::uint32_t>(index);
+          base += static_cast<std::uintptr_t>(index * stride);
+          t = type.element;
+        }
+      }
+      if (step == kNoType || step_count == kMaxPathSteps) {
+        result_ = Result::Unsupported;
+        return;
+      }
+      steps[step_count++] = step;
+    }
+    const std::uint8_t base_kind = detail::kBaseObject;
+    put(&base_kind, 1);
+    put32(root);
+    std::uint8_t count[2];
+    detail::store16(count, static_cast<std::uint16_t>(step_count));
+    put(count, 2);
+    for (std::size_t s = 0; s < step_count; ++s) put32(steps[s]);
+    put32(target.type);
+  }
+
+  const Schema& schema_;
+  std::uint8_t* out_;
+  std::size_t capacity_;
+  std::size_t at_ = 0;
+  Result result_ = Result::Ok;
+  Target targets_[kMaxReferences];
+  std::size_t target_count_ = 0;
+};
+
+}  // namespace
+
+Result save(const Build& build, std::uint64_t sequence, std::uint8_t* out, std::size_t capacity,
+            std::size_t* size) {
+  if (build.schema == nullptr || out == nullptr || size == nullptr) return Result::Unsupported;
+  const Schema& schema = *build.schema;
+  if (detail::first_unheld_type(schema) != kNoType) return Result::Unsupported;
+  if (capacity < detail::kHeaderSize) return Result::NoSpace;
+  std::size_t record = 0;
+  const Result result = Saver(schema, out, capacity).run(&record);
+  if (result != Result::Ok) return result;
+  std::memcpy(out, detail::kMagic, sizeof detail::kMagic);
+  detail::store16(out + detail::kOffsetVersion, detail::kFormatVersion);
+  detail::store16(out + detail::kOffsetHeaderSize, detail::kHeaderSize);
+  detail::store32(out + detail::kOffsetFlags, 0);  // the schema is referenced by its hash
+  detail::store64(out + detail::kOffsetSequence, sequence);
+  detail::store64(out + 24, 0);  // no wall clock on a device
+  detail::store64(out + detail::kOffsetSchemaHash, build.schema_hash);
+  detail::store32(out + detail::kOffsetSchemaSize, 0);
+  detail::store32(out + detail::kOffsetPayloadSize,
+                  static_cast<std::uint32_t>(record - detail::kHeaderSize));
+  detail::store32(out + detail::kOffsetChecksum, 0);
+  detail::store32(out + detail::kOffsetProgramId, detail::program_id(schema.program));
+  detail::store32(out + detail::kOffsetChecksum, detail::crc32c(0, out, record));
+  *size = record;
+  return Result::Ok;
+}
+
+}  // namespace device
+}  // namespace symcr

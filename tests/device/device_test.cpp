@@ -1,0 +1,390 @@
+// The device profile (runtime/device) on the host: round trips of every kind it holds, the same
+// payload bytes as the host runtime's for the same state (so each restores the other's
+// records), and every refusal leaving the roots untouched.
+#include "symcr/device.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "crc32c.hpp"
+#include "engine.hpp"
+#include "record.hpp"
+#include "symcr/symcr.hpp"
+#include "vehicle.hpp"
+
+namespace device_tests {
+namespace {
+
+using symcr::device::Result;
+
+symcr::device::Build build() { return {&kSchema, symcr::detail::schema_blob(kSchema).hash}; }
+
+void expect_filled(int seed) {
+  EXPECT_TRUE(holds(seed));
+  EXPECT_EQ(vehicle.flying, seed % 2 == 1);
+  EXPECT_EQ(vehicle.mode, Mode::Auto);
+  EXPECT_EQ(vehicle.altitude, 100 + seed);
+  EXPECT_EQ(vehicle.ticks, 5000000000ull + static_cast<std::uint64_t>(seed));
+  EXPECT_EQ(vehicle.battery, 15.5f - seed * 0.25f);
+  EXPECT_EQ(vehicle.raw.word, 0xA5A50000u + static_cast<std::uint32_t>(seed));
+  EXPECT_EQ(vehicle.flags.armed, 1u);
+  EXPECT_EQ(vehicle.flags.trim, -3 - seed % 5);
+  EXPECT_EQ(vehicle.flags.count, 700u + static_cast<std::uint32_t>(seed));
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(vehicle.route[i].x, seed * 10 + i);
+    EXPECT_EQ(vehicle.route[i].y, seed + i * 0.5);
+  }
+  EXPECT_EQ(vehicle.target, &vehicle.route[2]);
+  EXPECT_EQ(vehicle.nothing, nullptr);
+}
+
+std::vector<std::uint8_t> device_save() {
+  std::vector<std::uint8_t> record(symcr::device::record_size(kSchema));
+  std::size_t size = 0;
+  EXPECT_EQ(symcr::device::save(build(), 42, record.data(), record.size(), &size), Result::Ok);
+  record.resize(size);
+  return record;
+}
+
+Result device_restore(const std::vector<std::uint8_t>& record, std::uint64_t* sequence = nullptr) {
+  std::vector<std::uint8_t> scratch(symcr::device::scratch_size(kSchema));
+  return symcr::device::restore(build(), record.data(), record.size(), scratch.data(),
+                                scratch.size(), sequence);
+}
+
+// Recomputes the record's CRC after a test changed a byte on purpose.
+void reseal(std::vector<std::uint8_t>& record) {
+  std::memset(record.data() + 48, 0, 4);
+  const std::uint32_t crc = symcr::detail::crc32c(record.data(), record.size());
+  std::memcpy(record.data() + 48, &crc, 4);
+}
+
+std::vector<std::uint8_t> snapshot() {
+  const auto* bytes = reinterpret_cast<const std::uint8_t*>(&vehicle);
+  return std::vector<std::uint8_t>(bytes, bytes + sizeof vehicle);
+}
+
+TEST(DeviceProfile, HoldsEveryKindOfItsSchema) {
+  std::uint32_t unheld = 0;
+  EXPECT_EQ(symcr::device::check_schema(kSchema, &unheld), Result::Ok);
+  EXPECT_EQ(unheld, symcr::kNoType);
+}
+
+TEST(DeviceProfile, RoundTripsEveryKindAndPointersByPath) {
+  fill(3);
+  const std::vector<std::uint8_t> record = device_save();
+  scramble();
+  const int* before_constant = vehicle.constant;
+  std::uint64_t sequence = 0;
+  ASSERT_EQ(device_restore(record, &sequence), Result::Ok);
+  EXPECT_EQ(sequence, 42u);
+  expect_filled(3);
+  EXPECT_EQ(vehicle.constant, before_constant);  // outside the roots: this build's value
+}
+
+TEST(DeviceProfile, WritesTheHostRuntimesPayloadByteForByte) {
+  fill(5);
+  const std::vector<std::uint8_t> record = device_save();
+  std::vector<std::uint8_t> host;
+  ASSERT_TRUE(symcr::detail::encode_payload(kSchema, host).ok());
+  ASSERT_EQ(record.size(), 56 + host.size());
+  EXPECT_TRUE(std::memcmp(record.data() + 56, host.data(), host.size()) == 0);
+}
+
+TEST(DeviceProfile, TheHostRestoresADeviceRecord) {
+  fill(6);
+  const std::vector<std::uint8_t> record = device_save();
+  scramble();
+  symcr::detail::RecordView view;
+  ASSERT_TRUE(symcr::detail::parse_record(record.data(), record.size(), view, nullptr).ok());
+  const symcr::Report report = symcr::detail::restore_record(
+      view, kSchema, symcr::detail::schema_blob(kSchema).hash, kSchema, symcr::RestoreOptions{});
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  expect_filled(6);
+}
+
+TEST(DeviceProfile, RestoresAHostCheckpointWithItsInlineSchema) {
+  fill(7);
+  std::vector<std::uint8_t> host;
+  ASSERT_TRUE(symcr::checkpoint_to_buffer(kSchema, host, 9).ok());
+  scramble();
+  std::uint64_t sequence = 0;
+  ASSERT_EQ(device_restore(host, &sequence), Result::Ok);
+  EXPECT_EQ(sequence, 9u);
+  expect_filled(7);
+}
+
+TEST(DeviceProfile, RefusalsLeaveTheRootsUntouched) {
+  fill(2);
+  const std::vector<std::uint8_t> good = device_save();
+  scramble();
+  const std::vector<std::uint8_t> before = snapshot();
+  struct Case {
+    const char* what;
+    std::vector<std::uint8_t> record;
+    Result expected;
+  };
+  std::vector<Case> cases;
+  {
+    std::vector<std::uint8_t> r = good;
+    r[70] ^= 0x10;  // a payload bit, CRC not updated
+    cases.push_back({"bit flip", r, Result::Corrupt});
+  }
+  cases.push_back(
+      {"truncated", std::vector<std::uint8_t>(good.begin(), good.end() - 3), Result::Truncated});
+  {
+    std::vector<std::uint8_t> r = good;
+    r[32] ^= 1;  // schema hash
+    reseal(r);
+    cases.push_back({"other schema", r, Result::OtherSchema});
+  }
+  {
+    std::vector<std::uint8_t> r = good;
+    r[52] ^= 1;  // program id
+    reseal(r);
+    cases.push_back({"other program", r, Result::OtherProgram});
+  }
+  {
+    std::vector<std::uint8_t> r = good;
+    r[8] = 2;  // format version
+    cases.push_back({"future version", r, Result::FutureVersion});
+  }
+  {
+    std::vector<std::uint8_t> r = good;
+    r[56] = 2;  // `flying`, a bool
+    reseal(r);
+    cases.push_back({"bool 2", r, Result::Corrupt});
+  }
+  {
+    std::vector<std::uint8_t> r = good;
+    const std::int16_t altitude = 6000;  // beyond SYMCR_RANGE's 5000
+    std::memcpy(r.data() + 58, &altitude, 2);
+    reseal(r);
+    cases.push_back({"out of range", r, Result::Rejected});
+  }
+  {
+    std::vector<std::uint8_t> r = good;
+    const std::int32_t trim = -13;  // fits the 5-bit field, beyond its range [-12, 12]
+    std::memcpy(r.data() + 80, &trim, 4);
+    reseal(r);
+    cases.push_back({"bit-field out of range", r, Result::Rejected});
+  }
+  {
+    std::vector<std::uint8_t> r = good;
+    const std::int32_t trim = 40;  // does not fit 5 signed bits
+    std::memcpy(r.data() + 80, &trim, 4);
+    reseal(r);
+    cases.push_back({"bit-field value beyond its width", r, Result::Corrupt});
+  }
+  {
+    std::vector<std::uint8_t> r = good;
+    const std::uint64_t ticks = 666;  // valid_vehicle() refuses it
+    std::memcpy(r.data() + 60, &ticks, 8);
+    reseal(r);
+    cases.push_back({"validator", r, Result::Rejected});
+  }
+  {
+    std::vector<std::uint8_t> r = good;
+    r.push_back(0);  // a byte after the reference table, inside the payload
+    std::uint32_t payload;
+    std::memcpy(&payload, r.data() + 44, 4);
+    ++payload;
+    std::memcpy(r.data() + 44, &payload, 4);
+    reseal(r);
+    cases.push_back({"trailing byte", r, Result::Corrupt});
+  }
+  {
+    std::vector<std::uint8_t> r = good;
+    const std::uint32_t step = 9;  // the last step of the reference: element 9 of Point[4]
+    std::memcpy(r.data() + r.size() - 8, &step, 4);
+    reseal(r);
+    cases.push_back({"reference step out of its array", r, Result::Corrupt});
+  }
+  for (const Case& c : cases) {
+    EXPECT_EQ(device_restore(c.record), c.expected) << c.what;
+    EXPECT_EQ(snapshot(), before) << c.what;
+  }
+  ASSERT_EQ(device_restore(good), Result::Ok);  // and the good one still restores
+  expect_filled(2);
+}
+
+TEST(DeviceProfile, TooSmallBuffersAreRefused) {
+  fill(1);
+  std::vector<std::uint8_t> record(100);
+  std::size_t size = 0;
+  EXPECT_EQ(symcr::device::save(build(), 1, record.data(), record.size(), &size), Result::NoSpace);
+  const std::vector<std::uint8_t> good = device_save();
+  std::vector<std::uint8_t> scratch(symcr::device::scratch_size(kSchema) - 1);
+  EXPECT_EQ(
+      symcr::device::restore(build(), good.data(), good.size(), scratch.data(), scratch.size()),
+      Result::NoSpace);
+}
+
+// A schema with a kind only the host runtime holds is refused, naming the type.
+TEST(DeviceProfile, AContainerIsNotHeld) {
+  static std::vector<int> values;
+  static const symcr::TypeInfo types[] = {scalar("int", Kind::Int, 4),
+                                          holder("std::vector<int>", Kind::Container, sizeof values,
+                                                 alignof(std::vector<int>), 0, nullptr)};
+  static const symcr::RootInfo roots[] = {{"values", 1, &values, 0, nullptr}};
+  static const symcr::Schema schema{types, 2, roots, 1, nullptr};
+  std::uint32_t unheld = 0;
+  EXPECT_EQ(symcr::device::check_schema(schema, &unheld), Result::Unsupported);
+  EXPECT_EQ(unheld, 1u);
+  std::uint8_t buffer[256];
+  std::size_t size = 0;
+  EXPECT_EQ(symcr::device::save({&schema, 1}, 0, buffer, sizeof buffer, &size),
+            Result::Unsupported);
+}
+
+// ---- the ring -------------------------------------------------------------------------------
+
+// Flash as a block device: erased bytes are 0xFF, a write may only clear bits of erased ones.
+struct Flash {
+  std::vector<std::uint8_t> bytes;
+  std::size_t unit;
+  std::size_t erases = 0;
+  std::size_t torn_after = SIZE_MAX;  // a write stops after this many bytes (a reset)
+  Flash(std::size_t size, std::size_t erase_unit) : bytes(size, 0xFF), unit(erase_unit) {}
+
+  symcr::device::Storage storage() { return {bytes.size(), unit, read, write, erase, this}; }
+  static bool read(void* self, std::size_t offset, void* out, std::size_t n) {
+    std::memcpy(out, static_cast<Flash*>(self)->bytes.data() + offset, n);
+    return true;
+  }
+  static bool write(void* self, std::size_t offset, const void* data, std::size_t n) {
+    Flash& flash = *static_cast<Flash*>(self);
+    const auto* in = static_cast<const std::uint8_t*>(data);
+    for (std::size_t i = 0; i < n && i < flash.torn_after; ++i) {
+      if ((flash.bytes[offset + i] & in[i]) != in[i]) return false;  // not erased
+      flash.bytes[offset + i] = in[i];
+    }
+    return flash.torn_after >= n;
+  }
+  static bool erase(void* self, std::size_t offset, std::size_t n) {
+    Flash& flash = *static_cast<Flash*>(self);
+    if (offset % flash.unit != 0 || n % flash.unit != 0) return false;
+    std::fill(flash.bytes.begin() + offset, flash.bytes.begin() + offset + n, 0xFF);
+    ++flash.erases;
+    return true;
+  }
+};
+
+struct RingBuffers {
+  std::vector<std::uint8_t> record = std::vector<std::uint8_t>(1024);
+  std::vector<std::uint8_t> scratch =
+      std::vector<std::uint8_t>(symcr::device::scratch_size(kSchema));
+};
+
+Result ring_restore(symcr::device::Ring& ring, RingBuffers& b, std::uint64_t* sequence,
+                    std::size_t* skipped) {
+  return ring.restore_latest(build(), b.record.data(), b.record.size(), b.scratch.data(),
+                             b.scratch.size(), sequence, nullptr, skipped);
+}
+
+TEST(DeviceRing, SavesRoundTheSlotsAndRestoresTheNewestAfterAReset) {
+  std::vector<std::uint8_t> sram(4 * 1024, 0);
+  RingBuffers b;
+  {
+    symcr::device::Ring ring;
+    ASSERT_EQ(ring.open(symcr::device::memory_storage(sram.data(), sram.size()), 1024), Result::Ok);
+    EXPECT_EQ(ring.slot_count(), 4u);
+    for (int seed = 1; seed <= 6; ++seed) {  // wraps: slots hold 3..6
+      fill(seed);
+      ASSERT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Ok) << seed;
+    }
+    EXPECT_EQ(ring.last_sequence(), 6u);
+  }
+  scramble();  // the watchdog reset: RAM is gone, the backup SRAM is not
+  symcr::device::Ring ring;
+  ASSERT_EQ(ring.open(symcr::device::memory_storage(sram.data(), sram.size()), 1024), Result::Ok);
+  EXPECT_EQ(ring.last_sequence(), 6u);
+  std::uint64_t sequence = 0;
+  std::size_t skipped = 9;
+  ASSERT_EQ(ring_restore(ring, b, &sequence, &skipped), Result::Ok);
+  EXPECT_EQ(sequence, 6u);
+  EXPECT_EQ(skipped, 0u);
+  expect_filled(6);
+}
+
+TEST(DeviceRing, FallsBackPastACorruptNewestSlot) {
+  std::vector<std::uint8_t> sram(3 * 1024, 0);
+  RingBuffers b;
+  symcr::device::Ring ring;
+  ASSERT_EQ(ring.open(symcr::device::memory_storage(sram.data(), sram.size()), 1024), Result::Ok);
+  for (int seed = 1; seed <= 2; ++seed) {
+    fill(seed);
+    ASSERT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Ok);
+  }
+  sram[1024 + 100] ^= 0x04;  // slot 1 holds sequence 2
+  scramble();
+  std::uint64_t sequence = 0;
+  std::size_t skipped = 0;
+  ASSERT_EQ(ring_restore(ring, b, &sequence, &skipped), Result::Ok);
+  EXPECT_EQ(sequence, 1u);
+  EXPECT_EQ(skipped, 1u);
+  expect_filled(1);
+}
+
+TEST(DeviceRing, OnFlashErasesBeforeWritingAndSurvivesATornWrite) {
+  Flash flash(4 * 512, 512);
+  RingBuffers b;
+  symcr::device::Ring ring;
+  ASSERT_EQ(ring.open(flash.storage(), 512), Result::Ok);
+  fill(1);
+  ASSERT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Ok);
+  fill(2);
+  ASSERT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Ok);
+  EXPECT_EQ(flash.erases, 2u);
+  fill(3);
+  flash.torn_after = 100;  // the reset comes in the middle of the third save
+  EXPECT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Corrupt);
+  flash.torn_after = SIZE_MAX;
+  scramble();
+  symcr::device::Ring after_reset;
+  ASSERT_EQ(after_reset.open(flash.storage(), 512), Result::Ok);
+  std::uint64_t sequence = 0;
+  std::size_t skipped = 0;
+  ASSERT_EQ(ring_restore(after_reset, b, &sequence, &skipped), Result::Ok);
+  EXPECT_EQ(sequence, 2u);
+  expect_filled(2);
+  // Saving goes on after the newest header, the torn slot's, and rewrites nothing older.
+  fill(4);
+  ASSERT_EQ(after_reset.save(build(), b.record.data(), b.record.size()), Result::Ok);
+  ASSERT_EQ(ring_restore(after_reset, b, &sequence, &skipped), Result::Ok);
+  EXPECT_EQ(sequence, 4u);
+  expect_filled(4);
+}
+
+TEST(DeviceRing, AnEmptyRingRestoresNothingAndChangesNothing) {
+  std::vector<std::uint8_t> sram(2 * 1024, 0);
+  RingBuffers b;
+  symcr::device::Ring ring;
+  ASSERT_EQ(ring.open(symcr::device::memory_storage(sram.data(), sram.size()), 1024), Result::Ok);
+  fill(5);
+  const std::vector<std::uint8_t> before = snapshot();
+  EXPECT_EQ(ring_restore(ring, b, nullptr, nullptr), Result::Truncated);
+  EXPECT_EQ(snapshot(), before);
+}
+
+TEST(DeviceRing, BadGeometriesAreRefused) {
+  std::vector<std::uint8_t> sram(1024, 0);
+  symcr::device::Ring ring;
+  EXPECT_EQ(ring.open(symcr::device::memory_storage(sram.data(), sram.size()), 1024),
+            Result::NoSpace);  // one slot: no fallback possible
+  Flash flash(4 * 512, 512);
+  EXPECT_EQ(ring.open(flash.storage(), 300), Result::Unsupported);  // not whole erase units
+}
+
+TEST(DeviceProfile, ResultsHaveTexts) {
+  EXPECT_STREQ(symcr::device::result_text(Result::Ok), "ok");
+  EXPECT_STREQ(symcr::device::result_text(Result::OtherSchema), "record of another build's schema");
+}
+
+}  // namespace
+}  // namespace device_tests
