@@ -4,10 +4,11 @@
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS symcr_runtime EXPORT symcrTargets
+install(TARGETS symcr_runtime symcr_device EXPORT symcrTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT sdk
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT sdk)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/include/symcr
+                  ${PROJECT_SOURCE_DIR}/runtime/device/include/symcr
         DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} COMPONENT sdk)
 if(TARGET symcr-gen)
   set_target_properties(symcr-gen PROPERTIES EXPORT_NAME gen)

@@ -21,6 +21,8 @@
 
 #include "report_access.hpp"
 #include "restorer.hpp"
+#include "schema_facts.hpp"
+#include "symcr/device.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -119,10 +121,56 @@ bool restore_copy_only(const Plan& plan, const std::uint8_t* payload, std::size_
   return true;
 }
 
+// The schema-level report of restoring a schema into itself, planned when first read: the
+// same-build path below restores without a plan.
+struct SameBuildReport final : ReportSource {
+  SameBuildReport(const Schema& schema, std::uint64_t hash) : schema_(schema), hash_(hash) {}
+  const std::vector<ReportEntry>& entries() const override {
+    std::call_once(planned_, [this] {
+      Status status;
+      plan_ = plan_for(schema_, hash_, schema_, status);
+    });
+    static const std::vector<ReportEntry> kNone;
+    return plan_ ? plan_->entries() : kNone;
+  }
+
+ private:
+  const Schema& schema_;
+  std::uint64_t hash_;
+  mutable std::once_flag planned_;
+  mutable std::shared_ptr<const Plan> plan_;
+};
+
+// The first restore of a build's own checkpoint in a process, every type one the device
+// profile's decoder holds: that small table-driven decoder restores it with no plan to build,
+// which is what a freshly started build waited for. Later restores use the plan, built once:
+// its copy programs are faster when repeated. The decoder is all-or-nothing, so anything it
+// refuses (a value its range or validator rejects, heap objects, a damaged payload) has changed
+// nothing and goes the general way, which applies the rules per value and names the fault.
+// Strict mode goes the general way too: it decides from the plan.
+bool restore_same_build(const Schema& schema, std::uint64_t hash, const std::uint8_t* payload,
+                        std::size_t size, Report& report) {
+  const SchemaCacheEntry& entry = schema_cache_entry(schema);
+  if (!entry.first_same_build_restore() || !entry.device_holdable()) return false;
+  thread_local std::vector<std::uint8_t> scratch;
+  scratch.resize(device::scratch_size(schema));
+  if (device::restore_payload(schema, payload, size, scratch.data(), scratch.size()) !=
+      device::Result::Ok) {
+    return false;
+  }
+  ReportAccess::set_source(report, std::make_shared<SameBuildReport>(schema, hash));
+  last_restore_scratch = 0;  // no decoding tables
+  return true;
+}
+
 Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,
                    std::size_t size, const Schema& reader, const RestoreOptions& options,
                    bool plan_only, bool apply, std::shared_ptr<const ParsedSchema> writer_owner) {
   Report report;
+  if (&writer == &reader && apply && !plan_only && !options.strict &&
+      restore_same_build(reader, writer_hash, payload, size, report)) {
+    return report;
+  }
   Status status;
   std::shared_ptr<const Plan> plan =
       plan_for(writer, writer_hash, reader, status, std::move(writer_owner));

@@ -3,11 +3,13 @@
 #ifndef SYMCR_SRC_SCHEMA_FACTS_HPP
 #define SYMCR_SRC_SCHEMA_FACTS_HPP
 
+#include <atomic>
 #include <cstdint>
 #include <mutex>
 #include <vector>
 
 #include "engine.hpp"
+#include "symcr/device.hpp"
 #include "symcr/generated.hpp"
 
 namespace symcr::detail {
@@ -48,10 +50,23 @@ struct SchemaCacheEntry {
     std::call_once(facts_computed, [this] { facts_ = compute_schema_facts(*schema); });
     return facts_;
   }
+  // Every type reachable from the roots is one the device profile's decoder holds, so a
+  // checkpoint of this very schema can be restored without a plan (restore.cpp).
+  bool device_holdable() const {
+    std::call_once(device_checked, [this] {
+      device_holdable_ = device::check_schema(*schema) == device::Result::Ok;
+    });
+    return device_holdable_;
+  }
+  // True the first time it is asked: the process's first restore of this schema into itself.
+  bool first_same_build_restore() const { return !restored_.exchange(true); }
 
  private:
   mutable std::once_flag facts_computed;
   mutable SchemaFacts facts_;
+  mutable std::once_flag device_checked;
+  mutable bool device_holdable_ = false;
+  mutable std::atomic<bool> restored_{false};
 };
 const SchemaCacheEntry& schema_cache_entry(const Schema& schema);
 

@@ -14,6 +14,7 @@
 #include "handwritten_schemas.hpp"
 #include "plan.hpp"
 #include "report_access.hpp"
+#include "symcr/device.hpp"
 #include "symcr/ops.hpp"
 
 namespace engine_tests {
@@ -459,6 +460,27 @@ TEST(FastPath, AStrictRestoreWritesTheReportToDecide) {
   ASSERT_TRUE(plan);
   EXPECT_FALSE(plan->report_entries.empty());
   EXPECT_FALSE(plan->any_lossy());
+}
+
+// The same build's checkpoint is restored by the device profile's decoder, which is strict: a
+// value beyond its range (saving does not check them) makes it refuse, having changed nothing,
+// and the general way applies the rules per value: that value keeps the running build's, the
+// rest is restored, and the report says so.
+TEST(FastPath, TheSameBuildsValueBeyondItsRangeIsRejectedAloneAsBefore) {
+  const symcr::Schema& schema = a1::schema();
+  ASSERT_EQ(symcr::device::check_schema(schema), symcr::device::Result::Ok);
+  a1::basic = a1::Basic{};
+  a1::basic.yaw = 123;
+  a1::basic.speed = 500;  // outside [0, 100]
+  const Saved saved = save(schema);
+  a1::basic = a1::Basic{};
+  a1::basic.speed = 42;
+  const symcr::Report report = symcr::detail::restore_payload(
+      schema, saved.hash, saved.payload.data(), saved.payload.size(), schema, {});
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(a1::basic.yaw, 123);
+  EXPECT_EQ(a1::basic.speed, 42);
+  EXPECT_EQ(report.count(symcr::Decision::Rejected), 1u);
 }
 
 TEST(FastPath, ReportsAreIndependentCopies) {

@@ -18,6 +18,7 @@
 #include "file_test_util.hpp"
 #include "little_endian.hpp"
 #include "plan.hpp"
+#include "symcr/device.hpp"
 #include "symcr/symcr.hpp"
 
 // Counts every allocation through operator new in this test binary: the store's save() must
@@ -370,22 +371,44 @@ TEST_F(StoreTest, NewBuildRestoresThePreviousBuildsCheckpointAndKeepsItUntilItSa
   EXPECT_EQ(copter_b.ticks, 6000);
 }
 
-// A fresh process restoring its own build's checkpoint parses no schema and copies none: the
-// store's area is recognised as this build's by its bytes, and the plan restores the build's
-// schema into itself.
-TEST_F(StoreTest, TheBuildsOwnSchemaAreaServesAsItsSchemaWithoutACopy) {
+// A fresh process restoring its own build's checkpoint parses no schema, copies none and plans
+// nothing: the store's area is recognised as this build's by its bytes, and the same build's
+// decoder restores it. The report's entries are planned when read, the schema into itself.
+TEST_F(StoreTest, TheBuildsOwnCheckpointIsRestoredWithoutParsingOrPlanning) {
   save_seeds(1, 2);
-  static const symcr::Schema reader = schema_a;  // its own plan, whatever ran before
+  static const symcr::Schema reader = schema_a;  // its own plans, whatever ran before
+  ASSERT_EQ(symcr::device::check_schema(reader), symcr::device::Result::Ok);
   symcr::Store store;
   open(store, reader);
   scramble_a();
   const symcr::Report report = store.restore_latest();
   ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 2u);
   expect_a(2);
-  const auto plan = symcr::detail::cached_plan(symcr::detail::schema_blob(reader).hash, reader);
+  const std::uint64_t hash = symcr::detail::schema_blob(reader).hash;
+  EXPECT_FALSE(symcr::detail::cached_plan(hash, reader));
+  ASSERT_FALSE(report.entries().empty());
+  EXPECT_EQ(report.count(symcr::Decision::Restored), report.entries().size());
+  const auto plan = symcr::detail::cached_plan(hash, reader);
   ASSERT_TRUE(plan);
   EXPECT_EQ(plan->writer, &reader);
   EXPECT_FALSE(plan->writer_owner);
+}
+
+// Strict mode decides from the plan: the same build's restore is planned then, with the same
+// values.
+TEST_F(StoreTest, StrictRestoresOfTheSameBuildArePlanned) {
+  save_seeds(1, 1);
+  static const symcr::Schema reader = schema_a;
+  symcr::Store store;
+  open(store, reader);
+  scramble_a();
+  symcr::RestoreOptions strict;
+  strict.strict = true;
+  const symcr::Report report = store.restore_latest(strict);
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  expect_a(1);
+  EXPECT_TRUE(symcr::detail::cached_plan(symcr::detail::schema_blob(reader).hash, reader));
 }
 
 // The plan for an earlier build's area shares the store's parsed schema instead of copying it,

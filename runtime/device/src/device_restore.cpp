@@ -252,6 +252,24 @@ Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t s
 
 }  // namespace
 
+Result restore_payload(const Schema& schema, const std::uint8_t* payload, std::size_t size,
+                       std::uint8_t* scratch, std::size_t scratch_capacity) {
+  if (payload == nullptr && size != 0) return Result::Corrupt;
+  if (detail::first_unheld_type(schema) != kNoType) return Result::Unsupported;
+  if (scratch == nullptr || scratch_capacity < scratch_size(schema)) return Result::NoSpace;
+  const std::uintptr_t misalignment =
+      reinterpret_cast<std::uintptr_t>(scratch) % detail::kStageAlign;
+  std::uint8_t* stage = scratch + (misalignment ? detail::kStageAlign - misalignment : 0);
+  const Result result = Restorer(schema, payload, size, stage).run();
+  if (result != Result::Ok) return result;
+  for (std::uint32_t r = 0; r < schema.root_count; ++r) {
+    const std::size_t root_size = schema.types[schema.roots[r].type].size;
+    std::memcpy(schema.roots[r].address, stage, root_size);
+    stage += detail::stage_size(root_size);
+  }
+  return Result::Ok;
+}
+
 Result restore(const Build& build, const std::uint8_t* bytes, std::size_t size,
                std::uint8_t* scratch, std::size_t scratch_capacity, std::uint64_t* sequence) {
   if (build.schema == nullptr || bytes == nullptr) return Result::Unsupported;
@@ -261,18 +279,11 @@ Result restore(const Build& build, const std::uint8_t* bytes, std::size_t size,
   std::size_t payload = 0, payload_size = 0;
   Result result = check_record(build, bytes, size, &payload, &payload_size);
   if (result != Result::Ok) return result;
-  const std::uintptr_t misalignment =
-      reinterpret_cast<std::uintptr_t>(scratch) % detail::kStageAlign;
-  std::uint8_t* stage = scratch + (misalignment ? detail::kStageAlign - misalignment : 0);
-  result = Restorer(schema, bytes + payload, payload_size, stage).run();
-  if (result != Result::Ok) return result;
-  for (std::uint32_t r = 0; r < schema.root_count; ++r) {
-    const std::size_t root_size = schema.types[schema.roots[r].type].size;
-    std::memcpy(schema.roots[r].address, stage, root_size);
-    stage += detail::stage_size(root_size);
+  result = restore_payload(schema, bytes + payload, payload_size, scratch, scratch_capacity);
+  if (result == Result::Ok && sequence != nullptr) {
+    *sequence = load64(bytes + detail::kOffsetSequence);
   }
-  if (sequence != nullptr) *sequence = load64(bytes + detail::kOffsetSequence);
-  return Result::Ok;
+  return result;
 }
 
 }  // namespace device

@@ -75,6 +75,11 @@ Result restore(const Build& build, const std::uint8_t* bytes, std::size_t size,
                std::uint8_t* scratch, std::size_t scratch_capacity,
                std::uint64_t* sequence = nullptr);
 
+// The payload alone (docs/format.md §3), for a caller that checked the record around it (its
+// CRC, its schema hash being `schema`'s, its program): restore() without the header checks.
+Result restore_payload(const Schema& schema, const std::uint8_t* payload, std::size_t size,
+                       std::uint8_t* scratch, std::size_t scratch_capacity);
+
 // Where a ring keeps its checkpoints: a memory region that keeps its bytes across a reset
 // (backup SRAM: erase_unit 1, no erase), or a block device written after erasing whole units
 // (a flash sector: erase_unit its size, erase() required). Offsets are from the region's start.
