@@ -1,6 +1,7 @@
 // Serialisation of a running build's schema (docs/format.md §2) and its FNV-1a 64 hash.
 #include <cstring>
 
+#include "device_format.hpp"
 #include "engine.hpp"
 #include "schema_facts.hpp"
 #include "wire.hpp"
@@ -31,12 +32,7 @@ void put_f64(std::vector<std::uint8_t>& out, double value) { put_le(out, value);
 }  // namespace
 
 std::uint64_t fnv1a64(const std::uint8_t* data, std::size_t size) {
-  std::uint64_t hash = 0xcbf29ce484222325ull;
-  for (std::size_t i = 0; i < size; ++i) {
-    hash ^= data[i];
-    hash *= 0x100000001b3ull;
-  }
-  return hash;
+  return device::detail::fnv1a64(data, size);  // one definition for both runtimes
 }
 
 void serialise_schema(const Schema& schema, std::vector<std::uint8_t>& out) {

@@ -4,6 +4,7 @@
 #include <mutex>
 #include <vector>
 
+#include "device_format.hpp"
 #include "engine.hpp"
 #include "schema_facts.hpp"
 
@@ -73,13 +74,7 @@ const SchemaCacheEntry& schema_cache_entry(const Schema& schema) {
 const SchemaBlob& schema_blob(const Schema& schema) { return schema_cache_entry(schema).blob; }
 
 std::uint32_t program_id_of(const char* program) {
-  if (program == nullptr || *program == '\0') return 0;
-  std::uint32_t hash = 2166136261u;
-  for (const char* c = program; *c; ++c) {
-    hash ^= static_cast<std::uint8_t>(*c);
-    hash *= 16777619u;
-  }
-  return hash == 0 ? 1 : hash;
+  return device::detail::program_id(program);  // one definition for both runtimes
 }
 
 }  // namespace symcr::detail
