@@ -39,9 +39,17 @@ thread_local std::size_t last_restore_scratch = 0;
 
 namespace restoring {
 
-Status Restorer::check() {
-  mode_ = Mode::Check;
+void Restorer::begin_pass(Mode mode) {
+  mode_ = mode;
   in_.start(payload_, size_);
+  container_ordinal_ = 0;
+  slot_ordinal_ = 0;
+  verdict_cursor_ = 0;
+  frames_.clear();
+}
+
+Status Restorer::check() {
+  begin_pass(Mode::Check);
   rejection_counts_.assign(plan_.counter_paths.size() + 1, 0);
   heap_counter_ = static_cast<std::uint32_t>(plan_.counter_paths.size());
   if (!decode_objects() || !decode_references() || !in_.finish() || !check_slots()) {
@@ -70,12 +78,7 @@ std::size_t Restorer::scratch_bytes() const {
 }
 
 void Restorer::apply() {
-  mode_ = Mode::Apply;
-  in_.start(payload_, size_);
-  container_ordinal_ = 0;
-  slot_ordinal_ = 0;
-  verdict_cursor_ = 0;
-  frames_.clear();
+  begin_pass(Mode::Apply);
   create_heap_objects();
   decode_objects();  // cannot fail: pass 1 checked the same bytes along the same plan
   fix_up_slots();

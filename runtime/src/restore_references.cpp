@@ -296,12 +296,7 @@ void Restorer::decide_slots() {
   }
   if (!pending.empty()) {
     for (const Pending& entry : pending) explained_[entry.ordinal];
-    mode_ = Mode::Explain;
-    in_.start(payload_, size_);
-    container_ordinal_ = 0;
-    slot_ordinal_ = 0;
-    verdict_cursor_ = 0;
-    frames_.clear();
+    begin_pass(Mode::Explain);
     decode_objects();  // cannot fail: the same bytes decoded in pass 1
     mode_ = Mode::Check;
     for (Pending& entry : pending) {

@@ -152,6 +152,9 @@ class Restorer {
   bool writing() const { return mode_ == Mode::Stage || mode_ == Mode::Apply; }
 
   // ---- objects: roots then heap objects ------------------------------------------------
+  // Starts a pass over the payload from its first byte: the reader, the container and slot
+  // ordinals, the verdict cursor and the path, as every pass walks them alike.
+  void begin_pass(Mode mode);
   bool decode_objects();
 
   // ---- values --------------------------------------------------------------------------
