@@ -1,4 +1,5 @@
-# symcr_add_checkpointing(<target> [ANNOTATIONS <file>...] [PROGRAM <name>])
+# symcr_add_checkpointing(<target> [ANNOTATIONS <file>...] [PROGRAM <name>]
+#                         [PROFILE host|device])
 #
 # Runs symcr-gen over <target>'s C and C++ sources as a build step and links the runtime.
 # Every source is compiled through a generated wrapper that #includes it and appends what
@@ -38,12 +39,20 @@
 # that a restore refuses a checkpoint of another program whose roots happen to have the same
 # names. Builds of one program (v0 and its patched v1) must share the name.
 #
+# PROFILE device generates for the device profile (runtime/device, <symcr/device.hpp>) and links
+# symcr::device instead of symcr::runtime: the same tables, without the heap code (ops tables,
+# lifecycles, migrations) the device never calls. A member of a root whose type the device
+# profile cannot hold (a string, a container, an optional, a variant, a smart pointer) fails the
+# generation step with its path and the change that fixes it, as do program points. With a cross
+# compiler (arm-none-eabi-g++), symcr-gen parses for that compiler's target and headers, so the
+# schema records the microcontroller's layouts.
+#
 # `#pragma symcr` lines are unknown to g++, which warns under -Wall (-Wunknown-pragmas): the
 # function adds -Wno-unknown-pragmas to the annotated target (only there).
 include_guard(GLOBAL)
 
 function(symcr_add_checkpointing target)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "PROGRAM" "ANNOTATIONS")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "PROGRAM;PROFILE" "ANNOTATIONS")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "symcr_add_checkpointing: unknown arguments ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -61,10 +70,19 @@ function(symcr_add_checkpointing target)
     message(FATAL_ERROR "symcr_add_checkpointing: no symcr-gen. Build it "
                         "(SYMCR_BUILD_GENERATOR=ON) or set SYMCR_GEN_EXECUTABLE.")
   endif()
-  if(TARGET symcr::runtime)
+  set(profile host)
+  if(arg_PROFILE)
+    set(profile "${arg_PROFILE}")
+  endif()
+  if(profile STREQUAL "device")
+    set(runtime symcr::device)
+  elseif(profile STREQUAL "host")
     set(runtime symcr::runtime)
   else()
-    message(FATAL_ERROR "symcr_add_checkpointing: target symcr::runtime not found")
+    message(FATAL_ERROR "symcr_add_checkpointing: PROFILE is host or device, not '${profile}'")
+  endif()
+  if(NOT TARGET ${runtime})
+    message(FATAL_ERROR "symcr_add_checkpointing: target ${runtime} not found")
   endif()
 
   get_target_property(source_dir ${target} SOURCE_DIR)
@@ -159,7 +177,7 @@ function(symcr_add_checkpointing target)
   add_custom_command(
     OUTPUT "${schema}" ${wrappers} "${schema_file}"
     COMMAND "${generator}" -p "${CMAKE_BINARY_DIR}" --out-dir "${out_dir}"
-            --schema-file "${schema_file}" --program "${program}"
+            --schema-file "${schema_file}" --program "${program}" --profile "${profile}"
             --depfile "${out_dir}/symcr-gen.d" --depfile-target "${schema}"
             --report-file "${out_dir}/report.txt" ${annotation_args} ${library_args} ${inputs}
     DEPENDS ${generator_dependency} ${inputs} ${library_inputs} ${annotations}
@@ -180,6 +198,13 @@ function(symcr_add_checkpointing target)
             "$<TARGET_FILE_DIR:${target}>/${target}.symcr-schema"
     VERBATIM)
   target_link_libraries(${target} PRIVATE ${runtime})
+  if(profile STREQUAL "device")
+    # symcr_program_schema() builds its root table on first call (a root's address comes from
+    # its own source's wrapper); without a thread-safe guard, that is a flag test rather than
+    # libstdc++'s __cxa_guard_*, which would pull the exception unwinder into a firmware.
+    set_property(SOURCE "${schema}" TARGET_DIRECTORY ${target} APPEND PROPERTY COMPILE_OPTIONS
+                 $<$<COMPILE_LANG_AND_ID:CXX,GNU,Clang,AppleClang>:-fno-threadsafe-statics>)
+  endif()
   if(DEFINED SYMCR_OPTIMIZE_SIZE)
     set(optimize_size ${SYMCR_OPTIMIZE_SIZE})
   else()

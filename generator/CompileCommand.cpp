@@ -3,9 +3,11 @@
 #include "CompileCommand.h"
 
 #include "clang/Driver/Options.h"
+#include "llvm/ADT/Triple.h"
 #include "llvm/Option/ArgList.h"
 #include "llvm/Option/OptTable.h"
 #include "llvm/Support/FileSystem.h"
+#include "llvm/Support/Host.h"
 #include "llvm/Support/MemoryBuffer.h"
 #include "llvm/Support/Path.h"
 #include "llvm/Support/Program.h"
@@ -58,7 +60,103 @@ std::string standardFromMacros(llvm::StringRef Macros, bool IsC) {
   return std::string(Gnu ? "gnu++" : "c++") + Year;
 }
 
+/// Runs \p Compiler with \p Arguments and returns what it wrote to standard
+/// output (\p Stderr: to standard error), or None when it could not run.
+llvm::Optional<std::string> runCompiler(llvm::StringRef Compiler,
+                                        llvm::ArrayRef<std::string> Arguments,
+                                        bool Stderr = false) {
+  llvm::ErrorOr<std::string> Program = llvm::sys::findProgramByName(Compiler);
+  llvm::SmallString<128> Output;
+  if (!Program ||
+      llvm::sys::fs::createTemporaryFile("symcr-gen-compiler", "txt", Output))
+    return llvm::None;
+  std::vector<llvm::StringRef> Argv{*Program};
+  Argv.insert(Argv.end(), Arguments.begin(), Arguments.end());
+  llvm::Optional<llvm::StringRef> Redirects[] = {
+      llvm::StringRef(""), Stderr ? llvm::StringRef("") : llvm::StringRef(Output),
+      Stderr ? llvm::StringRef(Output) : llvm::StringRef("")};
+  llvm::Optional<std::string> Result;
+  if (llvm::sys::ExecuteAndWait(*Program, Argv, llvm::None, Redirects,
+                                /*SecondsToWait=*/30) == 0)
+    if (auto Text = llvm::MemoryBuffer::getFile(Output))
+      Result = (*Text)->getBuffer().str();
+  llvm::sys::fs::remove(Output);
+  return Result;
+}
+
+/// A GNU cross compiler's own headers, from its `-v` listing: the C++ library's
+/// and the C library's directories, in its order. GCC's private directories
+/// (lib/gcc/<triple>/<version>/include[-fixed]) are left out: Clang's resource
+/// directory has its own versions of those headers.
+std::vector<std::string> crossSearchDirectories(llvm::StringRef Listing) {
+  std::vector<std::string> Dirs;
+  bool Inside = false;
+  llvm::SmallVector<llvm::StringRef, 32> Lines;
+  Listing.split(Lines, '\n');
+  for (llvm::StringRef Line : Lines) {
+    if (Line.startswith("#include <...> search starts here:")) {
+      Inside = true;
+      continue;
+    }
+    if (Line.startswith("End of search list."))
+      break;
+    if (!Inside)
+      continue;
+    llvm::SmallString<256> Dir(Line.trim());
+    llvm::sys::path::remove_dots(Dir, /*remove_dot_dot=*/true);
+    llvm::StringRef Name = llvm::sys::path::filename(Dir);
+    if (llvm::StringRef(Dir).contains("/lib/gcc/") &&
+        (Name == "include" || Name == "include-fixed"))
+      continue;
+    Dirs.push_back(std::string(Dir));
+  }
+  return Dirs;
+}
+
 } // namespace
+
+std::vector<std::string>
+CompileCommandAdapter::crossCompilerFlags(const CommandLineArguments &Args,
+                                          bool IsC) {
+  const std::string &Compiler = Args[0];
+  if (isClang(Compiler))
+    return {};
+  // Flags that choose the target's variant (and so GCC's multilib headers).
+  std::vector<std::string> Machine;
+  for (std::size_t I = 1; I < Args.size(); ++I)
+    if (llvm::StringRef(Args[I]).startswith("-m") ||
+        llvm::StringRef(Args[I]).startswith("--specs"))
+      Machine.push_back(Args[I]);
+  std::string Key = Compiler + (IsC ? "|c" : "|c++");
+  for (const std::string &Flag : Machine)
+    Key += "|" + Flag;
+  {
+    std::lock_guard<std::mutex> Guard(Lock);
+    auto It = CrossFlags.find(Key);
+    if (It != CrossFlags.end())
+      return It->second;
+  }
+  std::vector<std::string> Result;
+  llvm::Optional<std::string> Dumped = runCompiler(Compiler, {"-dumpmachine"});
+  llvm::Triple Target(llvm::StringRef(Dumped ? *Dumped : "").trim());
+  llvm::Triple Host(llvm::sys::getDefaultTargetTriple());
+  if (Dumped && Target.getArch() != llvm::Triple::UnknownArch &&
+      (Target.getArch() != Host.getArch() || Target.getOS() != Host.getOS())) {
+    std::vector<std::string> Query = Machine;
+    for (const char *Arg : {"-E", "-x", IsC ? "c" : "c++", "/dev/null", "-v"})
+      Query.push_back(Arg);
+    llvm::Optional<std::string> Listing =
+        runCompiler(Compiler, Query, /*Stderr=*/true);
+    Result.push_back("--target=" + Target.str());
+    Result.push_back("-nostdlibinc");
+    for (const std::string &Dir :
+         crossSearchDirectories(Listing ? *Listing : ""))
+      Result.insert(Result.end(), {"-isystem", Dir});
+  }
+  std::lock_guard<std::mutex> Guard(Lock);
+  CrossFlags[Key] = Result;
+  return Result;
+}
 
 std::string CompileCommandAdapter::defaultStandard(const std::string &Compiler,
                                                    bool IsC) {
@@ -72,21 +170,9 @@ std::string CompileCommandAdapter::defaultStandard(const std::string &Compiler,
       return It->second;
   }
   std::string Result;
-  llvm::ErrorOr<std::string> Program = llvm::sys::findProgramByName(Compiler);
-  llvm::SmallString<128> Output;
-  if (Program && !llvm::sys::fs::createTemporaryFile("symcr-gen-macros", "txt",
-                                                      Output)) {
-    llvm::StringRef Argv[] = {*Program, "-dM", "-E", "-x", IsC ? "c" : "c++",
-                              "/dev/null"};
-    llvm::Optional<llvm::StringRef> Redirects[] = {llvm::StringRef(""),
-                                                    llvm::StringRef(Output),
-                                                    llvm::StringRef("")};
-    if (llvm::sys::ExecuteAndWait(*Program, Argv, llvm::None, Redirects,
-                                  /*SecondsToWait=*/30) == 0)
-      if (auto Text = llvm::MemoryBuffer::getFile(Output))
-        Result = standardFromMacros((*Text)->getBuffer(), IsC);
-    llvm::sys::fs::remove(Output);
-  }
+  if (llvm::Optional<std::string> Macros =
+          runCompiler(Compiler, {"-dM", "-E", "-x", IsC ? "c" : "c++", "/dev/null"}))
+    Result = standardFromMacros(*Macros, IsC);
   std::lock_guard<std::mutex> Guard(Lock);
   Defaults[Key] = Result;
   return Result;
@@ -131,12 +217,15 @@ CompileCommandAdapter::adapt(const CommandLineArguments &Args,
   }
   // No -std: the program is compiled in its compiler's default dialect (g++ 12:
   // gnu++17), which may not be Clang's (gnu++14).
+  bool IsC = llvm::sys::path::extension(File) == ".c";
   if (!HasStandard) {
-    bool IsC = llvm::sys::path::extension(File) == ".c";
     std::string Standard = defaultStandard(Args[0], IsC);
     if (!Standard.empty())
       Result.push_back("-std=" + Standard);
   }
+  // A cross compiler's target decides the layouts the schema records.
+  for (std::string &Flag : crossCompilerFlags(Args, IsC))
+    Result.push_back(std::move(Flag));
   return Result;
 }
 

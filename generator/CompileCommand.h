@@ -4,8 +4,9 @@
 // program (g++ for an autopilot), while symcr-gen parses with Clang 14. These
 // adjustments make Clang see the program the way that compiler does: its
 // default language standard when the command names none, Clang's spelling of
-// the g++ flags that change what is well-formed, and a warning naming every
-// flag Clang does not know and drops.
+// the g++ flags that change what is well-formed, a cross compiler's target and
+// headers (arm-none-eabi-g++ for a microcontroller: the layouts are the
+// target's), and a warning naming every flag Clang does not know and drops.
 //
 //===----------------------------------------------------------------------===//
 
@@ -18,6 +19,7 @@
 #include <mutex>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace symcr_gen {
 
@@ -38,9 +40,17 @@ private:
   /// Clang already uses) or cannot be asked.
   std::string defaultStandard(const std::string &Compiler, bool IsC);
 
+  /// For a GNU compiler whose target is not the host's (asked with
+  /// -dumpmachine): --target=<its triple>, -nostdlibinc and its own header
+  /// directories as -isystem. Empty for a native or a Clang compiler.
+  /// Remembered per compiler and -m flags.
+  std::vector<std::string>
+  crossCompilerFlags(const clang::tooling::CommandLineArguments &Args, bool IsC);
+
   mutable std::mutex Lock;
   std::set<std::string> Dropped;
   std::map<std::string, std::string> Defaults; ///< "compiler|c" -> "gnu17"
+  std::map<std::string, std::vector<std::string>> CrossFlags;
 };
 
 } // namespace symcr_gen

@@ -80,7 +80,16 @@ const char *opsTableType(OpsKind Ops) {
 /// The type has a user's symcr_migrate and a C++ home TU to call it from.
 bool hasMigrate(const ProgramModel &Program, const TypeModel &Type) {
   return Type.HasMigrate && !Type.Spelling.empty() &&
-         !Program.TranslationUnits[Type.HomeTU].IsC;
+         !Program.TranslationUnits[Type.HomeTU].IsC &&
+         Program.Profile == RuntimeProfile::Host;
+}
+
+bool emitsLifecycle(const ProgramModel &Program, const TypeModel &Type) {
+  return Type.hasLifecycle() && Program.Profile == RuntimeProfile::Host;
+}
+
+bool emitsOps(const ProgramModel &Program, const TypeModel &Type) {
+  return Type.Ops != OpsKind::None && Program.Profile == RuntimeProfile::Host;
 }
 
 } // namespace symcr_gen

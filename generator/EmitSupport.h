@@ -22,8 +22,18 @@ const char *kindName(symcr::Kind Kind);
 /// OpsKind::None.
 const char *opsTableType(OpsKind Ops);
 
-/// The type has a user's symcr_migrate and a C++ home TU to call it from.
+/// The type has a user's symcr_migrate and a C++ home TU to call it from,
+/// and the profile migrates (the device profile restores its own build only).
 bool hasMigrate(const ProgramModel &Program, const TypeModel &Type);
+
+/// The generated code carries the type's Lifecycle: the host profile creates
+/// heap objects and staged copies with it; the device profile never allocates.
+/// (The schema's kTypeCreatable flag describes the type either way.)
+bool emitsLifecycle(const ProgramModel &Program, const TypeModel &Type);
+
+/// The generated code carries the type's ops table (the host profile's
+/// strings, containers, optionals, variants and smart pointers).
+bool emitsOps(const ProgramModel &Program, const TypeModel &Type);
 
 } // namespace symcr_gen
 

@@ -257,9 +257,16 @@ struct RootReport {
       0; ///< fixed-size bytes reached (containers: per element)
 };
 
+/// Which runtime the generated code serves (--profile).
+enum class RuntimeProfile {
+  Host,  ///< runtime/: every supported type, heap objects, stores
+  Device ///< runtime/device: no heap; no ops tables, lifecycles or migrations
+};
+
 struct ProgramModel {
   /// The program's name (--program): its identity in checkpoint headers.
   std::string Name;
+  RuntimeProfile Profile = RuntimeProfile::Host;
   std::vector<TypeModel> Types;
   std::map<std::string, std::uint32_t>
       TypeIndex; ///< by canonical name (+ shallow flag)

@@ -65,10 +65,10 @@ private:
     OS << "namespace symcr_gen {\n";
     for (std::size_t I = 0; I < Program.Types.size(); ++I) {
       const TypeModel &T = Program.Types[I];
-      if (T.Ops != OpsKind::None)
+      if (emitsOps(Program, T))
         OS << "extern const symcr::" << opsTableType(T.Ops) << " ops_" << I
            << ";\n";
-      if (T.hasLifecycle() && !Program.TranslationUnits[T.HomeTU].IsC)
+      if (emitsLifecycle(Program, T) && !Program.TranslationUnits[T.HomeTU].IsC)
         OS << "extern const symcr::Lifecycle lifecycle_" << I << ";\n";
       if (T.hasValidate(Program))
         OS << "bool validate_" << I << "(const void* object);\n";
@@ -79,7 +79,7 @@ private:
     OS << "}  // namespace symcr_gen\n\n";
     for (std::size_t I = 0; I < Program.Types.size(); ++I) {
       const TypeModel &T = Program.Types[I];
-      if (T.hasLifecycle() && Program.TranslationUnits[T.HomeTU].IsC)
+      if (emitsLifecycle(Program, T) && Program.TranslationUnits[T.HomeTU].IsC)
         OS << "extern \"C\" const symcr::Lifecycle symcr_gen_c_lifecycle_" << I
            << ";\n";
     }
@@ -93,7 +93,7 @@ private:
 
   /// A nullptr-terminated name list as a named array; "nullptr" for none.
   std::string names(const std::string &Symbol, const char *const *List) {
-    if (!List)
+    if (!List || Device)
       return "nullptr";
     OS << "const char* const " << Symbol << "[] = {";
     for (std::size_t I = 0; List[I]; ++I)
@@ -113,18 +113,30 @@ private:
         FieldRenamed.push_back(
             names("field_renamed_" + Index + "_" + std::to_string(F),
                   T.fields[F].renamed_from));
+      // Ranges are few: each is a constant of its own, pointed to.
+      std::vector<std::string> FieldRanges;
+      for (std::uint32_t F = 0; F < T.field_count; ++F) {
+        const symcr::FieldRange *Range = T.fields[F].range;
+        if (!Range) {
+          FieldRanges.push_back("nullptr");
+          continue;
+        }
+        std::string Symbol = "range_" + Index + "_" + std::to_string(F);
+        OS << "const symcr::FieldRange " << Symbol << " = {" << number(Range->min)
+           << ", " << number(Range->max) << "};\n";
+        FieldRanges.push_back("&" + Symbol);
+      }
       OS << "const symcr::FieldInfo fields_" << I << "[] = {\n";
       for (std::uint32_t F = 0; F < T.field_count; ++F) {
         const symcr::FieldInfo &Field = T.fields[F];
-        OS << "    {" << quoted(Field.name) << ", " << Field.type << "u, "
+        OS << "    {" << nameText(Field.name) << ", " << Field.type << "u, "
            << Field.offset << "u, " << Field.bit_offset << ", "
            << Field.bit_width << ", " << Field.flags << "u, "
-           << FieldRenamed[F] << ", " << number(Field.range_min) << ", "
-           << number(Field.range_max) << "},\n";
+           << FieldRenamed[F] << ", " << FieldRanges[F] << "},\n";
       }
       OS << "};\n";
     }
-    if (T.enumerator_count != 0) {
+    if (T.enumerator_count != 0 && !Device) {
       OS << "const symcr::EnumeratorInfo enumerators_" << I << "[] = {\n";
       for (std::uint32_t E = 0; E < T.enumerator_count; ++E) {
         const symcr::EnumeratorInfo &Enumerator = T.enumerators[E];
@@ -152,19 +164,20 @@ private:
       const symcr::TypeInfo &T = Schema.types[I];
       const TypeModel &Model = Program.Types[I];
       const std::string Index = std::to_string(I);
-      OS << "    {" << quoted(T.name) << ", symcr::Kind::" << kindName(T.kind)
+      OS << "    {" << nameText(T.name) << ", symcr::Kind::" << kindName(T.kind)
          << ", " << T.flags << "u, " << T.size << "u, " << T.align << "u, "
          << (T.field_count ? "fields_" + Index : "nullptr") << ", "
          << T.field_count << "u, "
-         << (T.enumerator_count ? "enumerators_" + Index : "nullptr") << ", "
-         << T.enumerator_count << "u, " << uintText(T.element) << ", "
+         << (T.enumerator_count && !Device ? "enumerators_" + Index : "nullptr")
+         << ", " << (Device ? 0 : T.enumerator_count) << "u, "
+         << uintText(T.element) << ", "
          << T.count << "u, "
          << (T.alternative_count ? "alternatives_" + Index : "nullptr") << ", "
          << T.alternative_count << "u, "
          << static_cast<unsigned>(T.container_kind) << ", "
-         << (Model.Ops == OpsKind::None ? "nullptr" : "&symcr_gen::ops_" + Index)
+         << (!emitsOps(Program, Model) ? "nullptr" : "&symcr_gen::ops_" + Index)
          << ", "
-         << (!Model.hasLifecycle() ? std::string("nullptr")
+         << (!emitsLifecycle(Program, Model) ? std::string("nullptr")
              : Program.TranslationUnits[Model.HomeTU].IsC
                  ? "&symcr_gen_c_lifecycle_" + Index
                  : "&symcr_gen::lifecycle_" + Index)
@@ -185,10 +198,21 @@ private:
     for (std::uint32_t I = 0; I < Serialised.size; ++I)
       OS << (I % 24 == 0 ? "\n    " : "") << unsigned(Serialised.bytes[I])
          << ",";
+    OS << "\n};\nconst symcr::SerialisedSchema serialised{serialised_bytes, "
+       << Serialised.size << "u, " << hashText() << "};\n";
+  }
+
+  std::string hashText() const {
     char Hash[32];
     std::snprintf(Hash, sizeof Hash, "0x%016" PRIx64 "ull", Serialised.hash);
-    OS << "\n};\nconst symcr::SerialisedSchema serialised{serialised_bytes, "
-       << Serialised.size << "u, " << Hash << "};\n";
+    return Hash;
+  }
+
+  /// A name in the tables. The device profile's tables carry none: its
+  /// runtime addresses fields by position and the host reads names from the
+  /// schema file (whose hash, that of the full tables, the build keeps).
+  std::string nameText(const char *Name) const {
+    return Device || !Name ? std::string("nullptr") : quoted(Name);
   }
 
   void writeProgramSchema(const std::vector<std::string> &RootRenamed) {
@@ -199,7 +223,7 @@ private:
       OS << "  static const symcr::RootInfo roots[] = {\n";
       for (std::uint32_t I = 0; I < Schema.root_count; ++I) {
         const symcr::RootInfo &R = Schema.roots[I];
-        OS << "      {" << quoted(R.name) << ", " << R.type
+        OS << "      {" << nameText(R.name) << ", " << R.type
            << "u, symcr_gen_root_" << I << ", " << R.flags << "u, "
            << RootRenamed[I] << "},\n";
       }
@@ -213,10 +237,14 @@ private:
        << (Schema.program ? quoted(Schema.program) : std::string("nullptr"))
        << "};\n  return &schema;\n}\n\n"
        << "extern \"C\" const symcr::SerialisedSchema* "
-          "symcr_program_serialised_schema(void) {\n  return &serialised;\n}\n";
+          "symcr_program_serialised_schema(void) {\n  return &serialised;\n}\n"
+       << "\nextern \"C\" std::uint64_t symcr_program_schema_hash(void) {\n"
+          "  return "
+       << hashText() << ";\n}\n";
   }
 
   const ProgramModel &Program;
+  const bool Device = Program.Profile == RuntimeProfile::Device;
   const symcr::Schema &Schema;
   const symcr::SerialisedSchema &Serialised;
   std::ostringstream &OS;

@@ -31,8 +31,7 @@ SchemaTables::SchemaTables(const ProgramModel &Program) {
                              static_cast<std::uint16_t>(Field.BitWidth),
                              Field.Flags,
                              aliases(Field.RenamedFrom),
-                             Field.RangeMin,
-                             Field.RangeMax};
+                             range(Field)};
       }
       Info.fields = Fields.data();
       Info.field_count = static_cast<std::uint32_t>(Fields.size());
@@ -69,6 +68,13 @@ SchemaTables::SchemaTables(const ProgramModel &Program) {
   symcr::detail::serialise_blob(Schema, Blob);
   Serialised = symcr::SerialisedSchema{
       Blob.data, static_cast<std::uint32_t>(Blob.size), Blob.hash};
+}
+
+const symcr::FieldRange *SchemaTables::range(const FieldModel &Field) {
+  if (!(Field.Flags & symcr::kFieldHasRange))
+    return nullptr;
+  Ranges.push_back(symcr::FieldRange{Field.RangeMin, Field.RangeMax});
+  return &Ranges.back();
 }
 
 /// A nullptr-terminated list of \p Names, or nullptr when there are none

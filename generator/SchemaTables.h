@@ -34,6 +34,8 @@ public:
 
 private:
   const char *const *aliases(const std::vector<std::string> &Names);
+  /// The field's SYMCR_RANGE bounds, or null without one.
+  const symcr::FieldRange *range(const FieldModel &Field);
   const char *const *leftToNewBuild(const TypeModel &T);
   template <class Items, class NameOf>
   const char *const *nameList(const Items &List, NameOf Name);
@@ -44,6 +46,7 @@ private:
   std::list<std::vector<symcr::FieldInfo>> FieldTables;
   std::list<std::vector<symcr::EnumeratorInfo>> EnumeratorTables;
   std::list<std::vector<const char *>> AliasTables;
+  std::list<symcr::FieldRange> Ranges;
   symcr::detail::SchemaBlob Blob;
   symcr::SerialisedSchema Serialised{};
   symcr::Schema Schema{};

@@ -10,6 +10,7 @@
 
 #include "Annotations.h"
 #include "CompileCommand.h"
+#include "DeviceProfile.h"
 #include "Emitter.h"
 #include "ProgramPoints.h"
 #include "SchemaBuilder.h"
@@ -96,6 +97,15 @@ static llvm::cl::opt<unsigned>
          llvm::cl::desc("Parse this many sources in parallel (default: the "
                         "number of CPUs)"),
          llvm::cl::init(0), llvm::cl::cat(Category));
+static llvm::cl::opt<symcr_gen::RuntimeProfile> Profile(
+    "profile", llvm::cl::desc("The runtime the generated code serves"),
+    llvm::cl::values(
+        clEnumValN(symcr_gen::RuntimeProfile::Host, "host",
+                   "the host runtime: every supported type (default)"),
+        clEnumValN(symcr_gen::RuntimeProfile::Device, "device",
+                   "the device profile (runtime/device): no heap; a type it "
+                   "cannot hold is an error naming the member and the fix")),
+    llvm::cl::init(symcr_gen::RuntimeProfile::Host), llvm::cl::cat(Category));
 static llvm::cl::opt<bool>
     Timing("time", llvm::cl::desc("Print the time spent per source"),
            llvm::cl::cat(Category));
@@ -315,6 +325,7 @@ int main(int argc, const char **argv) {
     return 1;
 
   ProgramModel Program;
+  Program.Profile = Profile;
   Program.Name = ProgramName;
   std::map<std::string, std::string> SourceToWrapper;
   std::vector<std::string> Sources;
@@ -412,6 +423,8 @@ int main(int argc, const char **argv) {
   // sees: "matches nothing" would then be a false lead.
   Builder.finish(/*CheckUnmatched=*/UnparsedSources == 0);
   Points.finish(/*CheckUnmatched=*/UnparsedSources == 0);
+  if (Program.Profile == RuntimeProfile::Device)
+    checkDeviceProfile(Program, Diags);
   if (UnparsedSources || Diags.errorCount()) {
     llvm::errs() << "symcr-gen: " << Diags.errorCount() + UnparsedSources
                  << " error(s)";

@@ -61,7 +61,7 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
     bool LifecycleDeclared = false;
     for (std::uint32_t I : Home) {
       const TypeModel &T = Program.Types[I];
-      if (!T.hasLifecycle())
+      if (!emitsLifecycle(Program, T))
         continue;
       if (!LifecycleDeclared)
         OS << "struct symcr_gen_lifecycle {\n  void* (*create)(void);\n"
@@ -98,8 +98,11 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
     return OS.str();
   }
 
+  // The device profile's code names no ops template: no heap, no containers.
   OS << "#include <cstddef>\n#include <type_traits>\n\n#include "
-        "<symcr/ops.hpp>\n\n";
+     << (Program.Profile == RuntimeProfile::Device ? "<symcr/generated.hpp>"
+                                                   : "<symcr/ops.hpp>")
+     << "\n\n";
   // Explicit instantiations may name private members and types (the
   // access-check exemption of [temp.spec]); friend functions defined by them
   // export a root's address or a type, so private nested types and private
@@ -160,19 +163,19 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
         OS << "static_assert(offsetof(" << Type << ", " << F.OffsetCheckMember
            << ") == " << F.Offset << ", \"symcr-gen: offset of " << T.Name
            << "::" << F.Name << " differs\");\n";
-    if (T.Ops != OpsKind::None)
+    if (emitsOps(Program, T))
       OS << "extern const symcr::" << opsTableType(T.Ops) << " ops_" << I
          << ";\n"
          << "const symcr::" << opsTableType(T.Ops) << " ops_" << I
          << " = symcr::ops::" << opsTemplate(T.Ops) << "<" << Type
          << ">::table;\n";
-    if (T.hasLifecycle() && T.VtableSymbol.empty())
+    if (emitsLifecycle(Program, T) && T.VtableSymbol.empty())
       OS << "extern const symcr::Lifecycle lifecycle_" << I << ";\n"
          << "const symcr::Lifecycle lifecycle_" << I
          << " = symcr::ops::lifecycle<" << Type << ">::table;\n";
     // A heap object's dynamic type is recognised by its vtable, named by its
     // mangled symbol (a GNU asm label: there is no other way to name it).
-    if (T.hasLifecycle() && !T.VtableSymbol.empty())
+    if (emitsLifecycle(Program, T) && !T.VtableSymbol.empty())
       OS << "extern const void* const vtable_" << I << "[] __asm__(\""
          << T.VtableSymbol << "\");\n"
          << "extern const symcr::Lifecycle lifecycle_" << I << ";\n"

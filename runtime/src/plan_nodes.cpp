@@ -351,8 +351,10 @@ void Planner::fill_struct(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
     field.bit_offset = reader.bit_offset;
     field.bit_width = reader.bit_width;
     field.has_range = (reader.flags & kFieldHasRange) != 0;
-    field.range_min = reader.range_min;
-    field.range_max = reader.range_max;
+    if (field.has_range) {
+      field.range_min = reader.range->min;
+      field.range_max = reader.range->max;
+    }
     field.node = node(writer.type, reader.type);
   }
 }

@@ -61,8 +61,8 @@ void serialise_schema(const Schema& schema, std::vector<std::uint8_t>& out) {
           put_u32(out, field.flags);
           put_aliases(out, field.renamed_from);
           if (field.flags & kFieldHasRange) {
-            put_f64(out, field.range_min);
-            put_f64(out, field.range_max);
+            put_f64(out, field.range->min);
+            put_f64(out, field.range->max);
           }
         }
         break;

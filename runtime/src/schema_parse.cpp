@@ -17,6 +17,7 @@ struct ParsedSchema::Storage {
   std::vector<char> strings;  // every name, NUL-terminated
   std::vector<TypeInfo> types;
   std::vector<FieldInfo> fields;
+  std::vector<FieldRange> ranges;  // FieldInfo::range points here (set once all are read)
   std::vector<EnumeratorInfo> enumerators;
   std::vector<std::uint32_t> alternatives;
   std::vector<RootInfo> roots;
@@ -53,6 +54,7 @@ struct TypeFixup {
 };
 struct NamedFixup {
   std::size_t name, aliases;
+  std::size_t range = 0;  // fields with kFieldHasRange: index into Storage::ranges
 };
 
 class Parser {
@@ -188,9 +190,11 @@ class Parser {
               !read_aliases(named.aliases)) {
             return truncated("field");
           }
-          if ((field.flags & kFieldHasRange) &&
-              (!in_.read(field.range_min) || !in_.read(field.range_max))) {
-            return truncated("field range");
+          if (field.flags & kFieldHasRange) {
+            FieldRange range{};
+            if (!in_.read(range.min) || !in_.read(range.max)) return truncated("field range");
+            named.range = s_.ranges.size();
+            s_.ranges.push_back(range);
           }
           if (!check_index(field.type)) {
             return corrupt("field %u of type %u has type index %u out of range", f, index,
@@ -350,6 +354,7 @@ class Parser {
     for (std::size_t f = 0; f < s_.fields.size(); ++f) {
       s_.fields[f].name = base + field_fixups_[f].name;
       s_.fields[f].renamed_from = aliases_at(field_fixups_[f].aliases);
+      if (s_.fields[f].flags & kFieldHasRange) s_.fields[f].range = &s_.ranges[field_fixups_[f].range];
     }
     for (std::size_t e = 0; e < s_.enumerators.size(); ++e) {
       s_.enumerators[e].name = base + enumerator_names_[e];

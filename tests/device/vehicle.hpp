@@ -75,14 +75,16 @@ enum : std::uint32_t {
 inline const symcr::EnumeratorInfo kModes[] = {{"Stabilize", 0}, {"Auto", 3}};
 inline const symcr::FieldInfo kPointFields[] = {field("x", kI32, offsetof(Point, x)),
                                                 field("y", kF64, offsetof(Point, y))};
+constexpr symcr::FieldRange kTrimRange{-12.0, 12.0};
+constexpr symcr::FieldRange kAltitudeRange{-100, 5000};
 inline const symcr::FieldInfo kFlagsFields[] = {
     bit_field("armed", kU32, 0, 1),
-    {"trim", kI32, 0, 1, 5, symcr::kFieldHasRange, nullptr, -12.0, 12.0},  // ranged bit-field
+    {"trim", kI32, 0, 1, 5, symcr::kFieldHasRange, nullptr, &kTrimRange},  // ranged bit-field
     bit_field("count", kU32, 6, 10)};
 inline const symcr::FieldInfo kVehicleFields[] = {
     field("flying", kBool, offsetof(Vehicle, flying)),
     field("mode", kMode, offsetof(Vehicle, mode)),
-    ranged("altitude", kI16, offsetof(Vehicle, altitude), -100, 5000),
+    ranged("altitude", kI16, offsetof(Vehicle, altitude), kAltitudeRange),
     field("ticks", kU64, offsetof(Vehicle, ticks)),
     field("battery", kF32, offsetof(Vehicle, battery)),
     field("raw", kRaw, offsetof(Vehicle, raw)),

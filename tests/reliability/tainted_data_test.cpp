@@ -49,10 +49,15 @@ bool validate_limits(const void* object) {
   return limits->lo <= limits->hi;
 }
 
+constexpr symcr::FieldRange kAltitudeRange{-100, 10000};
+constexpr symcr::FieldRange kThrottleRange{0, 100};
+constexpr symcr::FieldRange kSpeedRange{0, 50};
+constexpr symcr::FieldRange kHeadingRange{0, 359};
+
 const symcr::Schema& vehicle_schema() {
   static const FieldInfo sensor_fields[] = {
-      ranged("altitude", 0, offsetof(Sensor, altitude), -100, 10000),
-      ranged("throttle", 1, offsetof(Sensor, throttle), 0, 100),
+      ranged("altitude", 0, offsetof(Sensor, altitude), kAltitudeRange),
+      ranged("throttle", 1, offsetof(Sensor, throttle), kThrottleRange),
       field("mode", 2, offsetof(Sensor, mode))};
   static const FieldInfo limits_fields[] = {field("lo", 1, offsetof(Limits, lo)),
                                             field("hi", 1, offsetof(Limits, hi))};
@@ -60,8 +65,8 @@ const symcr::Schema& vehicle_schema() {
       field("sensor", 3, offsetof(Vehicle, sensor)),
       field("limits", 5, offsetof(Vehicle, limits)),
       field("more", 6, offsetof(Vehicle, more)),
-      ranged("speed", 7, offsetof(Vehicle, speed), 0, 50),
-      ranged("heading", 8, offsetof(Vehicle, heading), 0, 359)};
+      ranged("speed", 7, offsetof(Vehicle, speed), kSpeedRange),
+      ranged("heading", 8, offsetof(Vehicle, heading), kHeadingRange)};
   static const TypeInfo types[] = {
       scalar("float32", Kind::Float, 4),
       scalar("int32", Kind::Int, 4),

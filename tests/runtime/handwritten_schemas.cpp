@@ -85,6 +85,7 @@ const Schema& schema() {
   static const FieldInfo bits_fields[] = {
       bit_field("a", 11, 0, 5), bit_field("c", 1, 5, 3), bit_field("b", 11, 8, 6)};
   static const char* const yaw_aliases[] = {"heading", nullptr};
+  static constexpr symcr::FieldRange kSpeedRange{0, 100};
   static const FieldInfo basic_fields[] = {
       field("added", 1, offsetof(Basic, added)),
       field("ratio", 3, offsetof(Basic, ratio)),
@@ -106,7 +107,7 @@ const Schema& schema() {
       field("blob2", 10, offsetof(Basic, blob2)),
       field("kind_change", 1, offsetof(Basic, kind_change)),
       field("bits", 12, offsetof(Basic, bits)),
-      ranged("speed", 1, offsetof(Basic, speed), 0, 100)};
+      ranged("speed", 1, offsetof(Basic, speed), kSpeedRange)};
   static const TypeInfo types[] = {
       scalar("int16", Kind::Int, 2),
       scalar("int32", Kind::Int, 4),

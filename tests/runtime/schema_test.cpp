@@ -72,7 +72,7 @@ TEST(EngineSchema, ParsedAliasesAndRangesSurvive) {
   EXPECT_STREQ(basic.fields[3].renamed_from[0], "heading");
   EXPECT_EQ(basic.fields[3].renamed_from[1], nullptr);
   EXPECT_TRUE(basic.fields[20].flags & symcr::kFieldHasRange);
-  EXPECT_EQ(basic.fields[20].range_max, 100.0);
+  EXPECT_EQ(basic.fields[20].range->max, 100.0);
   EXPECT_STREQ(parsed.schema().roots[1].renamed_from[0], "old_counter");
   EXPECT_STREQ(parsed.schema().types[5].enumerators[3].name, "RTL");
 }

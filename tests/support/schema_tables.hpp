@@ -62,21 +62,22 @@ constexpr TypeInfo variant_of(const char* name, std::uint32_t size, std::uint32_
 
 constexpr FieldInfo field(const char* name, std::uint32_t type, std::size_t offset,
                           const char* const* renamed_from = nullptr) {
-  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, 0, renamed_from, 0.0, 0.0};
+  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, 0, renamed_from, nullptr};
 }
 // A bit-field of `width` bits from `bit_offset` of the storage unit at offset 0.
 constexpr FieldInfo bit_field(const char* name, std::uint32_t type, std::uint16_t bit_offset,
                               std::uint16_t width) {
-  return {name, type, 0, bit_offset, width, 0, nullptr, 0.0, 0.0};
+  return {name, type, 0, bit_offset, width, 0, nullptr, nullptr};
 }
 constexpr FieldInfo base(const char* name, std::uint32_t type, std::size_t offset) {
   return {name, type, static_cast<std::uint32_t>(offset), 0, 0, symcr::kFieldBase, nullptr,
-          0.0, 0.0};
+          nullptr};
 }
-constexpr FieldInfo ranged(const char* name, std::uint32_t type, std::size_t offset, double lo,
-                           double hi) {
+// `range` must outlive the tables: a namespace-scope or static constant.
+constexpr FieldInfo ranged(const char* name, std::uint32_t type, std::size_t offset,
+                           const symcr::FieldRange& range) {
   return {name, type, static_cast<std::uint32_t>(offset), 0, 0, symcr::kFieldHasRange, nullptr,
-          lo, hi};
+          &range};
 }
 
 }  // namespace schema_tables

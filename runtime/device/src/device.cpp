@@ -32,11 +32,9 @@ const char* result_text(Result result) {
 
 Build program_build() {
   Build build{nullptr, 0};
-  if (symcr_program_schema == nullptr || symcr_program_serialised_schema == nullptr) return build;
-  const SerialisedSchema* serialised = symcr_program_serialised_schema();
+  if (symcr_program_schema == nullptr || symcr_program_schema_hash == nullptr) return build;
   build.schema = symcr_program_schema();
-  build.schema_hash = serialised != nullptr ? serialised->hash : 0;
-  if (serialised == nullptr) build.schema = nullptr;
+  build.schema_hash = symcr_program_schema_hash();
   return build;
 }
 

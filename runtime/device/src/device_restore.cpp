@@ -200,7 +200,7 @@ class Restorer {
     } else {
       return true;  // a range on anything else is not the generator's
     }
-    return v == v && v >= field.range_min && v <= field.range_max;  // NaN is outside
+    return v == v && v >= field.range->min && v <= field.range->max;  // NaN is outside
   }
 
   const Schema& schema_;

@@ -86,6 +86,12 @@ struct EnumeratorInfo {
   std::int64_t value;   // its value (unsigned 64-bit enumerators are stored bit-cast)
 };
 
+// SYMCR_RANGE's inclusive bounds on a member's value. Apart from FieldInfo: few members have one.
+struct FieldRange {
+  double min;
+  double max;
+};
+
 struct FieldInfo {
   const char* name;                  // source name of the member (or base type name)
   std::uint32_t type;                // index into Schema::types
@@ -95,8 +101,7 @@ struct FieldInfo {
   std::uint16_t bit_width;           // bit-field width in bits; 0 = not a bit-field
   std::uint32_t flags;               // kField*
   const char* const* renamed_from;   // nullptr-terminated list of old names, or nullptr
-  double range_min;                  // with kFieldHasRange: inclusive bounds on the value
-  double range_max;
+  const FieldRange* range;           // with kFieldHasRange: the bounds on the value; else null
 };
 
 // Per-kind operations: the only code the runtime cannot derive from offsets. Implemented as
@@ -231,5 +236,8 @@ struct SerialisedSchema {
 }  // namespace symcr
 extern "C" const symcr::SerialisedSchema* symcr_program_serialised_schema(void)
     __attribute__((weak));
+// The hash alone: what the device profile needs, without keeping the serialised bytes in a
+// firmware that never reads them.
+extern "C" std::uint64_t symcr_program_schema_hash(void) __attribute__((weak));
 
 #endif  // SYMCR_GENERATED_HPP

@@ -272,11 +272,13 @@ TEST(Tables, RangesAndRenames) {
   const symcr::FieldInfo* throttle = field_named(limits, "throttle");
   ASSERT_NE(throttle, nullptr);
   EXPECT_TRUE(throttle->flags & symcr::kFieldHasRange);
-  EXPECT_EQ(throttle->range_min, 0.0);
-  EXPECT_EQ(throttle->range_max, 1.0);
+  ASSERT_NE(throttle->range, nullptr);
+  EXPECT_EQ(throttle->range->min, 0.0);
+  EXPECT_EQ(throttle->range->max, 1.0);
   const symcr::FieldInfo* altitude = field_named(limits, "altitude");
-  EXPECT_EQ(altitude->range_min, -100.5);
-  EXPECT_EQ(altitude->range_max, 1e4);
+  ASSERT_NE(altitude->range, nullptr);
+  EXPECT_EQ(altitude->range->min, -100.5);
+  EXPECT_EQ(altitude->range->max, 1e4);
   const symcr::FieldInfo* yaw = field_named(limits, "yaw");
   EXPECT_FALSE(yaw->flags & symcr::kFieldHasRange);
   ASSERT_NE(yaw->renamed_from, nullptr);

@@ -41,7 +41,7 @@ enum class Result : std::uint8_t {
 const char* result_text(Result result);
 
 // The identity of a build's schema: its tables and the hash of their serialised form, which
-// symcr-gen emits as constants (symcr_program_serialised_schema()).
+// symcr-gen emits as constants (symcr_program_schema_hash()).
 struct Build {
   const Schema* schema;
   std::uint64_t schema_hash;
