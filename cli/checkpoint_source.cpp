@@ -11,6 +11,8 @@
 #include <cstring>
 
 #include "file_io.hpp"
+#include "header_fields.hpp"
+#include "schema_file.hpp"
 #include "values.hpp"
 
 namespace symcr::cli {
@@ -66,7 +68,8 @@ Status detect_file_kind(const std::string& path, FileKind& out) {
                 path.c_str());
 }
 
-Status load_record_file(const std::string& path, LoadedCheckpoint& out) {
+Status load_record_file(const std::string& path, LoadedCheckpoint& out,
+                        const std::string& writer_schema) {
   out.path = path;
   out.from_store = false;
   Status status =
@@ -78,22 +81,36 @@ Status load_record_file(const std::string& path, LoadedCheckpoint& out) {
     return Status(Error::Corrupt, "%s: %zu unexpected bytes after the %zu-byte record",
                   path.c_str(), out.bytes.size() - out.record.record_size, out.record.record_size);
   }
-  if (out.record.schema == nullptr) {
+  if (out.record.schema == nullptr && writer_schema.empty()) {
     return Status(Error::SchemaUnknown,
-                  "%s: the record references schema %016llx by hash (a store slot's record) "
-                  "and carries no schema of its own",
+                  "%s: the record references schema %016llx by hash (a store slot's or a "
+                  "device's record) and carries no schema of its own: give the schema file of "
+                  "the build that wrote it (--writer-schema)",
                   path.c_str(), static_cast<unsigned long long>(out.record.header.schema_hash));
   }
-  status =
-      detail::parse_schema(out.record.schema, out.record.header.schema_size, out.inline_schema);
-  if (!status.ok()) return with_path(path, status);
+  if (out.record.schema == nullptr) {
+    status = detail::read_schema_file(resolve_links(writer_schema).c_str(), out.inline_schema);
+    if (!status.ok()) return status;
+    if (out.inline_schema.hash() != out.record.header.schema_hash) {
+      return Status(Error::SchemaUnknown,
+                    "%s names schema %016llx, but %s is schema %016llx: not the build that "
+                    "wrote it",
+                    path.c_str(), static_cast<unsigned long long>(out.record.header.schema_hash),
+                    writer_schema.c_str(),
+                    static_cast<unsigned long long>(out.inline_schema.hash()));
+    }
+  } else {
+    status =
+        detail::parse_schema(out.record.schema, out.record.header.schema_size, out.inline_schema);
+    if (!status.ok()) return with_path(path, status);
+  }
   out.writer = &out.inline_schema.schema();
   out.writer_hash = out.record.header.schema_hash;
   return Status();
 }
 
 Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slot,
-                       LoadedCheckpoint& out) {
+                       LoadedCheckpoint& out, const std::string& writer_schema) {
   FileKind kind;
   Status status = detect_file_kind(path, kind);
   if (!status.ok()) return status;
@@ -101,7 +118,7 @@ Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slo
     if (slot) {
       return Status(Error::Io, "%s is a single-file checkpoint, which has no slots", path.c_str());
     }
-    status = load_record_file(path, out);
+    status = load_record_file(path, out, writer_schema);
     if (!status.ok()) return status;
     if (out.record.payload_size == 0) {
       return Status(Error::Corrupt, "%s is a schema file, which holds no values", path.c_str());
@@ -141,6 +158,14 @@ Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slo
   }
   out.writer = nullptr;
   return last_failure;
+}
+
+std::string describe_checkpoint(const LoadedCheckpoint& c) {
+  std::string text = c.path;
+  if (c.from_store) text += " slot " + std::to_string(c.slot);
+  text += " (sequence " + std::to_string(c.record.header.sequence) + ", " +
+          utc_iso8601(c.record.header.timestamp_ns) + ", schema " + hex64(c.writer_hash) + ")";
+  return text;
 }
 
 }  // namespace symcr::cli

@@ -46,13 +46,19 @@ struct LoadedCheckpoint {
 
 // A single-file checkpoint, or from a store the chosen slot or else the newest valid slot
 // whose payload decodes (as restore_latest() falls back past corrupt ones). The record, its
-// schema and (for a store slot) its payload are fully checked; a schema file is refused.
+// schema and (for a store slot) its payload are fully checked; a schema file is refused. A
+// single-file record that names its schema by hash only (a device's) is read with the schema
+// file `writer_schema`, whose hash must be the one it names.
 Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slot,
-                       LoadedCheckpoint& out);
+                       LoadedCheckpoint& out, const std::string& writer_schema = "");
+
+// "<path> [slot N] (sequence S, <time>, schema <hash>)", for a command's heading.
+std::string describe_checkpoint(const LoadedCheckpoint& checkpoint);
 
 // The parts of loading a single-file record, for verify's step-by-step account: parses and
-// validates the record (no trailing bytes, schema inline) and its schema.
-Status load_record_file(const std::string& path, LoadedCheckpoint& out);
+// validates the record (no trailing bytes; schema inline, or `writer_schema`'s) and its schema.
+Status load_record_file(const std::string& path, LoadedCheckpoint& out,
+                        const std::string& writer_schema = "");
 
 }  // namespace symcr::cli
 

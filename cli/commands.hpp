@@ -13,6 +13,7 @@ struct InspectArgs {
   std::string path;                    // a checkpoint, a store or a schema file
   std::optional<std::uint32_t> slot;   // store: this slot instead of the newest valid one
   bool json = false;
+  std::string writer_schema;           // for a record that names its schema by hash only
 };
 int run_inspect(const InspectArgs& args);
 
@@ -36,8 +37,22 @@ struct PlanArgs {
   bool strict = false;
   bool json = false;
   bool accept_other_program = false;  // plan a checkpoint of another program all the same
+  std::string writer_schema;           // for a record that names its schema by hash only
 };
 int run_plan(const PlanArgs& args);
+
+struct ConvertArgs {
+  std::string checkpoint;
+  std::optional<std::uint32_t> slot;
+  std::string schema;                  // the target build's schema file
+  std::string output;
+  std::string initial;                 // a checkpoint of the target build's initial state
+  bool strict = false;
+  bool accept_other_program = false;
+  bool inline_schema = false;          // else the record names its schema by hash only
+  std::string writer_schema;           // for a record that names its schema by hash only
+};
+int run_convert(const ConvertArgs& args);
 
 }  // namespace symcr::cli
 

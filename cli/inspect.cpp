@@ -72,7 +72,7 @@ int inspect_record(const InspectArgs& args) {
     return kExitError;
   }
   LoadedCheckpoint file;
-  Status status = load_record_file(args.path, file);
+  Status status = load_record_file(args.path, file, args.writer_schema);
   if (!status.ok()) {
     print_error(status.message());
     return kExitError;

@@ -32,6 +32,11 @@ cl::SubCommand plan_command(
     "plan", "Show the report restoring a checkpoint into a build would produce, from the "
             "build's schema file, without running it. Exit 1 if a field would be rejected "
             "(with --strict: if any decision is lossy).");
+cl::SubCommand convert_command(
+    "convert", "Restore a checkpoint into another build, known by its schema file, by the rules "
+               "of that build's own restore, and write the result as that build's checkpoint "
+               "(for a device, which restores only its own build's). Exit 1, writing nothing, "
+               "if the restore would fail.");
 
 cl::opt<std::string> inspect_path(cl::Positional, cl::Required,
                                   cl::desc("<checkpoint | store | schema file>"),
@@ -46,13 +51,36 @@ cl::opt<std::string> diff_b(cl::Positional, cl::Required, cl::desc("<checkpoint 
 cl::opt<std::string> plan_checkpoint(cl::Positional, cl::Required,
                                      cl::desc("<checkpoint | store>"), cl::sub(plan_command),
                                      cl::cat(symcr_category));
+cl::opt<std::string> convert_checkpoint(cl::Positional, cl::Required,
+                                        cl::desc("<checkpoint | store>"),
+                                        cl::sub(convert_command), cl::cat(symcr_category));
+cl::opt<std::string> convert_output("o", cl::Required, cl::desc("The converted checkpoint"),
+                                    cl::value_desc("file"), cl::sub(convert_command),
+                                    cl::cat(symcr_category));
+cl::opt<std::string> convert_initial(
+    "initial",
+    cl::desc("A checkpoint of the build's initial state (saved by the build where it would "
+             "restore): the values its restore keeps. Without it, a conversion that keeps any "
+             "of the build's own values is refused"),
+    cl::value_desc("file"), cl::sub(convert_command), cl::cat(symcr_category));
+cl::opt<std::string> writer_schema(
+    "writer-schema",
+    cl::desc("Schema file of the build that wrote the checkpoint, for a record that names its "
+             "schema by hash only (a device's)"),
+    cl::value_desc("file"), cl::sub(inspect_command), cl::sub(plan_command),
+    cl::sub(convert_command), cl::cat(symcr_category));
+cl::opt<bool> convert_inline_schema(
+    "inline-schema",
+    cl::desc("Carry the build's schema in the checkpoint (default: named by its hash, as a "
+             "device's records are)"),
+    cl::sub(convert_command), cl::cat(symcr_category));
 
 cl::opt<bool> json_output("json", cl::desc("Write JSON instead of text"),
                           cl::sub(inspect_command), cl::sub(verify_command),
                           cl::sub(diff_command), cl::sub(plan_command), cl::cat(symcr_category));
 cl::opt<unsigned> slot("slot", cl::desc("Use this slot of a store instead of the newest valid one"),
                        cl::value_desc("N"), cl::sub(inspect_command), cl::sub(plan_command),
-                       cl::cat(symcr_category));
+                       cl::sub(convert_command), cl::cat(symcr_category));
 cl::opt<unsigned> slot_a("slot-a", cl::desc("Slot of store <a> (default: newest valid)"),
                          cl::value_desc("N"), cl::sub(diff_command), cl::cat(symcr_category));
 cl::opt<unsigned> slot_b("slot-b", cl::desc("Slot of store <b> (default: newest valid)"),
@@ -60,17 +88,18 @@ cl::opt<unsigned> slot_b("slot-b", cl::desc("Slot of store <b> (default: newest 
 cl::opt<std::string> plan_schema("schema", cl::Required,
                                  cl::desc("Schema file of the build to restore into"),
                                  cl::value_desc("file"), cl::sub(plan_command),
-                                 cl::cat(symcr_category));
+                                 cl::sub(convert_command), cl::cat(symcr_category));
 cl::opt<bool> plan_strict("strict",
                           cl::desc("Refuse any lossy decision, as RestoreOptions::strict does "
                                    "(exit 1)"),
-                          cl::sub(plan_command), cl::cat(symcr_category));
+                          cl::sub(plan_command), cl::sub(convert_command),
+                          cl::cat(symcr_category));
 
 cl::opt<bool> plan_accept_other_program(
     "accept-other-program",
     cl::desc("Plan a checkpoint written by another program (another program name) instead of "
              "refusing it, as RestoreOptions::accept_other_program does"),
-    cl::sub(plan_command), cl::cat(symcr_category));
+    cl::sub(plan_command), cl::sub(convert_command), cl::cat(symcr_category));
 
 std::optional<std::uint32_t> given(const cl::opt<unsigned>& option) {
   if (option.getNumOccurrences() == 0) return std::nullopt;
@@ -81,7 +110,7 @@ void print_version(llvm::raw_ostream& out) { out << "symcr " SYMCR_VERSION "\n";
 
 int run_subcommand() {
   if (inspect_command) {
-    return symcr::cli::run_inspect({inspect_path, given(slot), json_output});
+    return symcr::cli::run_inspect({inspect_path, given(slot), json_output, writer_schema});
   }
   if (verify_command) return symcr::cli::run_verify({verify_path, json_output});
   if (diff_command) {
@@ -90,9 +119,14 @@ int run_subcommand() {
   if (plan_command) {
     return symcr::cli::run_plan(
         {plan_checkpoint, given(slot), plan_schema, plan_strict, json_output,
-         plan_accept_other_program});
+         plan_accept_other_program, writer_schema});
   }
-  llvm::errs() << "symcr: a subcommand is needed: inspect, verify, diff or plan (see "
+  if (convert_command) {
+    return symcr::cli::run_convert({convert_checkpoint, given(slot), plan_schema, convert_output,
+                                    convert_initial, plan_strict, plan_accept_other_program,
+                                    convert_inline_schema, writer_schema});
+  }
+  llvm::errs() << "symcr: a subcommand is needed: inspect, verify, diff, plan or convert (see "
                   "'symcr --help')\n";
   return symcr::cli::kExitError;
 }
@@ -102,13 +136,13 @@ int run_subcommand() {
 int main(int argc, char** argv) {
   // LLVM's own options (from the shared library) are of no use here: show only ours.
   for (cl::SubCommand* command : {&*cl::TopLevelSubCommand, &inspect_command, &verify_command,
-                                  &diff_command, &plan_command}) {
+                                  &diff_command, &plan_command, &convert_command}) {
     cl::HideUnrelatedOptions(symcr_category, *command);
   }
   cl::SetVersionPrinter(print_version);
   if (!cl::ParseCommandLineOptions(
           argc, argv,
-          "symcr: inspect, verify, diff and plan symcr checkpoints\n\n"
+          "symcr: inspect, verify, diff, plan and convert symcr checkpoints\n\n"
           "  Run 'symcr <subcommand> --help' for a subcommand's options.\n"
           "  Exit codes: 0 fine, 1 a finding (invalid, different, rejected), 2 usage or I/O "
           "error.\n",

@@ -12,37 +12,16 @@
 #include "header_fields.hpp"
 #include "json_writer.hpp"
 #include "record.hpp"
+#include "report_table.hpp"
 #include "schema_file.hpp"
 #include "terminal.hpp"
 #include "report_access.hpp"
 
 namespace symcr::cli {
-namespace {
-
-Colour decision_colour(Decision decision) {
-  switch (decision) {
-    case Decision::Restored: return Colour::None;
-    case Decision::Kept: return Colour::Cyan;
-    case Decision::Dropped: return Colour::Yellow;
-    case Decision::Converted: return Colour::Yellow;
-    case Decision::Rejected: return Colour::Red;
-  }
-  return Colour::None;
-}
-
-std::string describe_checkpoint(const LoadedCheckpoint& c) {
-  std::string text = c.path;
-  if (c.from_store) text += " slot " + std::to_string(c.slot);
-  text += " (sequence " + std::to_string(c.record.header.sequence) + ", " +
-          utc_iso8601(c.record.header.timestamp_ns) + ", schema " + hex64(c.writer_hash) + ")";
-  return text;
-}
-
-}  // namespace
 
 int run_plan(const PlanArgs& args) {
   LoadedCheckpoint checkpoint;
-  Status status = load_checkpoint(args.checkpoint, args.slot, checkpoint);
+  Status status = load_checkpoint(args.checkpoint, args.slot, checkpoint, args.writer_schema);
   if (!status.ok()) {
     print_error(status.message());
     return kExitError;
@@ -65,8 +44,7 @@ int run_plan(const PlanArgs& args) {
     symcr::detail::ReportAccess::set_sequence(report, checkpoint.record.header.sequence);
   }
   const std::size_t rejected = report.count(Decision::Rejected);
-  std::size_t lossy = 0;
-  for (const ReportEntry& entry : report.entries()) lossy += entry.lossy;
+  const std::size_t lossy = lossy_count(report);
   const bool would_restore = report.ok();
   const int exit_code = would_restore && rejected == 0 ? kExitOk : kExitFinding;
 
@@ -113,24 +91,7 @@ int run_plan(const PlanArgs& args) {
   const Terminal terminal = Terminal::for_stdout();
   print("checkpoint  " + describe_checkpoint(checkpoint) + "\nbuild       " + build_text +
         "\nmode        " + (args.strict ? "strict" : "default") + "\n\n");
-  Table table;
-  table.cap_column(0, 60);
-  table.add({{"path", Colour::Bold}, {"decision", Colour::Bold}, {"", Colour::None},
-             {"detail", Colour::Bold}});
-  for (const ReportEntry& entry : report.entries()) {
-    table.add({{entry.path},
-               {decision_name(entry.decision), decision_colour(entry.decision)},
-               {entry.lossy ? "*" : ""},
-               {entry.detail}});
-  }
-  print(table.render(terminal));
-  std::string summary;
-  for (const Decision decision : {Decision::Restored, Decision::Converted, Decision::Kept,
-                                  Decision::Dropped, Decision::Rejected}) {
-    if (!summary.empty()) summary += ", ";
-    summary += std::to_string(report.count(decision)) + " " + decision_name(decision);
-  }
-  print("\n" + summary + "; " + std::to_string(lossy) + " lossy (*)\n");
+  print_report_table(report);
   if (would_restore) {
     print(terminal.paint(rejected ? Colour::Yellow : Colour::Green,
                          rejected ? "restore would proceed with " + std::to_string(rejected) +

@@ -55,7 +55,11 @@ bool is_blob(const SchemaBlob* blob, const std::uint8_t* bytes, std::size_t size
 
 Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t sequence,
                      std::vector<std::uint8_t>& out) {
-  const SchemaBlob& blob = schema_blob(schema);
+  return encode_record_as(schema, schema_blob(schema), inline_schema, sequence, out);
+}
+
+Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inline_schema,
+                        std::uint64_t sequence, std::vector<std::uint8_t>& out) {
   out.clear();
   out.resize(kRecordHeaderSize);
   std::size_t schema_size = 0;

@@ -45,17 +45,24 @@ struct RecordView {
   std::size_t record_size = 0;  // header_size + schema_size + payload_size
 };
 
+struct SchemaBlob;
+
 // Replaces `out` with a complete record of every root of `schema`: header, the serialised
 // schema when `inline_schema`, the payload, and the checksum. Reuses `out`'s capacity.
 Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t sequence,
                      std::vector<std::uint8_t>& out);
+// The same record of `schema`'s roots under another schema's identity: the header's hash and
+// program, and the inline bytes, are `identity`'s. For `symcr convert`, whose roots are another
+// build's, laid out for this machine's memory (the payload never depends on the layout).
+Status encode_record_as(const Schema& schema, const SchemaBlob& identity,
+                        bool inline_schema, std::uint64_t sequence,
+                        std::vector<std::uint8_t>& out);
 
 // Checks magic, version, header size, flags, sizes against `size` and the checksum, and for an
 // inline schema that its bytes hash to `schema_hash`. Bytes after the record are not looked at
 // (a store slot has room to spare). Does not parse the schema. When the inline schema is byte
 // for byte `known` (a blob whose hash is already computed, e.g. the reader's own schema), its
 // hash is taken from `known` instead of rehashing: the common case costs a memcmp.
-struct SchemaBlob;
 Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
                     const SchemaBlob* known = nullptr);
 

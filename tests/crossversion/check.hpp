@@ -4,8 +4,11 @@
 #define SYMCR_TESTS_CROSSVERSION_CHECK_HPP
 
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <vector>
 
+#include <symcr/device.hpp>
 #include <symcr/symcr.hpp>
 
 namespace xv {
@@ -38,11 +41,51 @@ inline int save(int argc, char** argv) {
   return 0;
 }
 
+// For the convert tests (convert_pair.cmake), three environment variables: XV_INITIAL=<file>
+// saves the state v1 restores into, before restoring; XV_RESAVE=<file> saves the restored
+// state; XV_DEVICE=1 restores <checkpoint> through the device profile instead (a checkpoint
+// `symcr convert` wrote), saves it (XV_RESAVE) and exits: the report's checks are the host
+// restore's.
+inline void save_if_asked(const char* variable) {
+  const char* path = std::getenv(variable);
+  if (path == nullptr) return;
+  const symcr::Status status = symcr::checkpoint(path);
+  if (!status.ok()) {
+    std::fprintf(stderr, "%s: checkpoint failed: %s\n", variable, status.message());
+    std::exit(1);
+  }
+}
+
+inline void restore_through_device_and_exit(const char* path) {
+  std::vector<std::uint8_t> record;
+  if (std::FILE* file = std::fopen(path, "rb")) {
+    std::uint8_t buffer[4096];
+    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, file)) != 0;)
+      record.insert(record.end(), buffer, buffer + n);
+    std::fclose(file);
+  }
+  const symcr::device::Build build = symcr::device::program_build();
+  std::vector<std::uint8_t> scratch(build.schema ? symcr::device::scratch_size(*build.schema) : 0);
+  const symcr::device::Result result = symcr::device::restore(
+      build, record.data(), record.size(), scratch.data(), scratch.size());
+  if (result != symcr::device::Result::Ok) {
+    std::fprintf(stderr, "device restore of %s: %s\n", path, symcr::device::result_text(result));
+    std::exit(1);
+  }
+  save_if_asked("XV_RESAVE");
+  std::exit(0);
+}
+
 inline symcr::Report restore(int argc, char** argv, bool strict = false) {
   if (argc < 2) {
     std::fprintf(stderr, "usage: %s <checkpoint>\n", argv[0]);
     return symcr::restore("", symcr::RestoreOptions());  // fails: no such file
   }
+  if (std::getenv("XV_DEVICE") != nullptr) restore_through_device_and_exit(argv[1]);
+  save_if_asked("XV_INITIAL");
+  struct Resave {
+    ~Resave() { save_if_asked("XV_RESAVE"); }
+  } resave;
   symcr::RestoreOptions options;
   options.strict = strict;
   symcr::Report report = symcr::restore(argv[1], options);

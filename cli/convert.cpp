@@ -1,0 +1,143 @@
+// `symcr convert`: restores a checkpoint into another build, known by its schema file, by the
+// same rules, report and strict mode as that build's own restore, and writes the result as a
+// checkpoint of that build. For a device, which restores only its own build's checkpoints: the
+// host converts across a firmware update, the device restores the result on its same-build
+// path. Nothing is written unless the whole conversion succeeds.
+#include <string>
+#include <vector>
+
+#include "checkpoint_source.hpp"
+#include "commands.hpp"
+#include "engine.hpp"
+#include "exit_codes.hpp"
+#include "file_io.hpp"
+#include "header_fields.hpp"
+#include "host_layout.hpp"
+#include "record.hpp"
+#include "report_access.hpp"
+#include "report_table.hpp"
+#include "schema_file.hpp"
+#include "terminal.hpp"
+
+namespace symcr::cli {
+namespace {
+
+// The build's own values, into which the checkpoint is restored: what its restore keeps.
+Status restore_initial_state(const std::string& path, const std::string& build_schema_file,
+                             const detail::ParsedSchema& build, const HostLayout& layout) {
+  LoadedCheckpoint initial;
+  // A device's record names its schema by hash: it is the build's own.
+  Status status = load_checkpoint(path, std::nullopt, initial, build_schema_file);
+  if (!status.ok()) return status;
+  if (initial.writer_hash != build.hash()) {
+    return Status(Error::Incompatible,
+                  "%s was written by schema %s, not by the build of the schema file (%s): the "
+                  "initial state must be that build's",
+                  path.c_str(), hex64(initial.writer_hash).c_str(), hex64(build.hash()).c_str());
+  }
+  const Report restored =
+      detail::restore_payload(*initial.writer, initial.writer_hash, initial.record.payload,
+                              initial.record.payload_size, layout.schema(), RestoreOptions());
+  return restored.status();
+}
+
+// A build's symcr_migrate hooks are code: a conversion without them would not be its restore.
+Status refuse_migrations(const Schema& build) {
+  for (std::uint32_t t = 0; t < build.type_count; ++t) {
+    if (build.types[t].flags & kTypeMigrated) {
+      return Status(Error::Unsupported,
+                    "the build migrates '%s' with symcr_migrate, code a conversion cannot run: "
+                    "restore the checkpoint in a host build of the new source instead",
+                    build.types[t].name);
+    }
+  }
+  return Status();
+}
+
+}  // namespace
+
+int run_convert(const ConvertArgs& args) {
+  LoadedCheckpoint checkpoint;
+  Status status = load_checkpoint(args.checkpoint, args.slot, checkpoint, args.writer_schema);
+  detail::ParsedSchema build;
+  std::uint32_t build_program_id = 0;
+  if (status.ok()) {
+    status = detail::read_schema_file(resolve_links(args.schema).c_str(), build, &build_program_id);
+  }
+  HostLayout layout;
+  if (status.ok()) status = refuse_migrations(build.schema());
+  if (status.ok()) status = layout.lay_out(build.schema());
+  if (status.ok() && !args.initial.empty()) {
+    status = restore_initial_state(args.initial, args.schema, build, layout);
+  }
+  if (!status.ok()) {
+    print_error(status.message());
+    return kExitError;
+  }
+  const Status program =
+      detail::check_program(checkpoint.record.header.program_id, build_program_id,
+                            "the build of the schema file", args.accept_other_program);
+  if (!program.ok()) {
+    print_error(program.message());
+    return kExitFinding;
+  }
+
+  RestoreOptions options;
+  options.strict = args.strict;
+  options.accept_other_program = args.accept_other_program;
+  Report report =
+      detail::restore_payload(*checkpoint.writer, checkpoint.writer_hash, checkpoint.record.payload,
+                              checkpoint.record.payload_size, layout.schema(), options);
+  detail::ReportAccess::set_sequence(report, checkpoint.record.header.sequence);
+  print("checkpoint  " + describe_checkpoint(checkpoint) + "\nbuild       " + args.schema +
+        " (schema " + hex64(build.hash()) + ")\nmode        " +
+        (args.strict ? "strict" : "default") + "\n\n");
+  print_report_table(report);
+  const Terminal terminal = Terminal::for_stdout();
+  if (!report.ok()) {
+    print(terminal.paint(Colour::Red, std::string("conversion failed, nothing written: ") +
+                                          error_name(report.status().error()) + ": " +
+                                          report.status().message()) +
+          "\n");
+    return kExitFinding;
+  }
+  // A value the restore keeps is the build's own, which only --initial supplies.
+  if (args.initial.empty()) {
+    std::string kept;
+    for (const ReportEntry& entry : report.entries()) {
+      if (entry.decision == Decision::Kept || entry.decision == Decision::Rejected) {
+        kept += (kept.empty() ? "" : ", ") + entry.path;
+      }
+    }
+    if (!kept.empty()) {
+      print_error("the build keeps its own value for " + kept +
+                  ", which only the build knows: give --initial <a checkpoint of the build's "
+                  "initial state>; nothing written");
+      return kExitFinding;
+    }
+  }
+
+  detail::SchemaBlob identity;
+  identity.data = build.bytes().data();
+  identity.size = build.bytes().size();
+  identity.hash = build.hash();
+  identity.program_id = build_program_id;
+  std::vector<std::uint8_t> record;
+  status = detail::encode_record_as(layout.schema(), identity, args.inline_schema,
+                                    checkpoint.record.header.sequence, record);
+  if (status.ok()) {
+    status = detail::write_file_atomically(args.output.c_str(), record.data(), record.size(),
+                                           Durability::Fdatasync);
+  }
+  if (!status.ok()) {
+    print_error(status.message());
+    return kExitError;
+  }
+  print(terminal.paint(Colour::Green, "converted: " + args.output + " (" +
+                                          std::to_string(record.size()) + " bytes, schema " +
+                                          hex64(build.hash()) + ")") +
+        "\n");
+  return kExitOk;
+}
+
+}  // namespace symcr::cli

@@ -1,0 +1,126 @@
+#include "host_layout.hpp"
+
+#include <cstddef>
+
+namespace symcr::cli {
+namespace {
+
+constexpr int kMaxNesting = 64;  // as deep as a source nests types by value
+
+std::uint32_t align_up(std::uint32_t value, std::uint32_t align) {
+  return (value + align - 1) / align * align;
+}
+
+}  // namespace
+
+Status HostLayout::extent_of(std::uint32_t t, int depth) {
+  if (t >= build_->type_count || depth > kMaxNesting) {
+    return Status(Error::Corrupt, "type index %u out of range or nested too deep", t);
+  }
+  Extent& extent = extents_[t];
+  if (extent.done) return Status();
+  const TypeInfo& type = build_->types[t];
+  TypeInfo& ours = types_[t];
+  std::uint32_t size = type.size, align = 1;
+  switch (type.kind) {
+    case Kind::Bool:
+      size = 1;
+      break;
+    case Kind::Int:
+    case Kind::UInt:
+    case Kind::Enum:
+    case Kind::Float:
+      if (type.size == 0 || type.size > 16) {
+        return Status(Error::Unsupported, "type '%s' has a size of %u bytes", type.name, type.size);
+      }
+      align = type.size > alignof(std::max_align_t) ? alignof(std::max_align_t) : type.size;
+      break;
+    case Kind::Union:  // raw bytes
+      align = type.align == 0 || type.align > alignof(std::max_align_t) ? alignof(std::max_align_t)
+                                                                        : type.align;
+      break;
+    case Kind::Pointer:
+      size = sizeof(void*);
+      align = alignof(void*);
+      break;
+    case Kind::Array: {
+      const Status element = extent_of(type.element, depth + 1);
+      if (!element.ok()) return element;
+      const Extent& e = extents_[type.element];
+      if (type.count > (UINT32_MAX / (e.size == 0 ? 1 : e.size))) {
+        return Status(Error::TooLarge, "array '%s' is too large to lay out", type.name);
+      }
+      size = e.size * static_cast<std::uint32_t>(type.count);
+      align = e.align;
+      break;
+    }
+    case Kind::Struct: {
+      // Members in order, each at its alignment; bit-fields that shared a storage unit in the
+      // build (the same offset) share one here.
+      std::vector<FieldInfo>& fields = fields_[t];
+      fields.assign(type.fields, type.fields + type.field_count);
+      std::uint32_t cursor = 0, unit = 0;
+      for (std::uint32_t f = 0; f < type.field_count; ++f) {
+        const Status member = extent_of(type.fields[f].type, depth + 1);
+        if (!member.ok()) return member;
+        const Extent& m = extents_[type.fields[f].type];
+        const bool shares_unit = f > 0 && type.fields[f].bit_width != 0 &&
+                                 type.fields[f - 1].bit_width != 0 &&
+                                 type.fields[f].offset == type.fields[f - 1].offset;
+        if (!shares_unit) unit = align_up(cursor, m.align);
+        fields[f].offset = unit;
+        if (unit + m.size > cursor) cursor = unit + m.size;
+        if (m.align > align) align = m.align;
+      }
+      size = align_up(cursor == 0 ? 1 : cursor, align);
+      ours.fields = fields.empty() ? nullptr : fields.data();
+      break;
+    }
+    default:
+      return Status(Error::Unsupported,
+                    "type '%s' needs the build's own code (a string, container, optional, "
+                    "variant or smart pointer): only the device profile's kinds are converted",
+                    type.name);
+  }
+  ours.size = size;
+  ours.align = align;
+  ours.ops = nullptr;
+  ours.lifecycle = nullptr;
+  ours.validate = nullptr;  // the build's code: its device runs it when it restores
+  ours.migrate = nullptr;
+  extent = Extent{size, align, true};
+  return Status();
+}
+
+Status HostLayout::lay_out(const Schema& build) {
+  build_ = &build;
+  types_.assign(build.types, build.types + build.type_count);
+  fields_.assign(build.type_count, {});
+  extents_.assign(build.type_count, Extent{});
+  roots_.assign(build.roots, build.roots + build.root_count);
+  memory_.clear();
+  for (RootInfo& root : roots_) {
+    const Status laid = extent_of(root.type, 0);
+    if (!laid.ok()) return laid;
+  }
+  // Types reached only through pointers: laid out where they can be (a pointer's target is
+  // found by its type); the others keep the build's numbers and no code, as in a schema file.
+  for (std::uint32_t t = 0; t < build.type_count; ++t) {
+    if (!extent_of(t, 0).ok()) {
+      types_[t].ops = nullptr;
+      types_[t].lifecycle = nullptr;
+      types_[t].validate = nullptr;
+      types_[t].migrate = nullptr;
+    }
+  }
+  for (RootInfo& root : roots_) {
+    const std::size_t size = extents_[root.type].size;
+    const std::size_t cells = (size + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t);
+    memory_.emplace_back(new std::max_align_t[cells == 0 ? 1 : cells]());
+    root.address = memory_.back().get();
+  }
+  schema_ = Schema{types_.data(), build.type_count, roots_.data(), build.root_count, build.program};
+  return Status();
+}
+
+}  // namespace symcr::cli

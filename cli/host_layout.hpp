@@ -1,0 +1,46 @@
+// Another build's schema laid out in this machine's memory, with its roots allocated: what
+// `symcr convert` restores a checkpoint into and saves the result from. A payload depends on
+// kinds, member order, scalar sizes and bit-field widths, never on offsets, so a layout of our
+// own (pointers this machine's size, everything else as the build had it) writes exactly the
+// payload the build itself would. Only the kinds that need no code of the build's are laid out:
+// the device profile's (bool, integers, floating point, enums, structs, unions, fixed arrays,
+// raw pointers).
+#ifndef SYMCR_CLI_HOST_LAYOUT_HPP
+#define SYMCR_CLI_HOST_LAYOUT_HPP
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "symcr/generated.hpp"
+#include "symcr/symcr.hpp"
+
+namespace symcr::cli {
+
+class HostLayout {
+ public:
+  // Lays `build` out and allocates its roots, zero-filled. `build` must outlive this object (its
+  // names, enumerators and ranges are shared). Unsupported names the first kind that needs the
+  // build's code.
+  Status lay_out(const Schema& build);
+  const Schema& schema() const { return schema_; }
+
+ private:
+  struct Extent {
+    std::uint32_t size = 0, align = 0;
+    bool done = false;
+  };
+  Status extent_of(std::uint32_t type, int depth);
+
+  const Schema* build_ = nullptr;
+  std::vector<TypeInfo> types_;
+  std::vector<std::vector<FieldInfo>> fields_;
+  std::vector<Extent> extents_;
+  std::vector<RootInfo> roots_;
+  std::vector<std::unique_ptr<std::max_align_t[]>> memory_;
+  Schema schema_{};
+};
+
+}  // namespace symcr::cli
+
+#endif  // SYMCR_CLI_HOST_LAYOUT_HPP
