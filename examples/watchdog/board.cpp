@@ -119,7 +119,7 @@ int run(int argc, char** argv) {
   if (restored == Result::Ok) {
     std::printf("%s: boot: restored checkpoint #%llu\n", kVersion,
                 static_cast<unsigned long long>(sequence));
-  } else if (restore_from == nullptr && ring.last_sequence() == 0) {
+  } else if (restored == Result::Empty) {
     std::printf("%s: boot: no checkpoint yet: initial state\n", kVersion);
   } else {
     std::printf("%s: boot: nothing restored (%s): initial state\n", kVersion,

@@ -39,6 +39,11 @@ run(0 "v2: boot: nothing restored \\(record of another build's schema\\)"
 # and hands the result to v2's first boot.
 run(0 "saved old.ckpt" COMMAND "${V1}" --backup "${ram}" --export old.ckpt)
 run(0 "saved v2-initial.ckpt" COMMAND "${V2}" --save-initial v2-initial.ckpt)
+# A device's record names its schema by hash: the host tools need the writer's schema file.
+run(2 "give the schema file of the build that wrote it \\(--writer-schema\\)"
+    COMMAND "${CLI}" inspect old.ckpt)
+run(0 "vehicle.loops += 100" "vehicle.waypoint += 2"
+    COMMAND "${CLI}" inspect old.ckpt --writer-schema "${SCHEMA1}")
 run(2 "old.ckpt names schema [0-9a-f]+, but .* is schema [0-9a-f]+: not the build that wrote it"
     COMMAND "${CLI}" convert old.ckpt --schema "${SCHEMA2}" --writer-schema "${SCHEMA2}"
             --initial v2-initial.ckpt -o new.ckpt)

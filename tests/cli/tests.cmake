@@ -6,10 +6,13 @@ symcr_cli_test(no_subcommand EXIT 2 ARGS EXPECT "a subcommand is needed")
 symcr_cli_test(unknown_option EXIT 2 ARGS inspect --bogus ${files}/v0.ckpt
                EXPECT "Unknown command line argument '--bogus'")
 symcr_cli_test(missing_argument EXIT 2 ARGS inspect EXPECT "Not enough positional")
-symcr_cli_test(help EXIT 0 ARGS --help EXPECT "inspect" "verify" "diff" "plan" "Exit codes")
+symcr_cli_test(help EXIT 0 ARGS --help EXPECT "inspect" "verify" "diff" "plan" "convert"
+               "Exit codes")
 symcr_cli_test(inspect_help EXIT 0 ARGS inspect --help EXPECT "--json" "--slot"
                REJECT "--schema" "--strict")
 symcr_cli_test(plan_help EXIT 0 ARGS plan --help EXPECT "--schema" "--strict" "--json")
+symcr_cli_test(convert_help EXIT 0 ARGS convert --help
+               EXPECT "--schema" "--initial" "--writer-schema" "--inline-schema" "--strict")
 
 # ---- inspect --------------------------------------------------------------------------------
 symcr_cli_test(inspect_checkpoint EXIT 0 ARGS inspect ${files}/v0.ckpt
@@ -145,6 +148,19 @@ symcr_cli_test(diff_corrupt EXIT 2 ARGS diff ${files}/v0.ckpt ${files}/corrupt.c
   EXPECT "corrupt.ckpt: checksum mismatch")
 symcr_cli_test(diff_truncated EXIT 2 ARGS diff ${files}/truncated.ckpt ${files}/v0.ckpt
   EXPECT "truncated")
+
+# ---- convert (its conversions: tests/crossversion CONVERT pairs, examples/watchdog) -------------
+# The fixtures hold a std::string: only the device profile's kinds convert, nothing is written.
+symcr_cli_test(convert_refuses_host_kinds EXIT 2
+               ARGS convert ${files}/v0.ckpt --schema ${files}/v1.schema --initial ${files}/v1.ckpt
+                    -o ${files}/converted.ckpt
+               EXPECT "type 'std::string' needs the build's own code")
+symcr_cli_test(convert_corrupt EXIT 2
+               ARGS convert ${files}/corrupt.ckpt --schema ${files}/v1.schema
+                    -o ${files}/converted.ckpt
+               EXPECT "checksum")
+symcr_cli_test(convert_needs_output EXIT 2 ARGS convert ${files}/v0.ckpt --schema ${files}/v1.schema
+               EXPECT "-o")
 
 # ---- plan -----------------------------------------------------------------------------------
 symcr_cli_test(plan_same_build EXIT 0 ARGS plan ${files}/v0.ckpt --schema ${files}/v0.schema

@@ -368,7 +368,7 @@ TEST(DeviceRing, AnEmptyRingRestoresNothingAndChangesNothing) {
   ASSERT_EQ(ring.open(symcr::device::memory_storage(sram.data(), sram.size()), 1024), Result::Ok);
   fill(5);
   const std::vector<std::uint8_t> before = snapshot();
-  EXPECT_EQ(ring_restore(ring, b, nullptr, nullptr), Result::Truncated);
+  EXPECT_EQ(ring_restore(ring, b, nullptr, nullptr), Result::Empty);
   EXPECT_EQ(snapshot(), before);
 }
 

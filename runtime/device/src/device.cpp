@@ -26,6 +26,8 @@ const char* result_text(Result result) {
       return "a value refused by its range or validator";
     case Result::TooManyPointers:
       return "more pointer targets than kMaxReferences";
+    case Result::Empty:
+      return "no checkpoint saved yet";
   }
   return "?";
 }

@@ -99,7 +99,7 @@ Result Ring::restore_latest(const Build& build, std::uint8_t* buffer, std::size_
   std::uint64_t sequences[kMaxSlots];
   std::size_t order[kMaxSlots];
   const std::size_t used = scan(sequences, order);
-  Result newest = Result::Truncated;  // an empty ring: nothing was ever saved
+  Result newest = Result::Empty;  // no slot holds a record: nothing was ever saved
   for (std::size_t k = 0; k < used; ++k) {
     const std::size_t i = order[k];
     Result result =

@@ -35,6 +35,7 @@ enum class Result : std::uint8_t {
   OtherProgram,     // written by another program
   Rejected,         // a value outside its SYMCR_RANGE, or refused by its symcr_validate
   TooManyPointers,  // more distinct pointer targets than kMaxReferences
+  Empty,            // Ring::restore_latest: no slot was ever written
 };
 
 // A short English description of `result`, for logs.
@@ -108,7 +109,8 @@ class Ring {
 
   // Restores the newest slot that restores; `buffer` receives each slot as it is read (a slot's
   // size at least). `*slot` and `*sequence`, if given, say what was restored; `*skipped`, how
-  // many newer slots were passed over. The result is the newest slot's when none restores.
+  // many newer slots were passed over. The result is the newest slot's when none restores, and
+  // Empty when nothing was ever saved.
   Result restore_latest(const Build& build, std::uint8_t* buffer, std::size_t capacity,
                         std::uint8_t* scratch, std::size_t scratch_capacity,
                         std::uint64_t* sequence = nullptr, std::size_t* slot = nullptr,
