@@ -350,7 +350,7 @@ void Planner::fill_struct(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
     field.reader_offset = reader.offset;
     field.bit_offset = reader.bit_offset;
     field.bit_width = reader.bit_width;
-    field.has_range = (reader.flags & kFieldHasRange) != 0;
+    field.has_range = (reader.flags & kFieldHasRange) != 0 && reader.range != nullptr;
     if (field.has_range) {
       field.range_min = reader.range->min;
       field.range_max = reader.range->max;

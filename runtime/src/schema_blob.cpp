@@ -58,9 +58,12 @@ void serialise_schema(const Schema& schema, std::vector<std::uint8_t>& out) {
           put_u32(out, field.offset);
           put_u16(out, field.bit_offset);
           put_u16(out, field.bit_width);
-          put_u32(out, field.flags);
+          // A range flag without bounds (a hand-written table's slip) is no range.
+          const std::uint32_t flags =
+              field.range != nullptr ? field.flags : field.flags & ~std::uint32_t{kFieldHasRange};
+          put_u32(out, flags);
           put_aliases(out, field.renamed_from);
-          if (field.flags & kFieldHasRange) {
+          if (flags & kFieldHasRange) {
             put_f64(out, field.range->min);
             put_f64(out, field.range->max);
           }

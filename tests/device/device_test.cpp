@@ -242,6 +242,38 @@ TEST(DeviceProfile, AContainerIsNotHeld) {
             Result::Unsupported);
 }
 
+// A hand-written table may set kFieldHasRange and give no bounds: both runtimes read that as no
+// range (the host's serialised schema drops the flag) instead of following a null pointer.
+TEST(DeviceProfile, ARangeFlagWithoutBoundsIsNoRange) {
+  struct Gauge {
+    std::int32_t level;
+  };
+  static Gauge gauge;
+  static const symcr::FieldInfo fields[] = {
+      {"level", 0, 0, 0, 0, symcr::kFieldHasRange, nullptr, nullptr}};
+  static const symcr::TypeInfo types[] = {
+      scalar("int32", Kind::Int, 4), record("Gauge", sizeof(Gauge), alignof(Gauge), fields, 1)};
+  static const symcr::RootInfo roots[] = {{"gauge", 1, &gauge, 0, nullptr}};
+  static const symcr::Schema schema{types, 2, roots, 1, nullptr};
+  const symcr::device::Build build{&schema, 0x5EED0002DEC0DE02ull};
+
+  gauge.level = 1000000;
+  std::uint8_t record_bytes[256];
+  std::size_t size = 0;
+  ASSERT_EQ(symcr::device::save(build, 1, record_bytes, sizeof record_bytes, &size), Result::Ok);
+  gauge.level = 0;
+  std::uint8_t scratch[64];
+  ASSERT_EQ(symcr::device::restore(build, record_bytes, size, scratch, sizeof scratch), Result::Ok);
+  EXPECT_EQ(gauge.level, 1000000);
+
+  symcr::detail::SchemaBlob blob;
+  symcr::detail::serialise_blob(schema, blob);
+  symcr::detail::ParsedSchema parsed;
+  ASSERT_TRUE(symcr::detail::parse_schema(blob.data, blob.size, parsed).ok());
+  EXPECT_EQ(parsed.schema().types[1].fields[0].flags & symcr::kFieldHasRange, 0u);
+  EXPECT_EQ(parsed.schema().types[1].fields[0].range, nullptr);
+}
+
 // ---- the ring -------------------------------------------------------------------------------
 
 // Flash as a block device: erased bytes are 0xFF, a write may only clear bits of erased ones.
@@ -384,6 +416,7 @@ TEST(DeviceRing, BadGeometriesAreRefused) {
 TEST(DeviceProfile, ResultsHaveTexts) {
   EXPECT_STREQ(symcr::device::result_text(Result::Ok), "ok");
   EXPECT_STREQ(symcr::device::result_text(Result::OtherSchema), "record of another build's schema");
+  EXPECT_STREQ(symcr::device::result_text(Result::Empty), "no checkpoint saved yet");
 }
 
 }  // namespace

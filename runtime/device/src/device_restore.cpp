@@ -123,7 +123,7 @@ class Restorer {
                                     ? bit_field(field, stage + field.offset)
                                     : value(field.type, stage + field.offset, live + field.offset);
           if (result != Result::Ok) return result;
-          if ((field.flags & kFieldHasRange) && !in_range(field, wire)) {
+          if ((field.flags & kFieldHasRange) && field.range != nullptr && !in_range(field, wire)) {
             return Result::Rejected;
           }
         }
