@@ -1,5 +1,5 @@
 # symcr_add_checkpointing(<target> [ANNOTATIONS <file>...] [PROGRAM <name>]
-#                         [PROFILE host|device])
+#                         [PROFILE host|device] [PREVIOUS_SCHEMA <schema file>...])
 #
 # Runs symcr-gen over <target>'s C and C++ sources as a build step and links the runtime.
 # Every source is compiled through a generated wrapper that #includes it and appends what
@@ -47,12 +47,19 @@
 # compiler (arm-none-eabi-g++), symcr-gen parses for that compiler's target and headers, so the
 # schema records the microcontroller's layouts.
 #
+# PREVIOUS_SCHEMA names the schema files of earlier builds whose checkpoints this build restores
+# (the release in the field, kept with the sources; or another target's SYMCR_SCHEMA_FILE in the
+# same directory). Each is resolved against this build's schema by symcr-gen, with the runtime's
+# own planner, and the plan is embedded: the first restore of such a checkpoint in a freshly
+# started process reads it instead of planning. Other checkpoints are planned when restored, as
+# without the option. Editing a listed file regenerates.
+#
 # `#pragma symcr` lines are unknown to g++, which warns under -Wall (-Wunknown-pragmas): the
 # function adds -Wno-unknown-pragmas to the annotated target (only there).
 include_guard(GLOBAL)
 
 function(symcr_add_checkpointing target)
-  cmake_parse_arguments(PARSE_ARGV 1 arg "" "PROGRAM;PROFILE" "ANNOTATIONS")
+  cmake_parse_arguments(PARSE_ARGV 1 arg "" "PROGRAM;PROFILE" "ANNOTATIONS;PREVIOUS_SCHEMA")
   if(arg_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "symcr_add_checkpointing: unknown arguments ${arg_UNPARSED_ARGUMENTS}")
   endif()
@@ -93,6 +100,14 @@ function(symcr_add_checkpointing target)
   foreach(file IN LISTS arg_ANNOTATIONS)
     get_filename_component(file "${file}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
     list(APPEND annotations "${file}")
+  endforeach()
+
+  set(previous_schemas)
+  set(previous_args)
+  foreach(file IN LISTS arg_PREVIOUS_SCHEMA)
+    get_filename_component(file "${file}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+    list(APPEND previous_schemas "${file}")
+    list(APPEND previous_args --previous-schema "${file}")
   endforeach()
 
   set(inputs)
@@ -179,8 +194,10 @@ function(symcr_add_checkpointing target)
     COMMAND "${generator}" -p "${CMAKE_BINARY_DIR}" --out-dir "${out_dir}"
             --schema-file "${schema_file}" --program "${program}" --profile "${profile}"
             --depfile "${out_dir}/symcr-gen.d" --depfile-target "${schema}"
-            --report-file "${out_dir}/report.txt" ${annotation_args} ${library_args} ${inputs}
+            --report-file "${out_dir}/report.txt" ${annotation_args} ${previous_args}
+            ${library_args} ${inputs}
     DEPENDS ${generator_dependency} ${inputs} ${library_inputs} ${annotations}
+            ${previous_schemas}
     DEPFILE "${out_dir}/symcr-gen.d"
     COMMENT "symcr-gen: generating checkpoint code for ${target}"
     VERBATIM)

@@ -263,6 +263,14 @@ enum class RuntimeProfile {
   Device ///< runtime/device: no heap; no ops tables, lifecycles or migrations
 };
 
+/// A previous build's schema planned against this one (--previous-schema): the
+/// plan's image, which the schema source embeds for restore to decode.
+struct PreviousPlanModel {
+  std::string SchemaFile;
+  std::uint64_t WriterHash = 0;
+  std::vector<std::uint8_t> Image;
+};
+
 struct ProgramModel {
   /// The program's name (--program): its identity in checkpoint headers.
   std::string Name;
@@ -276,6 +284,7 @@ struct ProgramModel {
   std::vector<std::string> Dependencies; ///< every file read (for the depfile)
   std::vector<PointModel> Points;
   PointStoreModel PointStore;
+  std::vector<PreviousPlanModel> PreviousPlans;
 };
 
 inline bool TypeModel::hasValidate(const ProgramModel &Program) const {

@@ -54,8 +54,10 @@ public:
       RootRenamed.push_back(names("root_renamed_" + std::to_string(I),
                                   Schema.roots[I].renamed_from));
     writeSerialised();
+    writePreviousPlans();
     OS << "}  // namespace\n\n";
     writeProgramSchema(RootRenamed);
+    writePlannedSchemas();
   }
 
 private:
@@ -192,19 +194,56 @@ private:
     OS << "};\n";
   }
 
-  void writeSerialised() {
-    OS << "// The tables above, serialised (docs/format.md §2).\n"
-          "const std::uint8_t serialised_bytes[] = {";
-    for (std::uint32_t I = 0; I < Serialised.size; ++I)
-      OS << (I % 24 == 0 ? "\n    " : "") << unsigned(Serialised.bytes[I])
-         << ",";
-    OS << "\n};\nconst symcr::SerialisedSchema serialised{serialised_bytes, "
-       << Serialised.size << "u, " << hashText() << "};\n";
+  void writeBytes(const std::string &Name, const std::uint8_t *Bytes,
+                  std::size_t Size) {
+    OS << "const std::uint8_t " << Name << "[] = {";
+    for (std::size_t I = 0; I < Size; ++I)
+      OS << (I % 24 == 0 ? "\n    " : "") << unsigned(Bytes[I]) << ",";
+    OS << "\n};\n";
   }
 
-  std::string hashText() const {
+  void writeSerialised() {
+    OS << "// The tables above, serialised (docs/format.md §2).\n";
+    writeBytes("serialised_bytes", Serialised.bytes, Serialised.size);
+    OS << "const symcr::SerialisedSchema serialised{serialised_bytes, "
+       << Serialised.size << "u, " << hashText(Serialised.hash) << "};\n";
+  }
+
+  /// The plans of previous builds' schemas (--previous-schema), resolved by
+  /// symcr-gen against the tables above: restore decodes them.
+  void writePreviousPlans() {
+    for (std::size_t I = 0; I < Program.PreviousPlans.size(); ++I) {
+      const PreviousPlanModel &Plan = Program.PreviousPlans[I];
+      OS << "// Restoring checkpoints of the build whose schema file is "
+         << Plan.SchemaFile << ".\n";
+      writeBytes("plan_image_" + std::to_string(I), Plan.Image.data(),
+                 Plan.Image.size());
+    }
+    if (Program.PreviousPlans.empty())
+      return;
+    OS << "const symcr::PlannedSchema planned_schemas[] = {\n";
+    for (std::size_t I = 0; I < Program.PreviousPlans.size(); ++I)
+      OS << "    {" << hashText(Program.PreviousPlans[I].WriterHash)
+         << ", plan_image_" << I << ", " << Program.PreviousPlans[I].Image.size()
+         << "u},\n";
+    OS << "};\n";
+  }
+
+  /// Defined only when there are plans: without any, the runtime's weak
+  /// reference to it is null.
+  void writePlannedSchemas() {
+    if (Program.PreviousPlans.empty())
+      return;
+    OS << "\nextern \"C\" const symcr::PlannedSchema* "
+          "symcr_program_plans(std::uint32_t* count) {\n"
+          "  *count = "
+       << Program.PreviousPlans.size()
+       << "u;\n  return planned_schemas;\n}\n";
+  }
+
+  static std::string hashText(std::uint64_t Value) {
     char Hash[32];
-    std::snprintf(Hash, sizeof Hash, "0x%016" PRIx64 "ull", Serialised.hash);
+    std::snprintf(Hash, sizeof Hash, "0x%016" PRIx64 "ull", Value);
     return Hash;
   }
 
@@ -240,7 +279,7 @@ private:
           "symcr_program_serialised_schema(void) {\n  return &serialised;\n}\n"
        << "\nextern \"C\" std::uint64_t symcr_program_schema_hash(void) {\n"
           "  return "
-       << hashText() << ";\n}\n";
+       << hashText(Serialised.hash) << ";\n}\n";
   }
 
   const ProgramModel &Program;

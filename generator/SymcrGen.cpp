@@ -11,6 +11,7 @@
 #include "Annotations.h"
 #include "CompileCommand.h"
 #include "DeviceProfile.h"
+#include "PreviousPlans.h"
 #include "Emitter.h"
 #include "ProgramPoints.h"
 #include "SchemaBuilder.h"
@@ -73,6 +74,12 @@ static llvm::cl::opt<std::string> ProgramName(
     llvm::cl::desc("The program's name, written into its checkpoints: a restore refuses a "
                    "checkpoint of another program (default: none, accepted by any)"),
     llvm::cl::value_desc("name"), llvm::cl::cat(Category));
+static llvm::cl::list<std::string> PreviousSchemas(
+    "previous-schema",
+    llvm::cl::desc("The schema file of an earlier build whose checkpoints this "
+                   "build restores: planned now and embedded, so that restore "
+                   "does not plan (repeatable)"),
+    llvm::cl::value_desc("file"), llvm::cl::cat(Category));
 static llvm::cl::list<std::string> LibrarySources(
     "library-source",
     llvm::cl::desc("A source of a static library the program links: a root "
@@ -354,6 +361,7 @@ int main(int argc, const char **argv) {
   SchemaBuilder Builder(Program, Diags, std::move(Sidecar));
   std::set<std::string> Dependencies(AnnotationFiles.begin(),
                                      AnnotationFiles.end());
+  Dependencies.insert(PreviousSchemas.begin(), PreviousSchemas.end());
   // Parse with up to -j threads; each TU's dependencies are kept apart and
   // merged after the join.
   std::vector<std::set<std::string>> TUDependencies(Sources.size());
@@ -425,6 +433,8 @@ int main(int argc, const char **argv) {
   Points.finish(/*CheckUnmatched=*/UnparsedSources == 0);
   if (Program.Profile == RuntimeProfile::Device)
     checkDeviceProfile(Program, Diags);
+  if (!UnparsedSources && !Diags.errorCount())
+    planPreviousSchemas(Program, PreviousSchemas, Diags);
   if (UnparsedSources || Diags.errorCount()) {
     llvm::errs() << "symcr-gen: " << Diags.errorCount() + UnparsedSources
                  << " error(s)";

@@ -70,7 +70,9 @@ class ParsedSchema {
   struct Storage;
   std::unique_ptr<Storage> storage;
 };
-Status parse_schema(const std::uint8_t* data, std::size_t size, ParsedSchema& out);
+// `hash`, when given, is the bytes' FNV-1a 64 hash, which the caller already computed.
+Status parse_schema(const std::uint8_t* data, std::size_t size, ParsedSchema& out,
+                    const std::uint64_t* hash = nullptr);
 
 // Saves every root of `schema` as a payload (docs/format.md §3), replacing `out`'s contents.
 // Reuses the capacity of `out` and of internal per-thread scratch: a steady state allocates

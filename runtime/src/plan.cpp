@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "plan_image.hpp"
 #include "planner.hpp"
 #include "schema_facts.hpp"
 #include "unicode.hpp"
@@ -152,6 +153,23 @@ std::deque<CachedPlan>& plan_cache() {
   return *cache;
 }
 
+// The image symcr-gen embedded for restoring checkpoints of the build whose schema hashes to
+// `writer_hash` into the program's schema `reader` (PREVIOUS_SCHEMA), decoded into `plan`.
+bool decode_embedded_plan(std::uint64_t writer_hash, const Schema& reader, Plan& plan) {
+  if (!symcr_program_plans || !symcr_program_schema || symcr_program_schema() != &reader) {
+    return false;
+  }
+  std::uint32_t count = 0;
+  const PlannedSchema* embedded = symcr_program_plans(&count);
+  for (std::uint32_t i = 0; embedded != nullptr && i < count; ++i) {
+    if (embedded[i].writer_hash == writer_hash) {
+      return decode_plan_image(embedded[i].image, embedded[i].size, writer_hash,
+                               schema_blob(reader).hash, plan);
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 bool names_match(const TypeInfo& writer, const TypeInfo& reader) {
@@ -192,7 +210,16 @@ std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_
     plan->writer_owner = std::move(copy);
   }
   plan->reader = &reader;
-  Planner(*plan).run();
+  if (!decode_embedded_plan(writer_hash, reader, *plan)) {
+    if (!plan->nodes.empty()) {  // an image that did not fit: planned afresh, as without one
+      auto fresh = std::make_shared<Plan>();
+      fresh->writer_owner = plan->writer_owner;
+      fresh->writer = plan->writer;
+      fresh->reader = plan->reader;
+      plan = std::move(fresh);
+    }
+    Planner(*plan).run();
+  }
   std::lock_guard<std::mutex> lock(plan_cache_mutex());
   plan_cache().push_front(CachedPlan{writer_hash, &reader, reader.types, reader.roots, plan});
   if (plan_cache().size() > kMaxPlans) plan_cache().pop_back();

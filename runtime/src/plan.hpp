@@ -144,6 +144,8 @@ struct Plan final : ReportSource {
     const char* name;
   };
   std::vector<CounterPath> counter_paths;
+  // Names a decoded plan image spelled out (plan_image.hpp): in the writer schema otherwise.
+  std::deque<std::string> image_names;
   // Every root kept and copy-only (see PlanNode::copy_only): restore checks the size and the
   // bools and copies, without the general decoder.
   bool copy_only_payload = false;
@@ -162,6 +164,11 @@ struct Plan final : ReportSource {
 std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_hash,
                                      const Schema& reader, Status& status,
                                      std::shared_ptr<const ParsedSchema> writer_owner = nullptr);
+
+// Plans `writer` against `reader`, bypassing the cache and any embedded image, and encodes the
+// plan as an image (plan_image.hpp): what symcr-gen embeds for a previous build's schema.
+Status plan_image_for(const Schema& writer, std::uint64_t writer_hash, const Schema& reader,
+                      std::uint64_t reader_hash, std::vector<std::uint8_t>& image);
 
 // A cached plan for (writer_hash, reader), or nullptr; no plan is built. For callers holding
 // an inline schema: when its bytes are the plan's writer's, it need not be hashed or parsed.

@@ -41,7 +41,7 @@ const PlanNode* Planner::node(std::uint32_t writer, std::uint32_t reader) {
   } else {
     fill(n);
     const TypeInfo& type = reader_.types[reader];
-    n.validated = type.validate != nullptr && n.action != Action::Reject;
+    n.validated = has_validator(type) && n.action != Action::Reject;
     n.flat_reader = is_flat(reader, 0);
   }
   return &n;
@@ -169,7 +169,7 @@ void Planner::fill(PlanNode& n) {
       n.element = node(wt.element, rt.element);
       // Associative elements are staged before insertion: scalars in a buffer, anything
       // else through its lifecycle.
-      if (is_associative(rt) && !reader_.types[rt.element].lifecycle &&
+      if (is_associative(rt) && !is_creatable(reader_.types[rt.element]) &&
           !is_scalar_kind(reader_.types[rt.element].kind)) {
         return reject(n, std::string("no lifecycle for element type ") +
                              reader_.types[rt.element].name + " of " + rt.name);

@@ -31,9 +31,19 @@ inline bool in_aliases(const char* name, const char* const* aliases) {
 
 constexpr int kMaxPlanDepth = 512;
 
+// The planner decides from what the schema records, never from whether a table's code pointer
+// is set: symcr-gen plans a previous build against tables without code (plan_image.hpp), and
+// its plan must be the one the running build would make. Tables written by hand may set only
+// the pointer.
 inline bool is_associative(const TypeInfo& container) {
-  const auto* ops = static_cast<const ContainerOps*>(container.ops);
-  return ops && !ops->append;
+  if (const auto* ops = static_cast<const ContainerOps*>(container.ops)) return !ops->append;
+  return container.container_kind >= static_cast<std::uint8_t>(ContainerKind::Set);
+}
+inline bool is_creatable(const TypeInfo& type) {
+  return type.lifecycle != nullptr || (type.flags & kTypeCreatable);
+}
+inline bool has_validator(const TypeInfo& type) {
+  return type.validate != nullptr || (type.flags & kTypeValidated);
 }
 
 // Every method is cold: a plan is built once per pair of schemas, so the planner is compiled for

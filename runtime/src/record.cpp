@@ -232,7 +232,9 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size, con
                           plan->writer_owner);
   }
   auto writer = std::make_shared<ParsedSchema>();
-  status = parse_schema(record.schema, record.header.schema_size, *writer);
+  // parse_record checked that the inline bytes hash to the header's hash.
+  status = parse_schema(record.schema, record.header.schema_size, *writer,
+                        &record.header.schema_hash);
   if (!status.ok()) {
     ReportAccess::set_status(report, status);
     return report;

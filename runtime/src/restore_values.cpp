@@ -97,7 +97,7 @@ bool Restorer::decode_objects() {
 
 // ---- values --------------------------------------------------------------------------
 bool Restorer::value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
-  return n->validated ? validated_value(n, dst, field) : plain_value(n, dst, field);
+  return runs_validator(n) ? validated_value(n, dst, field) : plain_value(n, dst, field);
 }
 
 // Only containers and unique_ptrs nest without a bound in the schema (struct nesting is

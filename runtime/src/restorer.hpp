@@ -186,7 +186,13 @@ class Restorer {
   // Such an element is left out of its container (reported and lossy in pass 1), never
   // inserted value-initialised.
   bool refused_by_validator(const PlanNode* e) const {
-    return e->validated && mode_ == Mode::Apply && verdicts_[verdict_cursor_] == 0;
+    return runs_validator(e) && mode_ == Mode::Apply && verdicts_[verdict_cursor_] == 0;
+  }
+
+  // A value checked by its type's symcr_validate. A plan for a build known only by its schema
+  // file (the CLI's) marks validated types whose code it does not have: restored unchecked.
+  bool runs_validator(const PlanNode* n) const {
+    return n->validated && reader_.types[n->reader].validate != nullptr;
   }
 
   // A hostile (or merely old) checkpoint must not make restore allocate more than its own size

@@ -393,13 +393,14 @@ class Parser {
 
 }  // namespace
 
-Status parse_schema(const std::uint8_t* data, std::size_t size, ParsedSchema& out) {
+Status parse_schema(const std::uint8_t* data, std::size_t size, ParsedSchema& out,
+                    const std::uint64_t* hash) {
   ParsedSchema parsed;
   if (!data && size) return Status(Error::Corrupt, "invalid schema: no bytes");
   Parser parser(data, size, *parsed.storage);
   Status status = parser.run();
   if (!status.ok()) return status;
-  parsed.storage->hash = fnv1a64(data, size);
+  parsed.storage->hash = hash != nullptr ? *hash : fnv1a64(data, size);
   parsed.storage->bytes.assign(data, data + size);
   out = std::move(parsed);
   return Status();

@@ -91,6 +91,9 @@ struct Store::Impl {
   detail::RecordView newest_view;
   int newest_scanned = -1;
   std::vector<std::uint32_t> newest_first;
+  // The scan open() made is what the file holds: only this Store writes a store it locked, and
+  // it has not saved since. The first restore_latest() then reads no slot again.
+  bool scan_current = false;
 
   int area_for_hash(std::uint64_t hash) const {
     for (int i = 0; i < 2; ++i) {
@@ -119,12 +122,6 @@ struct Store::Impl {
       slots[i].capacity = geometry.slot_size;
     }
     for (int i = 0; i < 2; ++i) area_offsets[i] = geometry.area_offset(i);
-    size_buffers(geometry.slot_size);
-  }
-
-  void size_buffers(std::uint32_t capacity) {
-    slot_bytes.resize(capacity);
-    newest_bytes.resize(capacity);
     newest_first.reserve(slots.size());
   }
 
@@ -356,18 +353,16 @@ struct Store::Impl {
     }
     // Restore-only: one slot per record found, in place.
     geometry = StoreGeometry();
-    std::uint32_t largest = 0;
     slots.assign(salvage.record_offsets.size(), Slot());
     for (std::size_t i = 0; i < slots.size(); ++i) {
       slots[i].offset = salvage.record_offsets[i];
       slots[i].capacity = salvage.record_sizes[i];
-      largest = std::max(largest, salvage.record_sizes[i]);
     }
     for (int i = 0; i < 2; ++i) {
       areas[i] = std::move(salvage.areas[i]);
       area_offsets[i] = salvage.area_offsets[i];
     }
-    size_buffers(largest);
+    newest_first.reserve(slots.size());
     read_only_reason = "store " + path + " has a damaged header (" + header_problem.message() +
                        "); its " + std::to_string(slots.size()) +
                        " checkpoints were found by scanning and can be restored, but its "
@@ -580,6 +575,7 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
     if (!status.ok()) return status;
   }
   impl.own_area = impl.area_for_hash(blob.hash);
+  impl.scan_current = impl.newest_scanned >= 0 || impl.newest_valid_slot() < 0;
   const int newest = impl.newest_valid_slot();
   out.last_sequence_ = newest >= 0 ? impl.slots[static_cast<std::size_t>(newest)].sequence : 0;
   out.options_ = options;
@@ -597,6 +593,7 @@ Status Store::save() {
     return Status(Error::Io, "%s", impl.read_only_reason.c_str());
   }
   const std::uint64_t sequence = last_sequence_ + 1;
+  impl.scan_current = false;
   Status status = detail::encode_record(*schema_, /*inline_schema=*/false, sequence, impl.record);
   if (!status.ok()) return status;
   if (impl.geometry_pending) {
@@ -649,7 +646,10 @@ Report Store::restore_latest(const RestoreOptions& options) {
     return report;
   }
   Impl& impl = *impl_;
-  Status status = impl.scan_slots(fd_);
+  // A store opened read-only may have been written by its owner since the scan.
+  Status status;
+  if (!impl.scan_current || !impl.read_only_reason.empty()) status = impl.scan_slots(fd_);
+  impl.scan_current = false;
   if (!status.ok()) {
     detail::ReportAccess::set_status(report, status);
     return report;

@@ -117,7 +117,8 @@ Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint
     area.own = own;  // the bytes are the blob the hash was computed over: nothing to check
   } else {
     auto parsed = std::make_shared<ParsedSchema>();
-    if (fnv1a64(bytes.data(), size) != hash || !parse_schema(bytes.data(), size, *parsed).ok()) {
+    if (fnv1a64(bytes.data(), size) != hash ||
+        !parse_schema(bytes.data(), size, *parsed, &hash).ok()) {
       return Status();
     }
     area.parsed = std::move(parsed);

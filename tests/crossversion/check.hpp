@@ -11,6 +11,10 @@
 #include <symcr/device.hpp>
 #include <symcr/symcr.hpp>
 
+// embedded_plan_check.cpp, linked into the C++ v1 programs: the failures of checking the plan
+// symcr-gen embedded for `checkpoint`'s schema.
+extern "C" int xv_check_embedded_plan(const char* checkpoint) __attribute__((weak));
+
 namespace xv {
 
 // The number of failed checks (a function, not an inline variable: the helpers are C++11).
@@ -82,6 +86,7 @@ inline symcr::Report restore(int argc, char** argv, bool strict = false) {
     return symcr::restore("", symcr::RestoreOptions());  // fails: no such file
   }
   if (std::getenv("XV_DEVICE") != nullptr) restore_through_device_and_exit(argv[1]);
+  if (xv_check_embedded_plan != nullptr) failures() += xv_check_embedded_plan(argv[1]);
   save_if_asked("XV_INITIAL");
   struct Resave {
     ~Resave() { save_if_asked("XV_RESAVE"); }

@@ -647,6 +647,33 @@ TEST_F(StoreTest, OpenReadonlyTakesTheGeometryFromTheFile) {
   expect_a(5);
 }
 
+// The first restore after open() follows the slots open() read, without reading them again;
+// a store opened for restoring only holds no lock, so its owner may save meanwhile, and its
+// restore reads the slots again and finds that checkpoint.
+TEST_F(StoreTest, ARestoreOnlyStoreRestoresWhatItsOwnerSavedAfterItWasOpened) {
+  save_seeds(1, 2);
+  symcr::Store reader;
+  ASSERT_TRUE(symcr::Store::open_readonly(path.c_str(), schema_a, reader).ok());
+  {
+    symcr::Store owner;
+    open(owner);
+    fill_a(3);
+    ASSERT_TRUE(owner.save().ok());
+  }
+  expect_store_restores(reader, 3);
+}
+
+TEST_F(StoreTest, RestoreLatestAfterOpenAndAfterASaveRestoresTheNewest) {
+  save_seeds(1, 2);
+  symcr::Store store;
+  open(store);
+  expect_store_restores(store, 2);
+  fill_a(3);
+  ASSERT_TRUE(store.save().ok());
+  expect_store_restores(store, 3);
+  expect_store_restores(store, 3);
+}
+
 TEST_F(StoreTest, OpenReadonlyNeverCreatesAFile) {
   symcr::Store store;
   EXPECT_EQ(symcr::Store::open_readonly(path.c_str(), schema_a, store).error(), Error::Io);

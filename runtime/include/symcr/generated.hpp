@@ -240,4 +240,18 @@ extern "C" const symcr::SerialisedSchema* symcr_program_serialised_schema(void)
 // firmware that never reads them.
 extern "C" std::uint64_t symcr_program_schema_hash(void) __attribute__((weak));
 
+namespace symcr {
+// A plan symcr-gen resolved at build time: how checkpoints of a previous build (the schema
+// file given as PREVIOUS_SCHEMA, whose schema hashes to writer_hash) restore into this one.
+// Restore reads it instead of planning. `image` is internal to the runtime of this release.
+struct PlannedSchema {
+  std::uint64_t writer_hash;
+  const std::uint8_t* image;
+  std::uint32_t size;
+};
+}  // namespace symcr
+// The build's planned schemas (*count of them), or the symbol is absent when there are none.
+extern "C" const symcr::PlannedSchema* symcr_program_plans(std::uint32_t* count)
+    __attribute__((weak));
+
 #endif  // SYMCR_GENERATED_HPP

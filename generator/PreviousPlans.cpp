@@ -1,0 +1,77 @@
+//===- PreviousPlans.cpp - Plans previous builds' schemas at build time ---===//
+//
+// See PreviousPlans.h. The plan is the runtime's (plan_image_for), made
+// against the same tables the schema source prints (SchemaTables): the
+// planner decides from what the tables record, not from code pointers, which
+// are null here, so the image is the plan the built program would make.
+//
+//===----------------------------------------------------------------------===//
+#include "PreviousPlans.h"
+#include "SchemaTables.h"
+
+#include "engine.hpp"
+#include "plan.hpp"
+#include "schema_file.hpp"
+
+namespace symcr_gen {
+
+bool planPreviousSchemas(ProgramModel &Program,
+                         const std::vector<std::string> &SchemaFiles,
+                         Diagnostics &Diags) {
+  Program.PreviousPlans.clear();
+  if (SchemaFiles.empty())
+    return true;
+  if (Program.Profile == RuntimeProfile::Device) {
+    Diags.error(
+        Location(),
+        "--previous-schema: the device profile restores only its own "
+        "build's checkpoints (convert older ones with `symcr convert`), "
+        "so it has no plan to embed");
+    return false;
+  }
+  SchemaTables Tables(Program);
+  const std::uint64_t OwnHash = Tables.serialised().hash;
+  const std::uint32_t OwnProgram =
+      symcr::detail::program_id_of(Tables.schema().program);
+  for (const std::string &File : SchemaFiles) {
+    symcr::detail::ParsedSchema Previous;
+    std::uint32_t PreviousProgram = 0;
+    symcr::Status Status = symcr::detail::read_schema_file(
+        File.c_str(), Previous, &PreviousProgram);
+    if (!Status.ok()) {
+      Diags.error(Location(),
+                  "--previous-schema '" + File + "': " + Status.message());
+      return false;
+    }
+    // An anonymous program (id 0) accepts, and is accepted by, any other.
+    if (PreviousProgram != 0 && OwnProgram != 0 &&
+        PreviousProgram != OwnProgram) {
+      Diags.error(Location(),
+                  "--previous-schema '" + File +
+                      "' is another program's schema (its checkpoints are "
+                      "refused by this build): give a schema file of an "
+                      "earlier build of '" +
+                      (Program.Name.empty() ? std::string("this program")
+                                            : Program.Name) +
+                      "'");
+      return false;
+    }
+    if (Previous.hash() == OwnHash)
+      continue; // this build's own schema: restored without a plan
+    PreviousPlanModel Plan;
+    Plan.SchemaFile = File;
+    Plan.WriterHash = Previous.hash();
+    Status =
+        symcr::detail::plan_image_for(Previous.schema(), Previous.hash(),
+                                      Tables.schema(), OwnHash, Plan.Image);
+    if (!Status.ok()) {
+      Diags.error(Location(), "--previous-schema '" + File +
+                                  "': cannot plan: " + Status.message());
+      return false;
+    }
+    Program.PreviousPlans.push_back(std::move(Plan));
+  }
+  return true;
+}
+
+} // namespace symcr_gen
