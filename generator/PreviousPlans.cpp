@@ -61,14 +61,8 @@ bool planPreviousSchemas(ProgramModel &Program,
     PreviousPlanModel Plan;
     Plan.SchemaFile = File;
     Plan.WriterHash = Previous.hash();
-    Status =
-        symcr::detail::plan_image_for(Previous.schema(), Previous.hash(),
-                                      Tables.schema(), OwnHash, Plan.Image);
-    if (!Status.ok()) {
-      Diags.error(Location(), "--previous-schema '" + File +
-                                  "': cannot plan: " + Status.message());
-      return false;
-    }
+    symcr::detail::plan_image_for(Previous.schema(), Previous.hash(),
+                                  Tables.schema(), OwnHash, Plan.Image);
     Program.PreviousPlans.push_back(std::move(Plan));
   }
   return true;

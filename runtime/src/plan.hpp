@@ -167,8 +167,9 @@ std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_
 
 // Plans `writer` against `reader`, bypassing the cache and any embedded image, and encodes the
 // plan as an image (plan_image.hpp): what symcr-gen embeds for a previous build's schema.
-Status plan_image_for(const Schema& writer, std::uint64_t writer_hash, const Schema& reader,
-                      std::uint64_t reader_hash, std::vector<std::uint8_t>& image);
+// A plan that restores nothing (Incompatible) is encoded as well: restore reports it the same.
+void plan_image_for(const Schema& writer, std::uint64_t writer_hash, const Schema& reader,
+                    std::uint64_t reader_hash, std::vector<std::uint8_t>& image);
 
 // A cached plan for (writer_hash, reader), or nullptr; no plan is built. For callers holding
 // an inline schema: when its bytes are the plan's writer's, it need not be hashed or parsed.

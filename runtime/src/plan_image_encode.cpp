@@ -159,14 +159,13 @@ void encode_plan_image(const Plan& plan, std::uint64_t writer_hash, std::uint64_
   out.text(plan.status.message());
 }
 
-Status plan_image_for(const Schema& writer, std::uint64_t writer_hash, const Schema& reader,
-                      std::uint64_t reader_hash, std::vector<std::uint8_t>& image) {
+void plan_image_for(const Schema& writer, std::uint64_t writer_hash, const Schema& reader,
+                    std::uint64_t reader_hash, std::vector<std::uint8_t>& image) {
   Plan plan;
   plan.writer = &writer;
   plan.reader = &reader;
   planning::Planner(plan).run();
   encode_plan_image(plan, writer_hash, reader_hash, image);
-  return Status();
 }
 
 }  // namespace symcr::detail
