@@ -68,6 +68,11 @@ private:
 /// True for checkpoint_at, restore_at and store directives.
 bool isPointDirective(const Directive &D);
 
+/// The definition of the points' store, symcr_program_point_store, for the
+/// schema source ("" when the program has no points): one definition that
+/// every copy's points and symcr_points_open_store() refer to.
+std::string emitPointStoreDefinition(const ProgramModel &Program);
+
 /// The copy of TU \p TUIndex's source with its points' calls inserted.
 std::string emitPointedCopy(const ProgramModel &Program, unsigned TUIndex);
 

@@ -8,6 +8,7 @@
 //===----------------------------------------------------------------------===//
 #include "EmitSupport.h"
 #include "Emitter.h"
+#include "ProgramPoints.h"
 #include "SchemaTables.h"
 
 #include <cinttypes>
@@ -58,6 +59,7 @@ public:
     OS << "}  // namespace\n\n";
     writeProgramSchema(RootRenamed);
     writePlannedSchemas();
+    OS << emitPointStoreDefinition(Program);
   }
 
 private:

@@ -20,16 +20,20 @@ static_assert(SYMCR_REJECTED == static_cast<int>(symcr::Decision::Rejected),
               "C decisions mirror symcr::Decision");
 
 namespace {
-
 thread_local char last_error[256];  // a Status message (240) always fits
+}  // namespace
 
-int record(const symcr::Status& status) {
+int symcr::detail::record_c_error(const symcr::Status& status) {
   if (!status.ok()) std::snprintf(last_error, sizeof last_error, "%s", status.message());
   return static_cast<int>(status.error());
 }
 
+using symcr::detail::record_c_error;
+
+namespace {
+
 int hand_over(symcr::Report&& report, symcr_report** out) {
-  const int code = record(report.status());
+  const int code = record_c_error(report.status());
   if (out != nullptr) *out = new (std::nothrow) symcr_report{std::move(report), {}, {}};
   return code;
 }
@@ -55,11 +59,11 @@ const char* symcr_last_error(void) { return last_error; }
 int symcr_checkpoint(const char* path) { return symcr_checkpoint_with(nullptr, path, 0); }
 
 int symcr_checkpoint_with(const symcr_schema* schema, const char* path, int fdatasync) {
-  if (path == nullptr) return record(symcr::Status(symcr::Error::Io, "no path given"));
+  if (path == nullptr) return record_c_error(symcr::Status(symcr::Error::Io, "no path given"));
   symcr::CheckpointOptions options;
   options.durability =
       fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
-  return record(schema != nullptr ? symcr::checkpoint(*schema, path, options)
+  return record_c_error(schema != nullptr ? symcr::checkpoint(*schema, path, options)
                                   : symcr::checkpoint(path, options));
 }
 
@@ -125,7 +129,7 @@ void symcr_store_options_init(symcr_store_options* options) {
 int symcr_store_open(const char* path, const symcr_schema* schema,
                      const symcr_store_options* options, symcr_store** store) {
   if (store == nullptr || path == nullptr) {
-    return record(symcr::Status(symcr::Error::Io, "symcr_store_open: no path or handle"));
+    return record_c_error(symcr::Status(symcr::Error::Io, "symcr_store_open: no path or handle"));
   }
   *store = nullptr;
   symcr::StoreOptions store_options;
@@ -136,21 +140,21 @@ int symcr_store_open(const char* path, const symcr_schema* schema,
         options->fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
   }
   auto* handle = new (std::nothrow) symcr_store;
-  if (handle == nullptr) return record(symcr::Status(symcr::Error::Io, "out of memory"));
+  if (handle == nullptr) return record_c_error(symcr::Status(symcr::Error::Io, "out of memory"));
   const symcr::Status status =
       schema != nullptr ? symcr::Store::open(path, *schema, store_options, handle->store)
                         : symcr::Store::open(path, store_options, handle->store);
   if (!status.ok()) {
     delete handle;
-    return record(status);
+    return record_c_error(status);
   }
   *store = handle;
   return SYMCR_OK;
 }
 
 int symcr_store_save(symcr_store* store) {
-  if (store == nullptr) return record(symcr::Status(symcr::Error::Io, "no store"));
-  return record(store->store.save());
+  if (store == nullptr) return record_c_error(symcr::Status(symcr::Error::Io, "no store"));
+  return record_c_error(store->store.save());
 }
 
 int symcr_store_restore_latest(symcr_store* store, int flags, symcr_report** report) {

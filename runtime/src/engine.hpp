@@ -89,6 +89,13 @@ Report restore_payload(const Schema& writer, std::uint64_t writer_hash, const st
                        std::size_t size, const Schema& reader, const RestoreOptions& options,
                        std::shared_ptr<const ParsedSchema> writer_owner = nullptr);
 
+// What restore_payload needs to know of the two schemas alone, resolved ahead of it (the plan,
+// cached; for a schema restored into itself, that the same-build decoder holds it), so that a
+// later restore only decodes and writes. Never fails: a refusing plan is cached and reported by
+// the restore.
+void prepare_restore(const Schema& writer, std::uint64_t writer_hash, const Schema& reader,
+                     std::shared_ptr<const ParsedSchema> writer_owner);
+
 // Pass 1 of restore_payload only: the full report (schema-level and value-level decisions)
 // and status of restoring the payload into `reader`, without writing anything. The reader's
 // roots need no addresses (e.g. a schema read from another build, for the CLI's `plan`).

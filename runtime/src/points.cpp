@@ -1,31 +1,35 @@
 // Program points (<symcr/points.h>): what the calls symcr-gen inserts at checkpoint_at and
 // restore_at points do. All points of a program share one store, opened at the first point
-// that needs it and kept open; a mutex serialises the points of all threads.
+// that needs it (or by symcr_points_open_store) and kept open; a mutex serialises the points of
+// all threads.
 #include "symcr/points.h"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <initializer_list>
 #include <mutex>
 #include <string>
 
 #include "c_handles.hpp"
-#include "symcr/symcr.hpp"
 #include "report_access.hpp"
+#include "symcr/symcr.hpp"
 
-extern "C" void symcr_on_restore_point(const struct symcr_point* point,
-                                       struct symcr_report* report) __attribute__((weak));
+extern "C" void symcr_on_restore_point(const struct symcr_point* point, struct symcr_report* report)
+    __attribute__((weak));
+// Weak here: a program without points (none defines it) may still call symcr_points_open_store.
+extern "C" const struct symcr_point_store symcr_program_point_store __attribute__((weak));
 
 namespace {
 
 struct PointState {
   std::mutex lock;
   symcr::Store store;
-  std::string path;              // of the open store
-  std::string last_save_error;   // logged once until a save succeeds again
+  std::string path;             // of the open store
+  std::string last_save_error;  // logged once until a save succeeds again
   symcr_restore_hook hook = nullptr;
   void* hook_context = nullptr;
 };
@@ -38,14 +42,35 @@ PointState& state() {
 
 const char* store_path(const symcr_point_store& store) {
   const char* from_environment = std::getenv("SYMCR_STORE");
-  return from_environment != nullptr && *from_environment != '\0' ? from_environment
-                                                                  : store.path;
+  return from_environment != nullptr && *from_environment != '\0' ? from_environment : store.path;
+}
+
+// One line on stderr, in one write(2): lines of several threads do not mix, and the line of a
+// restore point costs no cold stdio (its first formatted print in a freshly started process
+// faults in tens of microseconds of code, inside the restore's time).
+void log_line(std::initializer_list<const char*> parts, bool newline = true) {
+  std::string line = "symcr: ";
+  for (const char* part : parts) line += part;
+  if (newline) line += '\n';
+  const char* data = line.data();
+  std::size_t left = line.size();
+  while (left != 0) {
+    const ssize_t written = ::write(STDERR_FILENO, data, left);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) return;  // nowhere to log to: the outcome still reaches the hook
+    data += written;
+    left -= static_cast<std::size_t>(written);
+  }
+}
+
+bool is_open_at(const PointState& s, const char* path) {
+  return s.store.is_open() && s.path == path;
 }
 
 // Opens the store once; a checkpoint point then reaches save() without allocating.
 symcr::Status open_store(PointState& s, const symcr_point_store& where) {
   const char* path = store_path(where);
-  if (s.store.is_open() && s.path == path) return symcr::Status();
+  if (is_open_at(s, path)) return symcr::Status();
   s.store.close();
   symcr::StoreOptions options;
   if (where.slots != 0) options.slots = where.slots;
@@ -69,13 +94,12 @@ void checkpoint(PointState& s, symcr_point& point) {
   // A failing save at every loop would flood the log: say it once until it recovers.
   if (status.message() == s.last_save_error) return;
   s.last_save_error = status.message();
-  std::fprintf(stderr, "symcr: %s: checkpoint failed: %s\n", point.inserted_at,
-               status.message());
+  log_line({point.inserted_at, ": checkpoint failed: ", status.message()});
 }
 
 [[noreturn]] void stop(const symcr_point& point) {
-  std::fprintf(stderr, "symcr: %s: stopping the program (%s asks for on_failure=stop)\n",
-               point.inserted_at, point.directive);
+  log_line({point.inserted_at, ": stopping the program (", point.directive,
+            " asks for on_failure=stop)"});
   std::exit(EXIT_FAILURE);
 }
 
@@ -85,15 +109,14 @@ bool restore(PointState& s, symcr_point& point, symcr_report& report) {
   if (point.passes != 1) return false;  // a restore point restores once per process
   const char* path = store_path(*point.store);
   struct stat info;
-  if (::stat(path, &info) != 0 && errno == ENOENT) {
-    std::fprintf(stderr, "symcr: %s: no store at %s yet; starting from the initial state\n",
-                 point.inserted_at, path);
+  if (!is_open_at(s, path) && ::stat(path, &info) != 0 && errno == ENOENT) {
+    log_line({point.inserted_at, ": no store at ", path, " yet; starting from the initial state"});
     return false;
   }
   const symcr::Status opened = open_store(s, *point.store);
   if (opened.ok() && !s.store.holds_checkpoints()) {
-    std::fprintf(stderr, "symcr: %s: %s holds no checkpoint yet; starting from the initial state\n",
-                 point.inserted_at, path);
+    log_line({point.inserted_at, ": ", path,
+              " holds no checkpoint yet; starting from the initial state"});
     return false;
   }
   if (opened.ok()) {
@@ -104,14 +127,19 @@ bool restore(PointState& s, symcr_point& point, symcr_report& report) {
   } else {
     symcr::detail::ReportAccess::set_status(report.report, opened);
   }
-  if (report.report.ok()) {
-    std::fprintf(stderr, "symcr: %s: restored checkpoint #%llu of %s\n", point.inserted_at,
-                 static_cast<unsigned long long>(report.report.sequence()), path);
-  } else {
-    std::fprintf(stderr, "symcr: %s: restore failed; %s:\n%s", point.inserted_at,
-                 point.on_failure == SYMCR_POINT_STOP ? "stopping"
-                                                      : "carrying on from the initial state",
-                 report.report.to_text().c_str());
+  // A success is the hook's to report when there is one (the runtime's line would be a second,
+  // written inside the restore point's time); a failure is always logged.
+  const bool hooked = s.hook != nullptr || symcr_on_restore_point != nullptr;
+  if (report.report.ok() && !hooked) {
+    const std::string sequence = std::to_string(report.report.sequence());
+    log_line({point.inserted_at, ": restored checkpoint #", sequence.c_str(), " of ", path});
+  } else if (!report.report.ok()) {
+    const std::string text = report.report.to_text();
+    log_line(
+        {point.inserted_at, ": restore failed; ",
+         point.on_failure == SYMCR_POINT_STOP ? "stopping" : "carrying on from the initial state",
+         ":\n", text.c_str()},
+        /*newline=*/false);
   }
   return true;
 }
@@ -125,6 +153,16 @@ void symcr_set_restore_hook(symcr_restore_hook hook, void* context) {
   std::lock_guard<std::mutex> guard(s.lock);
   s.hook = hook;
   s.hook_context = context;
+}
+
+int symcr_points_open_store(void) {
+  if (&symcr_program_point_store == nullptr) {
+    return symcr::detail::record_c_error(symcr::Status(
+        symcr::Error::NoSchema, "the program has no program points (no store directive)"));
+  }
+  PointState& s = state();
+  std::lock_guard<std::mutex> guard(s.lock);
+  return symcr::detail::record_c_error(open_store(s, symcr_program_point_store));
 }
 
 void symcr_point_reached(struct symcr_point* point) {

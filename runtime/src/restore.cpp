@@ -19,6 +19,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "device_format.hpp"
 #include "report_access.hpp"
 #include "restorer.hpp"
 #include "schema_facts.hpp"
@@ -157,8 +158,8 @@ bool restore_same_build(const Schema& schema, std::uint64_t hash, const std::uin
   if (!entry.first_same_build_restore() || !entry.device_holdable()) return false;
   thread_local std::vector<std::uint8_t> scratch;
   scratch.resize(device::scratch_size(schema));
-  if (device::restore_payload(schema, payload, size, scratch.data(), scratch.size()) !=
-      device::Result::Ok) {
+  if (device::detail::restore_held_payload(schema, payload, size, scratch.data(),
+                                           scratch.size()) != device::Result::Ok) {
     return false;
   }
   ReportAccess::set_source(report, std::make_shared<SameBuildReport>(schema, hash));
@@ -242,6 +243,16 @@ Report restore_payload(const Schema& writer, std::uint64_t writer_hash, const st
                        std::shared_ptr<const ParsedSchema> writer_owner) {
   return run_restore(writer, writer_hash, payload, size, reader, options, false, true,
                      std::move(writer_owner));
+}
+
+void prepare_restore(const Schema& writer, std::uint64_t writer_hash, const Schema& reader,
+                     std::shared_ptr<const ParsedSchema> writer_owner) {
+  if (&writer == &reader) {
+    schema_cache_entry(reader).device_holdable();
+    return;
+  }
+  Status ignored;
+  plan_for(writer, writer_hash, reader, ignored, std::move(writer_owner));
 }
 
 Report plan_payload(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,

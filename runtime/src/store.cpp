@@ -576,6 +576,13 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
   }
   impl.own_area = impl.area_for_hash(blob.hash);
   impl.scan_current = impl.newest_scanned >= 0 || impl.newest_valid_slot() < 0;
+  if (impl.newest_scanned >= 0) {
+    // A build opens its store while it initialises and restores where time counts (a restore
+    // point, the first loop): what the restore needs of the schemas alone is resolved now.
+    const StoreSchemaArea& area =
+        impl.areas[impl.slots[static_cast<std::size_t>(impl.newest_scanned)].area];
+    detail::prepare_restore(area.schema(), area.hash, schema, area.parsed);
+  }
   const int newest = impl.newest_valid_slot();
   out.last_sequence_ = newest >= 0 ? impl.slots[static_cast<std::size_t>(newest)].sequence : 0;
   out.options_ = options;

@@ -14,8 +14,12 @@
 #include "Copter.hpp"
 #include "messages.hpp"
 
-#if SPECIMEN_WITH_SYMCR
+#if SPECIMEN_WITH_SYMCR || SPECIMEN_WITH_POINTS
 #include <symcr/symcr.hpp>
+#endif
+#if SPECIMEN_WITH_POINTS
+#include <symcr/points.h>
+#include <symcr/symcr.h>
 #endif
 
 AP_Checkpoint checkpointing;
@@ -43,6 +47,18 @@ symcr::Report g_restore_report;
 #endif
 // What the restore decided, printed after the restore was timed.
 std::string g_restore_log;
+
+#if SPECIMEN_WITH_POINTS
+// The restore point's outcome, as its hook saw it.
+bool g_points_restored = false;
+std::uint64_t g_points_sequence = 0;
+
+void on_points_restore(const symcr_point*, symcr_report* report, void*) {
+  g_points_restored = symcr_report_ok(report) != 0;
+  g_points_sequence = symcr_report_sequence(report);
+  // A failure is logged by the runtime; its text is rendered only then, outside the timed path.
+}
+#endif
 }  // namespace
 
 bool AP_Checkpoint::parse_method(const char* name, Method& out) {
@@ -80,7 +96,7 @@ bool AP_Checkpoint::init(Method method, const char* path, std::uint32_t every_lo
     case Method::Symcr:
       return symcr_open();
     case Method::SymcrPoints:
-      return ::setenv("SYMCR_STORE", path, 1) == 0;
+      return ::setenv("SYMCR_STORE", path, 1) == 0 && points_open();
   }
   return false;
 }
@@ -102,6 +118,7 @@ bool AP_Checkpoint::save() {
     case Method::SymcrPoints: points_save(), ++_sequence; break;
   }
   const std::uint64_t elapsed = now_ns() - start;
+  if (ok && _bytes == 0) measure_bytes();
   if (ok) report(mav::CKPT_SAVED, elapsed);
   return ok;
 }
@@ -114,13 +131,14 @@ bool AP_Checkpoint::restore() {
     case Method::RawImage: ok = raw_restore(); break;
     case Method::Symcr: ok = symcr_restore(); break;
     case Method::SymcrPoints:
-      // Nothing tells this build whether a restore happened but the state itself: the
-      // checkpoint was taken in flight, the initial state is on the ground.
       points_restore();
-      ok = copter.armed();
+      ok = points_restored();
       break;
   }
   const std::uint64_t elapsed = now_ns() - start;
+  if (_method == Method::SymcrPoints && ok) {
+    g_restore_log = "symcr-points: restored checkpoint #" + std::to_string(_sequence);
+  }
 #if SPECIMEN_WITH_SYMCR
   if (_method == Method::Symcr && ok) g_restore_log = g_restore_report.to_text();
 #endif
@@ -180,11 +198,51 @@ bool AP_Checkpoint::raw_restore() {
   return true;
 }
 
+// One checkpoint in the store is its record header plus the payload (the schema is shared by
+// the store), measured from an in-memory record of the same state. After the first save: the
+// measurement runs the checkpoint code over the whole state, which would warm a restore after
+// it that a freshly started build does not have warm.
+void AP_Checkpoint::measure_bytes() {
+#if SPECIMEN_WITH_SYMCR || SPECIMEN_WITH_POINTS
+  std::vector<std::uint8_t> record;
+  if (symcr_program_schema != nullptr && symcr_program_schema() != nullptr &&
+      symcr::checkpoint_to_buffer(*symcr_program_schema(), record).ok() && record.size() >= 48) {
+    std::uint32_t header_size = 0, payload_size = 0;
+    std::memcpy(&header_size, record.data() + 10, 2);
+    std::memcpy(&payload_size, record.data() + 44, 4);
+    _bytes = (header_size & 0xFFFFu) + payload_size;
+  }
+#endif
+}
+
 // --- symcr-points ----------------------------------------------------------------------------
 
 // The points of points.symcr are inserted at the exits of these two functions by symcr-gen.
 void AP_Checkpoint::points_save() {}
 void AP_Checkpoint::points_restore() {}
+
+// As the symcr method opens its store at start-up, before the flight's loops: the points' store
+// is opened here, so that the restore point only restores. The hook takes the restore's outcome
+// (the runtime then logs only failures, and this build logs the success after timing it).
+bool AP_Checkpoint::points_open() {
+#if SPECIMEN_WITH_POINTS
+  symcr_set_restore_hook(on_points_restore, nullptr);
+  if (symcr_points_open_store() != SYMCR_OK) {
+    std::fprintf(stderr, "symcr: %s\n", symcr_last_error());
+    return false;
+  }
+#endif
+  return true;
+}
+
+bool AP_Checkpoint::points_restored() {
+#if SPECIMEN_WITH_POINTS
+  _sequence = static_cast<std::uint32_t>(g_points_sequence);
+  return g_points_restored;
+#else
+  return false;
+#endif
+}
 
 // --- symcr -----------------------------------------------------------------------------------
 
@@ -194,16 +252,6 @@ bool AP_Checkpoint::symcr_open() {
   if (!opened.ok()) {
     std::fprintf(stderr, "symcr: %s\n", opened.message());
     return false;
-  }
-  // One checkpoint in the store is its record header plus the payload (the schema is shared
-  // by the store); measure it once from an in-memory record of the same state.
-  std::vector<std::uint8_t> record;
-  if (symcr_program_schema != nullptr && symcr_program_schema() != nullptr &&
-      symcr::checkpoint_to_buffer(*symcr_program_schema(), record).ok() && record.size() >= 48) {
-    std::uint32_t header_size = 0, payload_size = 0;
-    std::memcpy(&header_size, record.data() + 10, 2);
-    std::memcpy(&payload_size, record.data() + 44, 4);
-    _bytes = (header_size & 0xFFFFu) + payload_size;
   }
   return true;
 }

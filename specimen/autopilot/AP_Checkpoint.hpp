@@ -11,7 +11,8 @@
 //              points.symcr puts a checkpoint at the exit of points_save() and a restore at the
 //              exit of points_restore(), the places where the vehicle's state is consistent
 //              (after a loop; before the first loop). The store's path reaches symcr through
-//              the SYMCR_STORE environment variable.
+//              the SYMCR_STORE environment variable; init() opens the store (one call, as the
+//              symcr method opens its store there).
 //
 // Every save and restore is reported to the world as a SIM_CHECKPOINT frame (duration, size),
 // so the experiment measures the cost inside the vehicle's loop.
@@ -37,11 +38,14 @@ class AP_Checkpoint {
 
  private:
   bool save();
+  void measure_bytes();
   bool raw_save();
   bool raw_restore();
   bool symcr_open();
   bool symcr_save();
   bool symcr_restore();
+  static bool points_open();
+  bool points_restored();
   static void points_save();
   static void points_restore();
   void report(std::uint8_t event, std::uint64_t nanos);

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <symcr/points.h>
 #include <symcr/symcr.h>
 
 #include "c_api_test_state.h"
@@ -104,6 +105,9 @@ static void errors(const char* directory) {
   CHECK(strcmp(symcr_error_name(99), "Unknown") == 0);
   CHECK(symcr_checkpoint(NULL) == SYMCR_ERROR_IO);
   symcr_report_free(NULL);
+  /* This program has no program points: there is no points' store to open. */
+  CHECK(symcr_points_open_store() == SYMCR_ERROR_NO_SCHEMA);
+  CHECK(strstr(symcr_last_error(), "no program points") != NULL);
 }
 
 static void store_round_trip(const char* directory) {

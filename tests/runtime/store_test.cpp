@@ -447,6 +447,33 @@ TEST_F(StoreTest, APlanOutlivesTheStoreWhoseSchemaAreaItWasBuiltFrom) {
   EXPECT_FALSE(report.entries().empty());
 }
 
+// A build opens its store while it initialises and restores where time counts: open() resolves
+// the plan of the newest checkpoint's schema, so that restore_latest() only decodes and writes.
+// An empty store plans nothing.
+TEST_F(StoreTest, OpenResolvesThePlanOfTheNewestCheckpoint) {
+  static const symcr::Schema reader = schema_b;  // its own plans, whatever ran before
+  const std::uint64_t writer_hash = symcr::detail::schema_blob(schema_a).hash;
+  {
+    symcr::Store empty;
+    open(empty, schema_a);
+  }
+  {
+    symcr::Store store;
+    open(store, reader);
+    EXPECT_FALSE(symcr::detail::cached_plan(writer_hash, reader));
+  }
+  save_seeds(1, 2);
+  symcr::Store store;
+  open(store, reader);
+  const auto planned = symcr::detail::cached_plan(writer_hash, reader);
+  ASSERT_TRUE(planned);
+  copter_b = CopterB{};
+  const symcr::Report report = store.restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(copter_b.ticks, 1002);
+  EXPECT_EQ(symcr::detail::cached_plan(writer_hash, reader), planned);  // the restore's plan
+}
+
 TEST_F(StoreTest, AThirdBuildReplacesOnlyTheOlderSchemaArea) {
   // Build C: B's types with only the "copter" root, so its schema (and hash) differ.
   const symcr::Schema schema_c{tables::types_b, tables::kTypeCount, tables::roots_b, 1, nullptr};

@@ -64,6 +64,10 @@ std::uint32_t first_unheld_type(const Schema& schema);
 // bytes of all roots' values. Only for schemas first_unheld_type() accepts.
 std::size_t wire_size(const Schema& schema, std::uint32_t type);
 std::size_t values_size(const Schema& schema);
+// restore_payload() for a schema first_unheld_type() already accepted (the host checks that
+// once per schema, not once per restore).
+Result restore_held_payload(const Schema& schema, const std::uint8_t* payload, std::size_t size,
+                            std::uint8_t* scratch, std::size_t scratch_capacity);
 // Pointers among the values of `type` (each may need a reference).
 std::size_t pointer_count(const Schema& schema, std::uint32_t type);
 // The most bytes one reference takes: base, object, step count, steps, target type.

@@ -254,8 +254,14 @@ Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t s
 
 Result restore_payload(const Schema& schema, const std::uint8_t* payload, std::size_t size,
                        std::uint8_t* scratch, std::size_t scratch_capacity) {
-  if (payload == nullptr && size != 0) return Result::Corrupt;
   if (detail::first_unheld_type(schema) != kNoType) return Result::Unsupported;
+  return detail::restore_held_payload(schema, payload, size, scratch, scratch_capacity);
+}
+
+Result detail::restore_held_payload(const Schema& schema, const std::uint8_t* payload,
+                                    std::size_t size, std::uint8_t* scratch,
+                                    std::size_t scratch_capacity) {
+  if (payload == nullptr && size != 0) return Result::Corrupt;
   if (scratch == nullptr || scratch_capacity < scratch_size(schema)) return Result::NoSpace;
   const std::uintptr_t misalignment =
       reinterpret_cast<std::uintptr_t>(scratch) % detail::kStageAlign;
@@ -279,7 +285,8 @@ Result restore(const Build& build, const std::uint8_t* bytes, std::size_t size,
   std::size_t payload = 0, payload_size = 0;
   Result result = check_record(build, bytes, size, &payload, &payload_size);
   if (result != Result::Ok) return result;
-  result = restore_payload(schema, bytes + payload, payload_size, scratch, scratch_capacity);
+  result = detail::restore_held_payload(schema, bytes + payload, payload_size, scratch,
+                                        scratch_capacity);
   if (result == Result::Ok && sequence != nullptr) {
     *sequence = load64(bytes + detail::kOffsetSequence);
   }

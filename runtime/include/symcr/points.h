@@ -74,10 +74,23 @@ struct symcr_report;
 typedef void (*symcr_restore_hook)(const struct symcr_point* point, struct symcr_report* report,
                                    void* context);
 /* Called at every restore point with the restore's report (also when it failed; not when the
- * store holds no checkpoint yet). NULL removes the hook. Replaces symcr_on_restore_point. */
+ * store holds no checkpoint yet). NULL removes the hook. Replaces symcr_on_restore_point.
+ * Without a hook (or symcr_on_restore_point) the runtime logs every restore's outcome on stderr;
+ * with one, a successful restore is the hook's to report and only failures are logged. */
 void symcr_set_restore_hook(symcr_restore_hook hook, void* context);
 /* Defined by the program (optional): called at every restore point when no hook is set. */
 void symcr_on_restore_point(const struct symcr_point* point, struct symcr_report* report);
+
+/* Opens the store of the program's points now (creating it if needed, locking it and reading
+ * its slots), so that no point pays for that: call it during initialisation when the first
+ * point is in a time-critical path, such as a restore point in a control loop's set-up. The
+ * path is SYMCR_STORE's when set, as at a point. Optional: without it, the first point that
+ * needs the store opens it. Returns SYMCR_OK (0) or an error code of <symcr/symcr.h>, with the
+ * message in symcr_last_error(); SYMCR_ERROR_NO_SCHEMA when the program has no points. */
+int symcr_points_open_store(void);
+
+/* The store of the store(...) directive, defined by symcr-gen's schema source. */
+extern const struct symcr_point_store symcr_program_point_store;
 
 /* Inserted code: a point was reached. A checkpoint point saves on every `every`-th pass; a
  * restore point restores the store's newest valid checkpoint on its first pass. Thread-safe. */
