@@ -6,9 +6,12 @@ patched build Vk is started, restores, and must finish the mission.
 Methods: baseline (V0 flies the whole mission, no checkpoint), symcr (the autopilot calls
 symcr's store), symcr-points (builds whose sources carry no symcr call: the program points of an
 annotation file save and restore), raw-image (the root
-object's bytes restored with memcpy, standing for whole-memory C/R), criu (only where
-`criu check` passes). Red team: the vulnerable build is checkpointed periodically, the exploit
-frame crashes it, and the latest checkpoint is restored into the repaired build.
+object's bytes restored with memcpy, standing for whole-memory C/R), criu (the autopilot's
+process dumped and restored by CRIU, which checks the executable as it always does) and
+criu-unchecked (CRIU with that check reduced to sizes, which the world makes equal: the old
+memory under the new code); both only where `criu check` passes, with criu taken from $CRIU or
+PATH. Red team: the vulnerable build is checkpointed periodically, the exploit frame crashes it,
+and the latest checkpoint is restored into the repaired build.
 
 Prints Table 1 and writes results.json, one SVG per mission and every flight's track and log
 under --out. Usage: experiment.py [--runs 50] [--out DIR] [--build-dir DIR]
@@ -41,7 +44,8 @@ def parse_args():
     p.add_argument("--missions", nargs="+", help="mission files (default: ISTAR and BusRoute)")
     # V0 -> V0 (the same build restored) is the control: every method must succeed there.
     p.add_argument("--versions", nargs="+", default=["V0", "V1", "V2", "V3", "V4"])
-    p.add_argument("--methods", nargs="+", default=["symcr", "symcr-points", "raw-image", "criu"])
+    p.add_argument("--methods", nargs="+",
+                   default=["symcr", "symcr-points", "raw-image", "criu", "criu-unchecked"])
     p.add_argument("--no-redteam", action="store_true")
     p.add_argument("--seed", type=int, default=2020)
     p.add_argument("--outage", type=float, default=0.2, help="seconds without autopilot")
@@ -72,20 +76,30 @@ def find_build(build_dir):
     return found, config
 
 
+CRIU_METHODS = ("criu", "criu-unchecked")
+
+
+def find_criu():
+    """The criu binary: $CRIU, else criu on PATH (or in /usr/sbin, where Debian puts it)."""
+    if os.environ.get("CRIU"):
+        return os.environ["CRIU"]
+    return shutil.which("criu") or (os.path.exists("/usr/sbin/criu") and "/usr/sbin/criu") or None
+
+
 def criu_status():
-    """(available, reason)."""
-    criu = shutil.which("criu") or (os.path.exists("/usr/sbin/criu") and "/usr/sbin/criu")
+    """(criu binary or None, reason it cannot be used)."""
+    criu = find_criu()
     if not criu:
-        return False, "criu is not installed (apt-get install criu)"
+        return None, "criu is not installed (apt-get install criu, or CRIU=<binary>)"
     try:
         r = subprocess.run([criu, "check"], capture_output=True, text=True, timeout=60)
     except OSError as e:
-        return False, "criu check could not run: %s" % e
+        return None, "%s check could not run: %s" % (criu, e)
     if r.returncode != 0:
         lines = [l for l in (r.stderr + r.stdout).splitlines() if l.strip()]
-        return False, "`criu check` failed: " + (lines[-1] if lines else "exit %d" % r.returncode)
-    return False, ("`criu check` passes, but dumping the autopilot's process tree with its "
-                   "socket links to the world is not implemented in this harness")
+        return None, "`%s check` failed: %s" % (
+            criu, lines[-1] if lines else "exit %d" % r.returncode)
+    return criu, ""
 
 
 def text_bytes(path):
@@ -129,7 +143,9 @@ def autopilot(exe, name, method):
 
 
 def fly(exe, mission_path, workdir, seed, autopilot, resume=None, method="none",
-        checkpoint_at=None, exploit_at=None, outage=0.2):
+        checkpoint_at=None, exploit_at=None, outage=0.2, criu=None):
+    """One flight. A red-team flight (exploit_at) sends the exploit again 5 s after the restart:
+    the attacker tries twice, so a restore into a build that is still vulnerable falls again."""
     os.makedirs(workdir, exist_ok=True)
     for stale in ("checkpoint.img", "checkpoint.store", "autopilot.log"):
         if os.path.exists(os.path.join(workdir, stale)):
@@ -143,7 +159,9 @@ def fly(exe, mission_path, workdir, seed, autopilot, resume=None, method="none",
     if checkpoint_at is not None:
         cmd += ["--checkpoint-at", "%.2f" % checkpoint_at]
     if exploit_at is not None:
-        cmd += ["--exploit-at", "%.2f" % exploit_at]
+        cmd += ["--exploit-at", "%.2f" % exploit_at, "--exploit-again", "5"]
+    if method in CRIU_METHODS:
+        cmd += ["--criu", criu]
     r = subprocess.run(cmd, capture_output=True, text=True)
     try:
         flight = json.loads(r.stdout.strip().splitlines()[-1])
@@ -188,22 +206,25 @@ def main():
                  % args.build_dir)
     missions = args.missions or [os.path.join(MISSIONS_DIR, m) for m in DEFAULT_MISSIONS]
     symcr_built = bool(config.get("symcr")) and "copter_v0_symcr" in exe
-    criu_ok, criu_reason = criu_status() if "criu" in args.methods else (False, "")
+    wants_criu = any(m in CRIU_METHODS for m in args.methods)
+    criu, criu_reason = criu_status() if wants_criu else (None, "")
+    criu_ok = criu is not None
     notes = []
     if any(m.startswith("symcr") for m in args.methods) and not symcr_built:
         notes.append("symcr: not measured: the autopilots of this build have no symcr-generated "
                      "code (no symcr_add_checkpointing or no working symcr-gen at build time)")
-    if "criu" in args.methods and not criu_ok:
+    if wants_criu and not criu_ok:
         notes.append("criu: unavailable on this machine: " + criu_reason)
     methods = [m for m in args.methods
-               if (not m.startswith("symcr") or symcr_built) and (m != "criu" or criu_ok)]
+               if (not m.startswith("symcr") or symcr_built) and (m not in CRIU_METHODS or criu_ok)]
     versions = [v for v in args.versions if "copter_" + v.lower() in exe]
     if symcr_built:
         versions = [v for v in versions if "copter_%s_symcr" % v.lower() in exe]
     redteam = (not args.no_redteam and "copter_redteam" in exe
                and "copter_redteam_repaired" in exe)
 
-    per_mission = 1 + len(versions) * len(methods) + (len([m for m in methods]) if redteam else 0)
+    per_mission = 1 + len(versions) * len(methods) + (
+        len(methods) + ("criu" in methods) if redteam else 0)
     progress = Progress(len(missions) * args.runs * per_mission)
     os.makedirs(args.out, exist_ok=True)
     rows, pictures = [], {}
@@ -232,14 +253,12 @@ def main():
 
         for version in versions:
             for method in methods:
-                if method == "criu":
-                    continue  # criu_ok is never true without an implementation (criu_status)
                 def fly_version(i, version=version, method=method):
                     return fly(exe, mission_path,
                                os.path.join(run_dir, "%s-%s-%d" % (version, method, i)), seeds[i],
                                autopilot(exe, "copter_v0", method),
                                autopilot(exe, "copter_" + version.lower(), method), method,
-                               checkpoint_at=points[i], outage=args.outage)
+                               checkpoint_at=points[i], outage=args.outage, criu=criu)
                 flights = run_cell(pool, progress, "%s %s %s" % (name, version, method), args.runs,
                                    fly_version)
                 for i, f in enumerate(flights):
@@ -249,16 +268,23 @@ def main():
                 rows.append(report.make_row(name, version, method, flights))
         if redteam:
             for method in methods:
-                if method == "criu":
-                    continue
                 def fly_redteam(i, method=method):
                     return fly(exe, mission_path, os.path.join(run_dir, "RT-%s-%d" % (method, i)),
                                seeds[i], autopilot(exe, "copter_redteam", method),
                                autopilot(exe, "copter_redteam_repaired", method), method,
-                               exploit_at=points[i], outage=args.outage)
+                               exploit_at=points[i], outage=args.outage, criu=criu)
                 flights = run_cell(pool, progress, "%s red team %s" % (name, method), args.runs,
                                    fly_redteam)
                 rows.append(report.make_row(name, "RT", method, flights))
+            if "criu" in methods:
+                # CRIU accepts only the executable it dumped: the vulnerable build itself (RT0).
+                def fly_unrepaired(i):
+                    return fly(exe, mission_path, os.path.join(run_dir, "RT0-criu-%d" % i),
+                               seeds[i], exe["copter_redteam"], exe["copter_redteam"], "criu",
+                               exploit_at=points[i], outage=args.outage, criu=criu)
+                flights = run_cell(pool, progress, "%s red team criu, unrepaired" % name,
+                                   args.runs, fly_unrepaired)
+                rows.append(report.make_row(name, "RT0", "criu", flights))
         if name not in pictures:
             ok = [f for f in flights if f["success"]] or flights
             pictures[name] = (ok[0], "%s, %s" % (name, "baseline"))
@@ -274,17 +300,23 @@ def main():
             name = MISSION_NAMES.get(base, os.path.splitext(base)[0])
             for version in versions:
                 rows.append(report.make_row(name, version, method, []))
-    if "criu" in args.methods and not criu_ok:
+    for method in [m for m in args.methods if m in CRIU_METHODS and not criu_ok]:
         for mission_path in missions:
             base = os.path.basename(mission_path)
             name = MISSION_NAMES.get(base, os.path.splitext(base)[0])
             for version in versions:
-                rows.append(report.make_row(name, version, "criu", []))
-    order = {"baseline": 0, "symcr": 1, "symcr-points": 2, "raw-image": 3, "criu": 4}
+                rows.append(report.make_row(name, version, method, []))
+    # What CRIU said when it refused (or what became of the restored process), per cell.
+    for r in rows:
+        if r["method"] in CRIU_METHODS and r["runs"] > r["successes"]:
+            reasons = "; ".join("%d× %s" % (n, why) for why, n in r["failures"].items())
+            notes.append("%s, %s %s: %s" % (r["method"], r["mission"], r["version"], reasons))
+    order = {"baseline": 0, "symcr": 1, "symcr-points": 2, "raw-image": 3, "criu": 4,
+             "criu-unchecked": 5}
     mission_order = {MISSION_NAMES.get(os.path.basename(m), os.path.splitext(os.path.basename(m))[0]): i
                      for i, m in enumerate(missions)}
-    rows.sort(key=lambda r: (mission_order.get(r["mission"], 99), r["version"] == "RT", r["version"],
-                             order.get(r["method"], 9)))
+    rows.sort(key=lambda r: (mission_order.get(r["mission"], 99), r["version"].startswith("RT"),
+                             r["version"], order.get(r["method"], 9)))
     if symcr_built:
         gen_report = os.path.join(args.build_dir, "specimen", "symcr", "copter_v0_symcr",
                                   "report.txt")

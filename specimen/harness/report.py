@@ -1,9 +1,10 @@
 """Aggregates flights into the rows of the paper's Table 1, prints the table, writes JSON."""
+import collections
 import json
 import statistics
 
 ROW_FIELDS = ("mission", "version", "method", "runs", "successes", "time_s_mean", "time_s_sd",
-              "checkpoint_bytes", "checkpoint_us_mean", "restore_us_mean")
+              "checkpoint_bytes", "checkpoint_us_mean", "restore_us_mean", "failures")
 
 
 def _mean(values):
@@ -27,6 +28,7 @@ def make_row(mission, version, method, flights):
         "checkpoint_bytes": max((f["checkpoint_bytes"] for f in saved), default=None),
         "checkpoint_us_mean": _mean([f["checkpoint_us_mean"] for f in saved]),
         "restore_us_mean": _mean([f["restore_us"] for f in restored]),
+        "failures": dict(collections.Counter(f["reason"] for f in flights if not f["success"])),
     }
 
 

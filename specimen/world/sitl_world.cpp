@@ -9,15 +9,18 @@
 // as the processes allow; --speedup N paces it at N times real time instead.
 //
 // Prints one JSON object describing the flight; writes the flown track as CSV with --track.
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <random>
 #include <sstream>
 #include <string>
@@ -25,6 +28,7 @@
 #include <vector>
 
 #include "autopilot_process.hpp"
+#include "criu_checkpointer.hpp"
 #include "flight_judge.hpp"
 #include "geo.hpp"
 #include "ground_station.hpp"
@@ -42,12 +46,17 @@ struct Options {
   std::string autopilot;         // the build that starts the mission (V0)
   std::string resume_autopilot;  // the build restarted after the checkpoint (Vk)
   std::string mission_path;
-  std::string method = "none";   // none | raw-image | symcr | symcr-points
+  // none | raw-image | symcr | symcr-points | criu | criu-unchecked (CRIU with its file
+  // validation reduced to sizes, which the world makes equal: the old memory under the new code)
+  std::string method = "none";
+  std::string criu = "criu";     // the criu binary
+  double criu_every_s = 2;       // red team: seconds between CRIU's dumps
   std::string workdir = ".";
   std::string track_path;
   unsigned seed = 1;
   double checkpoint_at_s = -1;   // seconds after arming; < 0: never stop the autopilot
   double exploit_at_s = -1;      // red team: seconds after arming to send the exploit
+  double exploit_again_s = -1;   // red team: seconds after the restart to send it again
   int checkpoint_every = 10;     // autopilot loops between checkpoints
   double outage_s = 0.2;         // world time while no autopilot runs (motors hold)
   double time_limit_s = 0;       // 0: from the route length
@@ -79,8 +88,10 @@ struct Result {
   std::fprintf(stderr,
                "sitl_world: %s\n"
                "usage: sitl_world --autopilot EXE --mission FILE [--resume-autopilot EXE]\n"
-               "  [--method none|raw-image|symcr|symcr-points] [--checkpoint-at S] [--exploit-at S]\n"
-               "  [--checkpoint-every LOOPS] [--outage S] [--seed N] [--time-limit S]\n"
+               "  [--method none|raw-image|symcr|symcr-points|criu|criu-unchecked]\n"
+               "  [--checkpoint-at S] [--exploit-at S] [--exploit-again S]\n"
+               "  [--checkpoint-every LOOPS]"
+               " [--criu EXE] [--criu-every S] [--outage S] [--seed N] [--time-limit S]\n"
                "  [--speedup X] [--wind M/S] [--workdir DIR] [--track FILE]\n",
                message);
   std::exit(2);
@@ -101,21 +112,26 @@ Options parse(int argc, char** argv) {
     else if (arg == "--seed") o.seed = static_cast<unsigned>(std::stoul(value));
     else if (arg == "--checkpoint-at") o.checkpoint_at_s = std::stod(value);
     else if (arg == "--exploit-at") o.exploit_at_s = std::stod(value);
+    else if (arg == "--exploit-again") o.exploit_again_s = std::stod(value);
     else if (arg == "--checkpoint-every") o.checkpoint_every = std::stoi(value);
     else if (arg == "--outage") o.outage_s = std::stod(value);
     else if (arg == "--time-limit") o.time_limit_s = std::stod(value);
     else if (arg == "--speedup") o.speedup = std::stod(value);
     else if (arg == "--wind") o.wind_max_ms = std::stod(value);
     else if (arg == "--visit-radius") o.visit_radius_m = std::stod(value);
+    else if (arg == "--criu") o.criu = value;
+    else if (arg == "--criu-every") o.criu_every_s = std::stod(value);
     else usage(("unknown option " + arg).c_str());
   }
   if (o.autopilot.empty() || o.mission_path.empty()) usage("--autopilot and --mission are required");
   if (o.method != "none" && o.method != "raw-image" && o.method != "symcr" &&
-      o.method != "symcr-points")
+      o.method != "symcr-points" && o.method != "criu" && o.method != "criu-unchecked")
     usage("unknown method");
   if (o.resume_autopilot.empty()) o.resume_autopilot = o.autopilot;
   return o;
 }
+
+bool is_criu(const std::string& method) { return method == "criu" || method == "criu-unchecked"; }
 
 std::string json_escape(const std::string& s) {
   std::string out;
@@ -146,6 +162,13 @@ class World {
         judge_(mission, home, options.visit_radius_m) {
     if (!options.track_path.empty()) track_.open(options.track_path);
     if (track_) track_ << "t,north,east,alt,segment\n";
+    if (is_criu(options.method)) {
+      // Absolute: criu resolves relative paths against its own working directory.
+      const std::filesystem::path workdir = std::filesystem::absolute(options.workdir);
+      criu_ = std::make_unique<world::CriuCheckpointer>(
+          options.criu, (workdir / "criu-images").string(), workdir.string(),
+          /*build_id=*/options.method == "criu");
+    }
   }
 
   Result run();
@@ -162,7 +185,7 @@ class World {
 
   std::vector<std::string> autopilot_args() const {
     std::vector<std::string> args;
-    if (options_.method != "none") {
+    if (options_.method != "none" && !criu_) {
       args = {"--checkpoint", options_.method, "--checkpoint-path",
               options_.workdir + "/checkpoint." + (options_.method == "raw-image" ? "img" : "store"),
               "--checkpoint-every", std::to_string(options_.checkpoint_every)};
@@ -170,6 +193,10 @@ class World {
     return args;
   }
   std::string log_path() const { return options_.workdir + "/autopilot.log"; }
+  // Where the criu methods run the autopilot from: V0, then Vk put in its place.
+  std::string installed_executable() const {
+    return (std::filesystem::absolute(options_.workdir) / "autopilot").lexically_normal().string();
+  }
 
   Point here() const {
     const BodyState& s = physics_.state();
@@ -180,6 +207,9 @@ class World {
   // One autopilot loop; false when the autopilot is gone (`gone_how` says how).
   bool autopilot_loop(std::array<double, 4>& motors, bool& saved_this_loop, std::string& gone_how);
   bool restart_autopilot(Result& result, int& segment);
+  bool install_executable(const std::string& source, std::string& error) const;
+  bool criu_dump(Result& result, bool leave_running);
+  bool criu_restore(Result& result);
   void pace();
 
   const Options& options_;
@@ -194,6 +224,9 @@ class World {
   std::uint64_t next_track_us_ = 0;
   std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
   Result* result_ = nullptr;
+  std::unique_ptr<world::CriuCheckpointer> criu_;
+  std::vector<world::ExternalLink> dumped_links_;  // of the process the newest dump holds
+  double next_dump_s_ = 0;                         // red team: mission time of the next dump
 };
 
 constexpr std::uint64_t kLoopUs = 10000;   // autopilot loop: 100 Hz
@@ -277,15 +310,96 @@ bool World::restart_autopilot(Result& result, int& segment) {
   segment = 1;
   for (double t = 0; t < options_.outage_s; t += kLoopUs * 1e-6) step_world(held, segment);
   result.restarted = true;
-  std::vector<std::string> args = autopilot_args();
-  args.push_back("--restore");
-  if (!autopilot_.start(options_.resume_autopilot, args, log_path())) {
-    result.reason = "could not start " + options_.resume_autopilot;
-    return false;
+  if (criu_) {
+    if (!criu_restore(result)) return false;
+  } else {
+    std::vector<std::string> args = autopilot_args();
+    args.push_back("--restore");
+    if (!autopilot_.start(options_.resume_autopilot, args, log_path())) {
+      result.reason = "could not start " + options_.resume_autopilot;
+      return false;
+    }
   }
   station_.on_autopilot_restarted();
   result.resume_point = here();
   segment = 2;
+  return true;
+}
+
+// A copy of `source` at installed_executable(), replacing what was there as a whole (a new
+// file, renamed over the old path). For criu-unchecked both builds are padded with zeros (which
+// an ELF file ignores) to the larger one's size, so that CRIU's size check lets the new code in.
+bool World::install_executable(const std::string& source, std::string& error) const {
+  namespace fs = std::filesystem;
+  const std::string target = installed_executable();
+  const std::string staged = target + ".new";
+  std::error_code code;
+  fs::copy_file(source, staged, fs::copy_options::overwrite_existing, code);
+  if (!code && options_.method == "criu-unchecked") {
+    const std::uintmax_t size = std::max(fs::file_size(options_.autopilot, code),
+                                         fs::file_size(options_.resume_autopilot, code));
+    if (!code) fs::resize_file(staged, size, code);
+  }
+  if (!code) fs::permissions(staged, fs::perms::owner_all | fs::perms::group_read |
+                                         fs::perms::group_exec | fs::perms::others_read |
+                                         fs::perms::others_exec, code);
+  if (!code) fs::rename(staged, target, code);
+  if (code) error = "cannot install " + source + " at " + target + ": " + code.message();
+  return !code;
+}
+
+// CRIU dumps the running autopilot; without `leave_running` that is also its end.
+bool World::criu_dump(Result& result, bool leave_running) {
+  const world::CriuOutcome dumped =
+      criu_->dump(autopilot_.pid(), autopilot_.external_links(), leave_running);
+  if (!dumped.ok) {
+    result.reason = "criu dump failed: " + dumped.error;
+    return false;
+  }
+  dumped_links_ = autopilot_.external_links();
+  ++result.checkpoints_saved;
+  result.checkpoint_us_sum += dumped.seconds * 1e6;
+  result.checkpoint_bytes = static_cast<std::uint32_t>(dumped.image_bytes);
+  result.checkpoint_point = here();
+  if (!leave_running) {
+    autopilot_.forget_killed();
+    result.autopilot_exit = "killed by criu dump";
+  }
+  return true;
+}
+
+// Vk put where the dumped executable was, then CRIU restores the newest dump, unmodified in
+// what it checks: a refusal is the outcome.
+bool World::criu_restore(Result& result) {
+  if (!criu_->has_dump()) {
+    result.reason = "criu: no dump was taken before the autopilot stopped";
+    return false;
+  }
+  std::string error;
+  if (!install_executable(options_.resume_autopilot, error)) {
+    result.reason = error;
+    return false;
+  }
+  world::ChildEnds ends;
+  if (!autopilot_.open_links(log_path(), ends)) {
+    result.reason = "cannot open the restored autopilot's links";
+    return false;
+  }
+  const world::CriuOutcome restored = criu_->restore(dumped_links_, ends);
+  result.restore_us = restored.seconds * 1e6;
+  if (!restored.ok) {
+    // CRIU names the executable by its path without the leading '/': the same reason reads
+    // the same in every flight's directory.
+    std::string why = restored.error;
+    const std::string path = installed_executable().substr(1);
+    for (std::size_t at = why.find(path); at != std::string::npos; at = why.find(path, at)) {
+      why.replace(at, path.size(), "<workdir>/autopilot");
+    }
+    result.reason = "criu refused the restore: " + why;
+    return false;
+  }
+  autopilot_.adopt(restored.pid);
+  result.restored = true;
   return true;
 }
 
@@ -296,13 +410,19 @@ Result World::run() {
   const double limit_s = options_.time_limit_s > 0
                              ? options_.time_limit_s
                              : 2.5 * route_m / mission_.cruise_speed_ms() + 120.0;
-  if (!autopilot_.start(options_.autopilot, autopilot_args(), log_path())) {
-    result.reason = "could not start " + options_.autopilot;
+  std::string first = options_.autopilot;
+  if (criu_) {
+    if (!install_executable(options_.autopilot, result.reason)) return result;
+    first = installed_executable();
+  }
+  if (!autopilot_.start(first, autopilot_args(), log_path())) {
+    result.reason = "could not start " + first;
     return result;
   }
   std::array<double, 4> motors{};
   int segment = 0;
   bool exploit_sent = false;
+  bool exploit_resent = false;
   bool airborne = false;
   double landed_since = -1;
   for (;;) {
@@ -317,6 +437,7 @@ Result World::run() {
         continue;
       }
       result.reason = "autopilot stopped (" + gone_how + ")";
+      if (exploit_resent) result.reason += " when the exploit was sent again";
       if (result.restarted && !result.restored) result.reason += ": restore failed";
       break;
     }
@@ -350,15 +471,32 @@ Result World::run() {
       landed_since = -1;
     }
 
+    if (criu_ && station_.mission_started() && options_.exploit_at_s >= 0 && !exploit_sent &&
+        mission_s >= next_dump_s_) {
+      // Red team: CRIU dumps the vulnerable build periodically, leaving it running.
+      next_dump_s_ = mission_s + options_.criu_every_s;
+      if (!criu_dump(result, /*leave_running=*/true)) break;
+    }
+    if (result.restarted && options_.exploit_again_s >= 0 && !exploit_resent &&
+        time_s() >= result.resume_point.t + options_.exploit_again_s) {
+      // The attacker tries again: a restored build that is still vulnerable falls again.
+      station_.send_exploit(autopilot_.gcs());
+      exploit_resent = true;
+    }
     if (station_.mission_started() && options_.exploit_at_s >= 0 && !exploit_sent &&
         mission_s >= options_.exploit_at_s) {
       station_.send_exploit(autopilot_.gcs());
       exploit_sent = true;
       result.exploit_point = here();
     }
-    if (station_.mission_started() && options_.method != "none" && options_.exploit_at_s < 0 &&
-        options_.checkpoint_at_s >= 0 && !result.restarted && saved &&
-        mission_s >= options_.checkpoint_at_s) {
+    const bool at_checkpoint_point = station_.mission_started() && options_.method != "none" &&
+                                     options_.exploit_at_s < 0 && options_.checkpoint_at_s >= 0 &&
+                                     !result.restarted && mission_s >= options_.checkpoint_at_s;
+    if (at_checkpoint_point && criu_) {
+      // CRIU's dump stops the flight computer: the checkpoint and the crash in one.
+      if (!criu_dump(result, /*leave_running=*/false)) break;
+      if (!restart_autopilot(result, segment)) return result;
+    } else if (at_checkpoint_point && saved) {
       // Stop the flight computer right after a checkpoint, as a crash would.
       autopilot_.kill_now();
       result.autopilot_exit = "killed (SIGKILL)";
@@ -397,6 +535,9 @@ Result World::run() {
 
 int main(int argc, char** argv) {
   const Options options = parse(argc, argv);
+  // An autopilot that died mid-flight is seen as a failed write, not as this process's death
+  // (children get the default back before they exec).
+  std::signal(SIGPIPE, SIG_IGN);
   world::Mission mission;
   std::string error;
   if (!world::load_mission(options.mission_path, mission, error)) {
