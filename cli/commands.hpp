@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace symcr::cli {
 
@@ -31,7 +32,7 @@ struct DiffArgs {
 int run_diff(const DiffArgs& args);
 
 struct PlanArgs {
-  std::string checkpoint;
+  std::vector<std::string> checkpoints;  // files, stores, or directories of them
   std::optional<std::uint32_t> slot;
   std::string schema;                  // the target build's schema file
   bool strict = false;

@@ -30,8 +30,10 @@ cl::SubCommand diff_command(
             "paths too). Exit 1 if any differ.");
 cl::SubCommand plan_command(
     "plan", "Show the report restoring a checkpoint into a build would produce, from the "
-            "build's schema file, without running it. Exit 1 if a field would be rejected "
-            "(with --strict: if any decision is lossy).");
+            "build's schema file, without running it; for several checkpoints (or directories "
+            "of them) a line each, then the reports of those that would not restore cleanly. "
+            "Exit 1 if a restore would fail or a field would be rejected (with --strict: if "
+            "any decision is lossy), 2 if a checkpoint cannot be read.");
 cl::SubCommand convert_command(
     "convert", "Restore a checkpoint into another build, known by its schema file, by the rules "
                "of that build's own restore, and write the result as that build's checkpoint "
@@ -48,9 +50,9 @@ cl::opt<std::string> diff_a(cl::Positional, cl::Required, cl::desc("<checkpoint 
                             cl::sub(diff_command), cl::cat(symcr_category));
 cl::opt<std::string> diff_b(cl::Positional, cl::Required, cl::desc("<checkpoint b>"),
                             cl::sub(diff_command), cl::cat(symcr_category));
-cl::opt<std::string> plan_checkpoint(cl::Positional, cl::Required,
-                                     cl::desc("<checkpoint | store>"), cl::sub(plan_command),
-                                     cl::cat(symcr_category));
+cl::list<std::string> plan_checkpoints(cl::Positional, cl::OneOrMore,
+                                       cl::desc("<checkpoint | store | directory>..."),
+                                       cl::sub(plan_command), cl::cat(symcr_category));
 cl::opt<std::string> convert_checkpoint(cl::Positional, cl::Required,
                                         cl::desc("<checkpoint | store>"),
                                         cl::sub(convert_command), cl::cat(symcr_category));
@@ -117,9 +119,9 @@ int run_subcommand() {
     return symcr::cli::run_diff({diff_a, diff_b, given(slot_a), given(slot_b), json_output});
   }
   if (plan_command) {
-    return symcr::cli::run_plan(
-        {plan_checkpoint, given(slot), plan_schema, plan_strict, json_output,
-         plan_accept_other_program, writer_schema});
+    return symcr::cli::run_plan({{plan_checkpoints.begin(), plan_checkpoints.end()}, given(slot),
+                                 plan_schema, plan_strict, json_output, plan_accept_other_program,
+                                 writer_schema});
   }
   if (convert_command) {
     return symcr::cli::run_convert({convert_checkpoint, given(slot), plan_schema, convert_output,

@@ -25,4 +25,5 @@ write_basic_package_version_file(${PROJECT_BINARY_DIR}/symcrConfigVersion.cmake
 install(FILES ${PROJECT_BINARY_DIR}/symcrConfig.cmake
               ${PROJECT_BINARY_DIR}/symcrConfigVersion.cmake
               ${PROJECT_SOURCE_DIR}/cmake/SymcrCheckpointing.cmake
+              ${PROJECT_SOURCE_DIR}/cmake/SymcrCompatibility.cmake
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/symcr COMPONENT sdk)
