@@ -21,6 +21,8 @@ int run_inspect(const InspectArgs& args);
 struct VerifyArgs {
   std::string path;
   bool json = false;
+  std::string key_file;     // the key checkpoints are authenticated with ("": none)
+  std::uint32_t key_id = 0;  // its id
 };
 int run_verify(const VerifyArgs& args);
 

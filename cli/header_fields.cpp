@@ -56,6 +56,13 @@ std::vector<HeaderField> describe_header(const detail::RecordHeader& h, const Sc
              std::to_string(schema->root_count) + " roots";
   }
   fields.push_back({"schema", where, JsonScalar::of(schema_origin)});
+  const bool authenticated = (h.flags & detail::kRecordAuthenticated) != 0;
+  fields.push_back({"authenticated",
+                    authenticated ? "HMAC-SHA-256, key id " + std::to_string(h.key_id) +
+                                        " (symcr verify --key-file checks it)"
+                                  : "no",
+                    // JSON: the key id, or null for a record without a MAC.
+                    authenticated ? JsonScalar::of_uint(h.key_id) : JsonScalar::null()});
   // Only records that passed parse_record are described, so the checksum held.
   fields.push_back({"checksum", "ok (crc32c " + hex32(h.checksum) + ")", JsonScalar::of("ok")});
   return fields;

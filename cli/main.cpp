@@ -46,6 +46,15 @@ cl::opt<std::string> inspect_path(cl::Positional, cl::Required,
 cl::opt<std::string> verify_path(cl::Positional, cl::Required,
                                  cl::desc("<checkpoint | store | schema file>"),
                                  cl::sub(verify_command), cl::cat(symcr_category));
+cl::opt<std::string> verify_key_file(
+    "key-file",
+    cl::desc("Verify authenticated checkpoints with the key in this file (its bytes, as the "
+             "program gives them to symcr::set_checkpoint_keys); a checkpoint without a MAC, "
+             "or whose MAC does not verify, is invalid"),
+    cl::value_desc("file"), cl::sub(verify_command), cl::cat(symcr_category));
+cl::opt<unsigned> verify_key_id("key-id", cl::desc("The id of the --key-file key (default 0)"),
+                                cl::init(0), cl::value_desc("N"), cl::sub(verify_command),
+                                cl::cat(symcr_category));
 cl::opt<std::string> diff_a(cl::Positional, cl::Required, cl::desc("<checkpoint a>"),
                             cl::sub(diff_command), cl::cat(symcr_category));
 cl::opt<std::string> diff_b(cl::Positional, cl::Required, cl::desc("<checkpoint b>"),
@@ -114,7 +123,9 @@ int run_subcommand() {
   if (inspect_command) {
     return symcr::cli::run_inspect({inspect_path, given(slot), json_output, writer_schema});
   }
-  if (verify_command) return symcr::cli::run_verify({verify_path, json_output});
+  if (verify_command) {
+    return symcr::cli::run_verify({verify_path, json_output, verify_key_file, verify_key_id});
+  }
   if (diff_command) {
     return symcr::cli::run_diff({diff_a, diff_b, given(slot_a), given(slot_b), json_output});
   }

@@ -134,8 +134,8 @@ void write_plan_json(JsonWriter& json, const PlanArgs& args, const Build& build,
 
 std::string verdict(const PlannedCheckpoint& plan) {
   if (!plan.would_restore) {
-    return std::string("restore would fail: ") + error_name(plan.report.status().error()) +
-           ": " + plan.report.status().message();
+    return std::string("restore would fail: ") + error_name(plan.report.status().error()) + ": " +
+           plan.report.status().message();
   }
   return plan.rejected ? "restore would proceed with " + std::to_string(plan.rejected) +
                              " rejected (each keeps the build's own value)"
@@ -143,8 +143,9 @@ std::string verdict(const PlannedCheckpoint& plan) {
 }
 
 void print_verdict(const Terminal& terminal, const PlannedCheckpoint& plan) {
-  const Colour colour =
-      !plan.would_restore ? Colour::Red : plan.rejected ? Colour::Yellow : Colour::Green;
+  const Colour colour = !plan.would_restore ? Colour::Red
+                        : plan.rejected     ? Colour::Yellow
+                                            : Colour::Green;
   print(terminal.paint(colour, verdict(plan)) + "\n");
 }
 
@@ -185,10 +186,9 @@ int print_matrix(const PlanArgs& args, const std::string& build_text,
     findings += finding;
     clean += loaded && !finding;
   }
-  print("\n" + std::to_string(clean) + " of " + std::to_string(plans.size()) +
-        " would restore" + (args.strict ? " without a lossy decision" : "") + "; " +
-        std::to_string(findings) + " would not, " + std::to_string(unreadable) +
-        " unreadable\n");
+  print("\n" + std::to_string(clean) + " of " + std::to_string(plans.size()) + " would restore" +
+        (args.strict ? " without a lossy decision" : "") + "; " + std::to_string(findings) +
+        " would not, " + std::to_string(unreadable) + " unreadable\n");
   for (const auto& plan : plans) {
     if (!plan->loaded.ok() || !plan->finding(args.strict)) continue;
     print("\ncheckpoint  " + describe_checkpoint(plan->checkpoint) + "\n\n");
@@ -204,8 +204,8 @@ int run_plan(const PlanArgs& args) {
   bool any_directory = false;
   const std::vector<std::string> paths = checkpoint_paths(args.checkpoints, any_directory);
   Build build;
-  Status status = detail::read_schema_file(resolve_links(args.schema).c_str(), build.schema,
-                                           &build.program_id);
+  Status status =
+      detail::read_schema_file(resolve_links(args.schema).c_str(), build.schema, &build.program_id);
   if (!status.ok()) {
     print_error(status.message());
     return kExitError;

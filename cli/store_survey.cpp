@@ -18,11 +18,13 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
     s.index = i;
     s.state = detail::store_slot_state_name(slot.state);
     s.has_header = slot.state == detail::StoreSlotState::Valid ||
-                   slot.state == detail::StoreSlotState::UnknownSchema;
+                   slot.state == detail::StoreSlotState::UnknownSchema ||
+                   slot.state == detail::StoreSlotState::Unauthenticated;
     s.header = slot.header;
     s.area = slot.area;
     s.damaged = slot.state == detail::StoreSlotState::Corrupt ||
-                slot.state == detail::StoreSlotState::FutureVersion;
+                slot.state == detail::StoreSlotState::FutureVersion ||
+                slot.state == detail::StoreSlotState::Unauthenticated;
     if (slot.state != detail::StoreSlotState::Valid) {
       s.problem = slot.problem.message();
     } else {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "authentication.hpp"
 #include "checkpoint_source.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -43,6 +44,20 @@ std::vector<Check> check_record_file(const std::vector<std::uint8_t>& bytes, std
     checks.push_back({"layout", false, std::to_string(bytes.size() - record.record_size) +
                                            " unexpected bytes after the record"});
     return checks;
+  }
+  // With --key-file the MAC must verify; without, an authenticated record is only described.
+  if (detail::keys_set()) {
+    status = detail::check_authentication(bytes.data(), record);
+    if (!status.ok()) {
+      checks.push_back({"authentication", false, status.message()});
+      return checks;
+    }
+    checks.push_back(
+        {"authentication", true, "MAC verifies with key id " + std::to_string(h.key_id)});
+  } else if ((h.flags & detail::kRecordAuthenticated) != 0) {
+    checks.push_back({"authentication", true,
+                      "MAC with key id " + std::to_string(h.key_id) +
+                          ", not verified (no --key-file)"});
   }
   if (record.schema == nullptr) {
     checks.push_back({"schema", false, "no inline schema (a store slot's record, schema " +
@@ -172,6 +187,16 @@ int verify_store(const VerifyArgs& args) {
 }  // namespace
 
 int run_verify(const VerifyArgs& args) {
+  if (!args.key_file.empty()) {
+    std::vector<std::uint8_t> key;
+    Status read = detail::read_regular_file(resolve_links(args.key_file).c_str(), 1 << 16, key);
+    const CheckpointKey checkpoint_key{args.key_id, key.data(), key.size()};
+    if (read.ok()) read = set_checkpoint_keys(&checkpoint_key, 1);
+    if (!read.ok()) {
+      print_error(std::string("--key-file: ") + read.message());
+      return kExitError;
+    }
+  }
   FileKind kind;
   const Status status = detect_file_kind(args.path, kind);
   if (!status.ok()) {

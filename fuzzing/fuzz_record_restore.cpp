@@ -7,6 +7,8 @@
 //   control bit 4     recompute the inline schema hash and the CRC-32C after mutation
 //   control bit 5     strict mode
 //   control bit 6     the reader already holds live heap objects (restore fills them)
+//   control bit 7     the reader authenticates checkpoints (fuzz_worlds.hpp's key); with bit 4
+//                     an authenticated record is signed again after mutation
 //
 // Checked beyond the sanitizers: a refused restore changes nothing (the reader re-encodes to
 // the same bytes), and no live value breaks the reader's ranges or validators. The decoder the
@@ -42,6 +44,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint8_t control = data[0];
   const unsigned world = (control & 0x0f) % fuzz::kWorldCount;
   std::vector<std::uint8_t> record(data + 1, data + size);
+  fuzz::use_fuzz_key((control & 0x80) != 0);
   if (control & 0x10) fuzz::fix_record_integrity(record.data(), record.size());
 
   fuzz::reset_world(world);

@@ -17,6 +17,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "authentication.hpp"
 #include "crc32c.hpp"
 #include "engine.hpp"
 #include "handwritten_schemas.hpp"
@@ -191,10 +192,22 @@ inline void fix_record_integrity(std::uint8_t* p, std::size_t size) {
     le::store64(p + 32, symcr::detail::fnv1a64(p + header_size, schema_size));
   }
   const std::uint64_t total = header_size + schema_size + payload_size;
+  // With keys set, an authenticated record is signed again, so that mutations get past the MAC.
+  if (symcr::detail::keys_set() && (flags & symcr::detail::kRecordAuthenticated) &&
+      header_size >= symcr::detail::kRecordAuthenticatedHeaderSize && total <= size) {
+    symcr::detail::sign_record(p, total);
+  }
   if (header_size >= symcr::detail::kRecordHeaderSize && total <= size) {
     le::store32(p + 48, 0);
     le::store32(p + 48, symcr::detail::crc32c(p, total));
   }
+}
+
+// The key the fuzzers authenticate with (control bit 7 of the record target).
+inline void use_fuzz_key(bool on) {
+  static const std::uint8_t key[] = {'f', 'u', 'z', 'z', '-', 'k', 'e', 'y'};
+  const symcr::CheckpointKey fuzz_key{9, key, sizeof key};
+  (void)symcr::set_checkpoint_keys(&fuzz_key, on ? 1 : 0);
 }
 
 }  // namespace fuzz

@@ -317,6 +317,28 @@ int main(int argc, char** argv) {
     }
   }
 
+  // Authenticated records (control bit 7: the reader holds the key), restored into the world
+  // itself with integrity fixed up after mutation, and not.
+  for (unsigned world = 0; world < kWorldCount; ++world) {
+    fill_world(world);
+    use_fuzz_key(true);
+    std::vector<std::uint8_t> record;
+    const symcr::Status status = symcr::checkpoint_to_buffer(world_schema(world), record, 7);
+    use_fuzz_key(false);
+    reset_world(world);
+    if (!status.ok()) {
+      std::fprintf(stderr, "%s: %s\n", world_name(world), status.message());
+      return 1;
+    }
+    for (std::uint8_t extra : {std::uint8_t{0x90}, std::uint8_t{0x80}}) {
+      std::vector<std::uint8_t> seed{static_cast<std::uint8_t>(world | extra)};
+      seed.insert(seed.end(), record.begin(), record.end());
+      write_seed(records, std::string(world_name(world)) + "-authenticated-" +
+                              std::to_string(extra), seed);
+      ++written;
+    }
+  }
+
   // Stores: a few saves of a world, then (for pairs) a save by the patched build, so both
   // schema areas are in use; restored by the writer's world and by its partner.
   char tmpl[] = "/tmp/symcr-seeds-XXXXXX";

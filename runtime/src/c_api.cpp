@@ -5,11 +5,14 @@
 #include <cstdio>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "c_handles.hpp"
 #include "symcr/symcr.hpp"
 #include "report_access.hpp"
 
+static_assert(SYMCR_ERROR_UNAUTHENTICATED == static_cast<int>(symcr::Error::Unauthenticated),
+              "C error codes mirror symcr::Error");
 static_assert(SYMCR_ERROR_TOO_LARGE == static_cast<int>(symcr::Error::TooLarge),
               "C error codes mirror symcr::Error");
 static_assert(SYMCR_ERROR_NO_VALID_SLOT == static_cast<int>(symcr::Error::NoValidSlot),
@@ -50,11 +53,20 @@ symcr::RestoreOptions restore_options(int flags) {
 extern "C" {
 
 const char* symcr_error_name(int error) {
-  if (error < 0 || error > static_cast<int>(symcr::Error::TooLarge)) return "Unknown";
+  if (error < 0 || error > static_cast<int>(symcr::Error::Unauthenticated)) return "Unknown";
   return symcr::error_name(static_cast<symcr::Error>(error));
 }
 
 const char* symcr_last_error(void) { return last_error; }
+
+int symcr_set_checkpoint_keys(const symcr_checkpoint_key* keys, size_t count) {
+  if (count != 0 && keys == nullptr) {
+    return record_c_error(symcr::Status(symcr::Error::Unsupported, "no keys given"));
+  }
+  std::vector<symcr::CheckpointKey> copied;
+  for (size_t i = 0; i < count; ++i) copied.push_back({keys[i].id, keys[i].bytes, keys[i].size});
+  return record_c_error(symcr::set_checkpoint_keys(copied.data(), count));
+}
 
 int symcr_checkpoint(const char* path) { return symcr_checkpoint_with(nullptr, path, 0); }
 

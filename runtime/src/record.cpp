@@ -5,6 +5,7 @@
 
 #include <cstring>
 
+#include "authentication.hpp"
 #include "crc32c.hpp"
 #include "engine.hpp"
 #include "little_endian.hpp"
@@ -33,6 +34,7 @@ void store_header(const RecordHeader& h, std::uint8_t* p) {
   le::store32(p + 44, h.payload_size);
   le::store32(p + 48, h.checksum);
   le::store32(p + 52, h.program_id);
+  if ((h.flags & kRecordAuthenticated) != 0) le::store32(p + kRecordKeyIdOffset, h.key_id);
 }
 
 // CRC of the record with the checksum field read as zero, without modifying the bytes.
@@ -60,8 +62,12 @@ Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t seq
 
 Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inline_schema,
                         std::uint64_t sequence, std::vector<std::uint8_t>& out) {
+  // With keys set, the record is authenticated: a longer header, with the key id and the MAC.
+  const bool authenticated = keys_set();
+  const std::uint16_t header_size =
+      authenticated ? kRecordAuthenticatedHeaderSize : kRecordHeaderSize;
   out.clear();
-  out.resize(kRecordHeaderSize);
+  out.resize(header_size);
   std::size_t schema_size = 0;
   if (inline_schema) {
     schema_size = blob.size;
@@ -73,15 +79,17 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   }
   Status status = append_payload(schema, out);
   if (!status.ok()) return status;
-  const std::size_t payload_size = out.size() - kRecordHeaderSize - schema_size;
+  const std::size_t payload_size = out.size() - header_size - schema_size;
   if (payload_size > UINT32_MAX) {
     return Status(Error::TooLarge, "payload of %zu bytes exceeds the format's 4 GiB limit",
                   payload_size);
   }
   RecordHeader header;
   header.format_version = kRecordFormatVersion;
-  header.header_size = kRecordHeaderSize;
-  header.flags = inline_schema ? kRecordSchemaInline : 0;
+  header.header_size = header_size;
+  header.flags = (inline_schema ? kRecordSchemaInline : 0) |
+                 (authenticated ? kRecordAuthenticated : 0);
+  header.key_id = authenticated ? signing_key_id() : 0;
   header.sequence = sequence;
   header.timestamp_ns = realtime_ns();
   header.schema_hash = blob.hash;
@@ -89,6 +97,7 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   header.payload_size = static_cast<std::uint32_t>(payload_size);
   header.program_id = blob.program_id;
   store_header(header, out.data());
+  if (authenticated) sign_record(out.data(), out.size());  // the CRC then covers the MAC too
   le::store32(out.data() + kRecordChecksumOffset, record_checksum(out.data(), out.size()));
   return Status();
 }
@@ -141,6 +150,13 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
   }
   if ((h.flags & ~kRecordKnownFlags) != 0) {
     return Status(Error::Corrupt, "unknown header flags %08x", h.flags);
+  }
+  if ((h.flags & kRecordAuthenticated) != 0) {
+    if (h.header_size < kRecordAuthenticatedHeaderSize) {
+      return Status(Error::Corrupt, "authenticated, but a %u-byte header has no room for a MAC",
+                    unsigned{h.header_size});
+    }
+    h.key_id = le::load32(data + kRecordKeyIdOffset);
   }
   const bool inline_schema = (h.flags & kRecordSchemaInline) != 0;
   if (inline_schema != (h.schema_size != 0)) {
@@ -211,6 +227,7 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size, con
     status = Status(Error::Corrupt, "%zu unexpected bytes after the %zu-byte record",
                     size - record.record_size, record.record_size);
   }
+  if (status.ok()) status = check_authentication(data, record);
   if (status.ok() && record.schema == nullptr) {
     status = Status(Error::SchemaUnknown,
                     "the record references schema %016llx by hash (a store slot) and carries "

@@ -1,6 +1,6 @@
-// Records (docs/format.md §1): a 56-byte header, an optional inline schema and a payload,
-// covered by one CRC-32C. Shared by single-file checkpoints, in-memory checkpoints and store
-// slots. Parsing never trusts a length: every size is checked against the bytes available.
+// Records (docs/format.md §1): a 56-byte header (96 with a MAC), an optional inline schema and a
+// payload, covered by one CRC-32C. Shared by single-file checkpoints, in-memory checkpoints and
+// store slots. Parsing never trusts a length: every size is checked against the bytes available.
 #ifndef SYMCR_SRC_RECORD_HPP
 #define SYMCR_SRC_RECORD_HPP
 
@@ -20,8 +20,13 @@ inline constexpr std::uint8_t kRecordMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'C', '
 inline constexpr std::uint16_t kRecordFormatVersion = 1;
 inline constexpr std::uint16_t kRecordHeaderSize = 56;
 inline constexpr std::uint32_t kRecordSchemaInline = 1u << 0;
-inline constexpr std::uint32_t kRecordKnownFlags = kRecordSchemaInline;
+inline constexpr std::uint32_t kRecordAuthenticated = 1u << 1;
+inline constexpr std::uint32_t kRecordKnownFlags = kRecordSchemaInline | kRecordAuthenticated;
 inline constexpr std::size_t kRecordChecksumOffset = 48;
+// An authenticated record's header goes on: u32 key_id, u32 reserved (0), the 32-byte MAC.
+inline constexpr std::uint16_t kRecordAuthenticatedHeaderSize = 96;
+inline constexpr std::size_t kRecordKeyIdOffset = 56;
+inline constexpr std::size_t kRecordMacOffset = 64;
 
 struct RecordHeader {
   std::uint16_t format_version = 0;
@@ -34,6 +39,7 @@ struct RecordHeader {
   std::uint32_t payload_size = 0;
   std::uint32_t checksum = 0;
   std::uint32_t program_id = 0;  // the writing program (program_id_of), 0 when anonymous
+  std::uint32_t key_id = 0;      // kRecordAuthenticated: the key its MAC was made with
 };
 
 // A record validated in place: views into the caller's bytes, valid while they are.

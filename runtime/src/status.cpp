@@ -45,6 +45,7 @@ const char* error_name(Error error) {
     case Error::Unsupported: return "Unsupported";
     case Error::NoValidSlot: return "NoValidSlot";
     case Error::TooLarge: return "TooLarge";
+    case Error::Unauthenticated: return "Unauthenticated";
   }
   return "Unknown";
 }

@@ -700,21 +700,24 @@ Report Store::restore_latest(const RestoreOptions& options) {
     last_rejection = report.status();
   }
 
-  unsigned empty = 0, corrupt = 0, unknown = 0, future = 0;
+  unsigned empty = 0, corrupt = 0, unknown = 0, future = 0, unauthenticated = 0;
   for (const Impl::Slot& slot : impl.slots) {
     empty += slot.state == StoreSlotState::Empty;
     corrupt += slot.state == StoreSlotState::Corrupt;
     unknown += slot.state == StoreSlotState::UnknownSchema;
     future += slot.state == StoreSlotState::FutureVersion;
+    unauthenticated += slot.state == StoreSlotState::Unauthenticated;
   }
   report.clear();
   detail::ReportAccess::set_status(
       report,
       Status(Error::NoValidSlot,
              "%s: no restorable checkpoint in %zu slots (%u empty, %u corrupt or torn, %u with an "
-             "unknown schema, %u from a future format, %u rejected by restore%s%s)",
-             impl.path.c_str(), impl.slots.size(), empty, corrupt, unknown, future, rejected,
-             rejected ? ": " : "", rejected ? last_rejection.message() : ""));
+             "unknown schema, %u from a future format, %u unauthenticated, %u rejected by "
+             "restore%s%s)",
+             impl.path.c_str(), impl.slots.size(), empty, corrupt, unknown, future,
+             unauthenticated, rejected, rejected ? ": " : "",
+             rejected ? last_rejection.message() : ""));
   return report;
 }
 

@@ -75,6 +75,7 @@ enum class StoreSlotState : std::uint8_t {
   Corrupt,        // torn or damaged record
   UnknownSchema,  // the record is intact but no valid area holds its schema
   FutureVersion,  // written by a newer record format
+  Unauthenticated,  // valid, but its MAC is missing or does not verify with the program's keys
 };
 const char* store_slot_state_name(StoreSlotState state);
 

@@ -1,6 +1,8 @@
 // The CLI fixture program: one build (v0, v1, ...) of a small program linking the runtime,
 // used to produce real checkpoints, stores and schema files, and damaged copies of them.
 //   fixture checkpoint <path> <seed>        single-file checkpoint
+//   fixture signed <path> <seed>            the same, authenticated with the key of
+//                                           id 7, whose bytes are "fixture-key"
 //   fixture store <path> <saves>            4-slot store after <saves> saves (seeds 1..saves)
 //   fixture store-more <path> <saves>       <saves> more saves into an existing store
 //   fixture schema <path>                   this build's schema file
@@ -102,6 +104,15 @@ int main(int argc, char** argv) {
   const char* command = argv[1];
   const char* path = argv[2];
   const long number = argc > 3 ? std::strtol(argv[3], nullptr, 10) : 0;
+  if (std::strcmp(command, "signed") == 0) {
+    static const std::uint8_t key[] = {'f', 'i', 'x', 't', 'u', 'r', 'e', '-', 'k', 'e', 'y'};
+    const symcr::CheckpointKey fixture_key{7, key, sizeof key};
+    const symcr::Status keyed = symcr::set_checkpoint_keys(&fixture_key, 1);
+    if (!keyed.ok()) return fail("keys", keyed);
+    cli_fixture::fill_state(static_cast<int>(number));
+    const symcr::Status status = symcr::checkpoint(cli_fixture::schema(), path);
+    return status.ok() ? 0 : fail("signed", status);
+  }
   if (std::strcmp(command, "checkpoint") == 0) {
     cli_fixture::fill_state(static_cast<int>(number));
     const symcr::Status status = symcr::checkpoint(cli_fixture::schema(), path);

@@ -224,3 +224,24 @@ if(SYMCR_SCRIPT)
   endforeach()
 endif()
 symcr_cli_test(version EXIT 0 ARGS --version EXPECT "symcr [0-9]+\\.[0-9]+\\.[0-9]+")
+
+# ---- authenticated checkpoints --------------------------------------------------------------
+symcr_cli_test(verify_signed_with_key EXIT 0
+               ARGS verify ${files}/signed.ckpt --key-file ${files}/fixture.key --key-id 7
+               EXPECT "authentication +ok +MAC verifies with key id 7")
+symcr_cli_test(verify_signed_without_key EXIT 0 ARGS verify ${files}/signed.ckpt
+               EXPECT "MAC with key id 7, not verified \\(no --key-file\\)")
+symcr_cli_test(verify_signed_other_key EXIT 1
+               ARGS verify ${files}/signed.ckpt --key-file ${files}/other.key --key-id 7
+               EXPECT "MAC does not verify with key id 7")
+symcr_cli_test(verify_signed_other_key_id EXIT 1
+               ARGS verify ${files}/signed.ckpt --key-file ${files}/fixture.key --key-id 3
+               EXPECT "key id 7, which this program does not hold")
+symcr_cli_test(verify_tampered_signed EXIT 1
+               ARGS verify ${files}/signed-tampered.ckpt --key-file ${files}/fixture.key --key-id 7
+               EXPECT "MAC does not verify")
+symcr_cli_test(verify_unsigned_with_key EXIT 1
+               ARGS verify ${files}/v0.ckpt --key-file ${files}/fixture.key --key-id 7
+               EXPECT "carries no MAC")
+symcr_cli_test(inspect_signed EXIT 0 ARGS inspect ${files}/signed.ckpt
+               EXPECT "authenticated +HMAC-SHA-256, key id 7")

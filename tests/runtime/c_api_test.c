@@ -110,6 +110,30 @@ static void errors(const char* directory) {
   CHECK(strstr(symcr_last_error(), "no program points") != NULL);
 }
 
+/* Authenticated checkpoints: verified with the key they name, refused with another. */
+static void authenticated(const char* directory) {
+  static const uint8_t key[] = {1, 2, 3, 4, 5, 6, 7, 8};
+  static const uint8_t other[] = {8, 7, 6, 5, 4, 3, 2, 1};
+  const symcr_checkpoint_key signing = {3, key, sizeof key};
+  const symcr_checkpoint_key wrong = {3, other, sizeof other};
+  char path[1024];
+  snprintf(path, sizeof path, "%s/authenticated.ckpt", directory);
+  CHECK(symcr_set_checkpoint_keys(&signing, 1) == SYMCR_OK);
+  fill(5);
+  CHECK(symcr_checkpoint(path) == SYMCR_OK);
+  scramble();
+  CHECK(symcr_restore(path, 0, NULL) == SYMCR_OK);
+  CHECK(holds(5));
+  CHECK(symcr_set_checkpoint_keys(&wrong, 1) == SYMCR_OK);
+  scramble();
+  CHECK(symcr_restore(path, 0, NULL) == SYMCR_ERROR_UNAUTHENTICATED);
+  CHECK(strstr(symcr_last_error(), "does not verify with key id 3") != NULL);
+  CHECK(c_tick_count == 0);
+  CHECK(strcmp(symcr_error_name(SYMCR_ERROR_UNAUTHENTICATED), "Unauthenticated") == 0);
+  CHECK(symcr_set_checkpoint_keys(NULL, 1) == SYMCR_ERROR_UNSUPPORTED);
+  CHECK(symcr_set_checkpoint_keys(NULL, 0) == SYMCR_OK);
+}
+
 static void store_round_trip(const char* directory) {
   char path[1024];
   symcr_store* store = NULL;
@@ -173,6 +197,7 @@ int main(int argc, char** argv) {
   mkdir(argv[1], 0700);
   file_round_trip(argv[1]);
   errors(argv[1]);
+  authenticated(argv[1]);
   store_round_trip(argv[1]);
   if (failures == 0) printf("symcr C API: all checks passed\n");
   return failures == 0 ? 0 : 1;

@@ -42,7 +42,8 @@ enum {
   SYMCR_ERROR_STRICT = 10,
   SYMCR_ERROR_UNSUPPORTED = 11,
   SYMCR_ERROR_NO_VALID_SLOT = 12,
-  SYMCR_ERROR_TOO_LARGE = 13
+  SYMCR_ERROR_TOO_LARGE = 13,
+  SYMCR_ERROR_UNAUTHENTICATED = 14
 };
 
 /* Restore decisions: the values of symcr::Decision. */
@@ -61,6 +62,16 @@ const char* symcr_last_error(void);
 
 /* The program's generated schema (weak: NULL when no generated code is linked in). */
 const symcr_schema* symcr_program_schema(void) __attribute__((weak));
+
+/* Authenticated checkpoints (symcr::set_checkpoint_keys): keys[0] signs every checkpoint this
+ * process writes; a restore refuses (SYMCR_ERROR_UNAUTHENTICATED) one without a MAC, with a key
+ * id not among `keys`, or whose MAC does not verify. The keys are copied; count 0 turns it off. */
+typedef struct symcr_checkpoint_key {
+  uint32_t id;
+  const uint8_t* bytes;
+  size_t size;
+} symcr_checkpoint_key;
+int symcr_set_checkpoint_keys(const symcr_checkpoint_key* keys, size_t count);
 
 /* Single-file checkpoints (atomic replace, mode 0600, symlinks never followed). */
 int symcr_checkpoint(const char* path);

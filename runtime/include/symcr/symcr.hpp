@@ -68,6 +68,7 @@ enum class Error : std::uint8_t {
   Unsupported,     // a state the runtime cannot save (e.g. overlapping heap objects)
   NoValidSlot,     // store: no slot holds a valid checkpoint
   TooLarge,        // checkpoint larger than a store slot or a format limit
+  Unauthenticated,  // keys are set and the checkpoint's MAC is missing or does not verify
 };
 
 const char* error_name(Error error);
@@ -162,6 +163,21 @@ enum class Durability : std::uint8_t {
 struct CheckpointOptions {
   Durability durability = Durability::PageCache;
 };
+
+// Authenticated checkpoints. After set_checkpoint_keys, every checkpoint this process writes
+// (single files, buffers, store slots) carries an HMAC-SHA-256 of its header, schema and payload,
+// made with keys[0] and naming that key's id; every restore refuses (Error::Unauthenticated) a
+// checkpoint without a MAC, with a key id not among `keys`, or whose MAC does not verify, and a
+// store passes over such a slot to an older one. The keys are copied, never written anywhere.
+// Several keys allow rotation: the new one first signs, the old ones still verify. A count of 0
+// turns authentication off. Against an attacker who can write the checkpoint file; the CRC
+// stays for accidental damage. Set the keys before checkpointing or restoring on other threads.
+struct CheckpointKey {
+  std::uint32_t id;
+  const std::uint8_t* bytes;
+  std::size_t size;
+};
+Status set_checkpoint_keys(const CheckpointKey* keys, std::size_t count);
 
 // ---------------------------------------------------------------------------------------------
 // Single-file checkpoints: written atomically (exclusive temp file + rename), mode 0600,

@@ -1,0 +1,192 @@
+// Authenticated checkpoints: with keys set, checkpoints carry an HMAC-SHA-256 naming their key,
+// and a restore refuses one that lacks a MAC, names a key the program does not hold, or was
+// changed after it was written (even with its CRC made good again), leaving the state untouched.
+// A store passes over such a slot to an older authentic one. Keys rotate by id.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "crc32c.hpp"
+#include "file_test_schemas.hpp"
+#include "file_test_util.hpp"
+#include "little_endian.hpp"
+#include "record.hpp"
+#include "symcr/symcr.hpp"
+
+namespace {
+
+using namespace file_tests;
+namespace le = symcr::detail::le;
+
+const std::vector<std::uint8_t> kOldKey(32, 0x11);
+const std::vector<std::uint8_t> kNewKey = {'r', 'o', 't', 'a', 't', 'e', 'd'};
+
+class AuthenticationTest : public ::testing::Test {
+ protected:
+  void TearDown() override { EXPECT_TRUE(symcr::set_checkpoint_keys(nullptr, 0).ok()); }
+
+  static void use_keys(std::vector<symcr::CheckpointKey> keys) {
+    const symcr::Status status = symcr::set_checkpoint_keys(keys.data(), keys.size());
+    ASSERT_TRUE(status.ok()) << status.message();
+  }
+  static symcr::CheckpointKey old_key() { return {1, kOldKey.data(), kOldKey.size()}; }
+  static symcr::CheckpointKey new_key() { return {2, kNewKey.data(), kNewKey.size()}; }
+
+  // A checkpoint of seed `seed`, written with the keys in force.
+  static std::vector<std::uint8_t> checkpoint(int seed) {
+    fill_a(seed);
+    std::vector<std::uint8_t> bytes;
+    const symcr::Status status = symcr::checkpoint_to_buffer(schema_a, bytes);
+    EXPECT_TRUE(status.ok()) << status.message();
+    return bytes;
+  }
+  static symcr::Report restore(const std::vector<std::uint8_t>& bytes) {
+    return symcr::restore_from_buffer(schema_a, bytes.data(), bytes.size());
+  }
+  // The CRC made good again after a change: what an attacker who can write the file does.
+  static void reseal(std::vector<std::uint8_t>& bytes) {
+    le::store32(bytes.data() + symcr::detail::kRecordChecksumOffset, 0);
+    le::store32(bytes.data() + symcr::detail::kRecordChecksumOffset,
+                symcr::detail::crc32c(bytes.data(), bytes.size()));
+  }
+  static void expect_refused(const symcr::Report& report, const char* why) {
+    EXPECT_EQ(report.status().error(), symcr::Error::Unauthenticated);
+    EXPECT_NE(std::string(report.status().message()).find(why), std::string::npos)
+        << report.status().message();
+    EXPECT_EQ(copter_a.ticks, -1);  // scrambled, and still so: nothing was written
+    EXPECT_EQ(telemetry_a.frames, 0xFFFFFFFFu);
+  }
+};
+
+TEST_F(AuthenticationTest, AnAuthenticatedCheckpointNamesItsKeyAndRestores) {
+  use_keys({old_key()});
+  const std::vector<std::uint8_t> bytes = checkpoint(3);
+  EXPECT_EQ(le::load16(bytes.data() + 10), 96u);  // header with key id and MAC
+  EXPECT_EQ(le::load32(bytes.data() + 12) & 2u, 2u);
+  EXPECT_EQ(le::load32(bytes.data() + 56), 1u);
+  scramble_a();
+  const symcr::Report report = restore(bytes);
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(copter_a.ticks, 1003);
+}
+
+TEST_F(AuthenticationTest, AChangeWithTheCrcMadeGoodIsRefused) {
+  use_keys({old_key()});
+  std::vector<std::uint8_t> bytes = checkpoint(3);
+  const std::size_t payload = 96 + le::load32(bytes.data() + 40);
+  bytes[payload] ^= 0x40;  // copter.ticks
+  reseal(bytes);
+  scramble_a();
+  expect_refused(restore(bytes), "MAC does not verify with key id 1");
+}
+
+TEST_F(AuthenticationTest, AnotherKeyIdTheProgramDoesNotHoldIsRefused) {
+  use_keys({new_key()});
+  const std::vector<std::uint8_t> bytes = checkpoint(3);
+  use_keys({old_key()});
+  scramble_a();
+  expect_refused(restore(bytes), "key id 2, which this program does not hold");
+}
+
+TEST_F(AuthenticationTest, ACheckpointWithoutAMacIsRefusedWhenKeysAreSet) {
+  const std::vector<std::uint8_t> bytes = checkpoint(3);  // no keys: no MAC
+  EXPECT_EQ(le::load16(bytes.data() + 10), 56u);
+  use_keys({old_key()});
+  scramble_a();
+  expect_refused(restore(bytes), "carries no MAC");
+}
+
+TEST_F(AuthenticationTest, TheSameIdWithAnotherKeyDoesNotVerify) {
+  use_keys({old_key()});
+  const std::vector<std::uint8_t> bytes = checkpoint(3);
+  const std::vector<std::uint8_t> guessed(32, 0x12);
+  use_keys({{1, guessed.data(), guessed.size()}});
+  scramble_a();
+  expect_refused(restore(bytes), "MAC does not verify");
+}
+
+TEST_F(AuthenticationTest, RotatedKeysStillVerifyTheOldKeysCheckpoints) {
+  use_keys({old_key()});
+  const std::vector<std::uint8_t> before = checkpoint(3);
+  use_keys({new_key(), old_key()});  // the new key signs, the old one still verifies
+  const std::vector<std::uint8_t> after = checkpoint(4);
+  EXPECT_EQ(le::load32(after.data() + 56), 2u);
+  scramble_a();
+  symcr::Report report = restore(before);
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(copter_a.ticks, 1003);
+  report = restore(after);
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(copter_a.ticks, 1004);
+}
+
+TEST_F(AuthenticationTest, WithoutKeysAnAuthenticatedCheckpointRestoresUnverified) {
+  use_keys({old_key()});
+  const std::vector<std::uint8_t> bytes = checkpoint(5);
+  ASSERT_TRUE(symcr::set_checkpoint_keys(nullptr, 0).ok());
+  scramble_a();
+  const symcr::Report report = restore(bytes);
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(copter_a.ticks, 1005);
+}
+
+TEST_F(AuthenticationTest, KeysMustBeNonEmptyAndTheirIdsDistinct) {
+  const std::vector<std::uint8_t> empty;
+  const symcr::CheckpointKey no_bytes{7, empty.data(), 0};
+  EXPECT_FALSE(symcr::set_checkpoint_keys(&no_bytes, 1).ok());
+  const symcr::CheckpointKey twice[] = {old_key(), {1, kNewKey.data(), kNewKey.size()}};
+  const symcr::Status status = symcr::set_checkpoint_keys(twice, 2);
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(std::string(status.message()).find("two checkpoint keys have id 1"), std::string::npos);
+}
+
+TEST_F(AuthenticationTest, AStorePassesOverATamperedSlotToTheNewestAuthenticOne) {
+  TempDir dir;
+  const std::string path = dir.file("auth.store");
+  use_keys({old_key()});
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, symcr::StoreOptions{}, store).ok());
+    for (int seed = 1; seed <= 3; ++seed) {
+      fill_a(seed);
+      ASSERT_TRUE(store.save().ok());
+    }
+  }
+  // The newest slot (sequence 3) changed and resealed, as by someone who can write the file.
+  std::vector<std::uint8_t> bytes = read_file(path);
+  const std::uint64_t slots = le::load64(bytes.data() + 24);
+  const std::uint32_t slot_size = le::load32(bytes.data() + 16);
+  bool tampered = false;
+  for (std::uint32_t i = 0; i < 4 && !tampered; ++i) {
+    std::uint8_t* slot = bytes.data() + slots + std::uint64_t{i} * slot_size;
+    if (std::memcmp(slot, "SYMCRCKP", 8) != 0 || le::load64(slot + 16) != 3) continue;
+    const std::size_t size = 96 + le::load32(slot + 40) + le::load32(slot + 44);
+    slot[96] ^= 0x40;
+    le::store32(slot + 48, 0);
+    le::store32(slot + 48, symcr::detail::crc32c(slot, size));
+    tampered = true;
+  }
+  ASSERT_TRUE(tampered);
+  write_file(path, bytes);
+
+  symcr::Store store;
+  ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, symcr::StoreOptions{}, store).ok());
+  scramble_a();
+  symcr::Report report = store.restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 2u);
+  EXPECT_EQ(copter_a.ticks, 1002);
+
+  // Under another key nothing in the store is authentic: nothing restored, the state untouched.
+  const std::vector<std::uint8_t> other(16, 0x99);
+  use_keys({{1, other.data(), other.size()}});
+  scramble_a();
+  report = store.restore_latest();
+  EXPECT_EQ(report.status().error(), symcr::Error::NoValidSlot);
+  EXPECT_NE(std::string(report.status().message()).find("3 unauthenticated"), std::string::npos)
+      << report.status().message();
+  EXPECT_EQ(copter_a.ticks, -1);
+}
+
+}  // namespace
