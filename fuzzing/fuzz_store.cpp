@@ -9,7 +9,9 @@
 //   sections, each u16 length + bytes, in order:
 //     0: the store header (bytes 0..35 of the file, zero-padded to 4096); bytes 36..39, when
 //        present and not zero, a length to truncate the file to
-//        (a damaged header, when not fixed, takes the recovery path that scans the slots)
+//        (a damaged header, when not fixed, takes the recovery path that scans the slots);
+//        byte 40, when present, bit 0: the reader authenticates checkpoints (fuzz_worlds.hpp's
+//        key), and with bit 4 of the control byte slot records are signed again
 //     1: schema area 0 (at 4096): u64 hash, u32 size, u32 crc32c, schema bytes
 //     2: schema area 1 (at 4096 + schema_area_size)
 //     3...: slot i's bytes (a record), at slots_offset + i * slot_size, cut at slot_size
@@ -93,6 +95,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     at += take;
   }
   if (sections.empty()) return 0;
+  fuzz::use_fuzz_key(sections[0].size() > 40 && (sections[0][40] & 1) != 0);
 
   std::vector<std::uint8_t> header(4096, 0);
   for (std::size_t i = 0; i < sections[0].size() && i < 36; ++i) header[i] = sections[0][i];

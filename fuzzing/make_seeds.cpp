@@ -235,7 +235,7 @@ std::vector<std::uint8_t> read_file(const std::string& path) {
 // With `cut_in_slot`, the header section also asks the fuzzer to truncate the file 100 bytes
 // into that slot.
 std::vector<std::uint8_t> compact_store(const std::string& path, std::uint8_t control,
-                                        int cut_in_slot = -1) {
+                                        int cut_in_slot = -1, bool authenticated = false) {
   const std::vector<std::uint8_t> file = read_file(path);
   std::vector<std::uint8_t> out{control};
   const std::uint32_t slot_count = le::load32(file.data() + 12);
@@ -243,11 +243,12 @@ std::vector<std::uint8_t> compact_store(const std::string& path, std::uint8_t co
   const std::uint32_t area_size = le::load32(file.data() + 20);
   const std::uint64_t slots_offset = le::load64(file.data() + 24);
   std::vector<std::uint8_t> header(file.begin(), file.begin() + 36);
+  if (cut_in_slot >= 0 || authenticated) header.resize(authenticated ? 41 : 40);
   if (cut_in_slot >= 0) {
-    header.resize(40);
     le::store32(header.data() + 36, static_cast<std::uint32_t>(
                                         slots_offset + std::uint64_t(cut_in_slot) * slot_size + 100));
   }
+  if (authenticated) header[40] = 1;
   put_section(out, header.data(), header.size());
   for (int a = 0; a < 2; ++a) {
     const std::uint8_t* area = file.data() + 4096 + std::uint64_t(a) * area_size;
@@ -397,6 +398,34 @@ int main(int argc, char** argv) {
                  compact_store(path, static_cast<std::uint8_t>(partner(world) | 0x10)));
       ++written;
     }
+    ::unlink(path.c_str());
+  }
+  // An authenticated store: every slot signed with the fuzzers' key, read with it.
+  for (unsigned world : {kA0, kG}) {
+    const std::string path = std::string(tmpl) + "/store";
+    ::unlink(path.c_str());
+    symcr::StoreOptions options;
+    options.slots = 3;
+    options.slot_size = 1024;
+    use_fuzz_key(true);
+    symcr::Status status;
+    {
+      symcr::Store store;
+      status = symcr::Store::open(path.c_str(), world_schema(world), options, store);
+      for (int i = 0; status.ok() && i < 4; ++i) {
+        fill_world(world);
+        status = store.save();
+        reset_world(world);
+      }
+    }
+    use_fuzz_key(false);
+    if (!status.ok()) {
+      std::fprintf(stderr, "authenticated store %s: %s\n", world_name(world), status.message());
+      return 1;
+    }
+    write_seed(stores, std::string(world_name(world)) + "-authenticated-store",
+               compact_store(path, static_cast<std::uint8_t>(world | 0x10), -1, true));
+    ++written;
     ::unlink(path.c_str());
   }
   ::rmdir(tmpl);
