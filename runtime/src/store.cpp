@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "authentication.hpp"
 #include "crc32c.hpp"
 #include "engine.hpp"
 #include "file_io.hpp"
@@ -94,6 +95,8 @@ struct Store::Impl {
   // The scan open() made is what the file holds: only this Store writes a store it locked, and
   // it has not saved since. The first restore_latest() then reads no slot again.
   bool scan_current = false;
+  // The checkpoint keys the slots were classified with: new keys mean a new scan.
+  std::uint64_t scanned_keys = 0;
 
   int area_for_hash(std::uint64_t hash) const {
     for (int i = 0; i < 2; ++i) {
@@ -139,6 +142,7 @@ struct Store::Impl {
 
   Status scan_slots(int fd) {
     newest_scanned = -1;
+    scanned_keys = detail::keys_generation();
     for (std::uint32_t i = 0; i < slots.size(); ++i) {
       Status status = read_slot(fd, i, slots[i]);
       if (!status.ok()) return status;
@@ -655,7 +659,10 @@ Report Store::restore_latest(const RestoreOptions& options) {
   Impl& impl = *impl_;
   // A store opened read-only may have been written by its owner since the scan.
   Status status;
-  if (!impl.scan_current || !impl.read_only_reason.empty()) status = impl.scan_slots(fd_);
+  if (!impl.scan_current || !impl.read_only_reason.empty() ||
+      impl.scanned_keys != detail::keys_generation()) {
+    status = impl.scan_slots(fd_);
+  }
   impl.scan_current = false;
   if (!status.ok()) {
     detail::ReportAccess::set_status(report, status);

@@ -189,4 +189,23 @@ TEST_F(AuthenticationTest, AStorePassesOverATamperedSlotToTheNewestAuthenticOne)
   EXPECT_EQ(copter_a.ticks, -1);
 }
 
+// Keys set after a store was opened apply to its next restore: its slots are checked again.
+TEST_F(AuthenticationTest, KeysSetAfterOpeningAStoreApplyToItsFirstRestore) {
+  TempDir dir;
+  const std::string path = dir.file("late-keys.store");
+  symcr::Store store;
+  ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, symcr::StoreOptions{}, store).ok());
+  fill_a(4);
+  ASSERT_TRUE(store.save().ok());  // without keys: no MAC
+  store.close();
+  ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, symcr::StoreOptions{}, store).ok());
+  use_keys({old_key()});
+  scramble_a();
+  const symcr::Report report = store.restore_latest();
+  EXPECT_EQ(report.status().error(), symcr::Error::NoValidSlot);
+  EXPECT_NE(std::string(report.status().message()).find("1 unauthenticated"), std::string::npos)
+      << report.status().message();
+  EXPECT_EQ(copter_a.ticks, -1);
+}
+
 }  // namespace
