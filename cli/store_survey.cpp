@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "authentication.hpp"
 #include "header_fields.hpp"
 #include "values.hpp"
 
@@ -18,24 +19,29 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
     s.index = i;
     s.state = detail::store_slot_state_name(slot.state);
     s.has_header = slot.state == detail::StoreSlotState::Valid ||
-                   slot.state == detail::StoreSlotState::UnknownSchema ||
-                   slot.state == detail::StoreSlotState::Unauthenticated;
+                   slot.state == detail::StoreSlotState::UnknownSchema;
     s.header = slot.header;
     s.area = slot.area;
     s.damaged = slot.state == detail::StoreSlotState::Corrupt ||
-                slot.state == detail::StoreSlotState::FutureVersion ||
-                slot.state == detail::StoreSlotState::Unauthenticated;
+                slot.state == detail::StoreSlotState::FutureVersion;
     if (slot.state != detail::StoreSlotState::Valid) {
       s.problem = slot.problem.message();
     } else {
       detail::RecordView view;
       int area = -1;
       Status status = store.read_record(i, bytes, view, area);
-      if (status.ok()) {
+      // With --key-file every slot's MAC is checked, as a restore would check the one it takes.
+      const Status authentic =
+          status.ok() ? detail::check_authentication(bytes.data(), view) : Status();
+      if (status.ok() && authentic.ok()) {
         status = check_payload(store.area(area).schema(), view.payload, view.payload_size);
       }
-      s.restorable = status.ok();
-      if (!s.restorable) {
+      s.restorable = status.ok() && authentic.ok();
+      if (!authentic.ok()) {
+        s.state = detail::store_slot_state_name(detail::StoreSlotState::Unauthenticated);
+        s.problem = authentic.message();
+        s.damaged = true;
+      } else if (!status.ok()) {
         s.state = "corrupt-payload";
         s.problem = status.message();
         s.damaged = true;

@@ -73,10 +73,12 @@ bool matches_flight_state() {
   const std::vector<std::uint8_t>& expected = flight_checkpoint();
   std::vector<std::uint8_t> now;
   if (!symcr::checkpoint_to_buffer(program_schema(), now).ok()) return false;
-  const std::size_t skip_expected = 56 + schema_size(expected), skip_now = 56 + schema_size(now);
-  return now.size() - skip_now == expected.size() - skip_expected &&
-         std::memcmp(now.data() + skip_now, expected.data() + skip_expected,
-                     now.size() - skip_now) == 0;
+  // The payloads end the records (whatever their headers: an authenticated one is longer).
+  const std::size_t payload = payload_size(now);
+  return payload == payload_size(expected) && payload <= now.size() &&
+         payload <= expected.size() &&
+         std::memcmp(now.data() + now.size() - payload,
+                     expected.data() + expected.size() - payload, payload) == 0;
 }
 
 std::size_t store_record_bytes() {

@@ -91,8 +91,28 @@ void BM_RestoreFromBuffer(benchmark::State& state) {
 BENCHMARK(BM_RestoreFromBuffer);
 
 // ---- symcr: the checkpoint store --------------------------------------------------------------
-void BM_StoreSave(benchmark::State& state, symcr::Durability durability) {
-  reset_to_flight_state();
+// Authenticated checkpoints for the rows that ask for them: every save signs its record and
+// every restore verifies it (HMAC-SHA-256 with a 32-byte key).
+class BenchmarkKeys {
+ public:
+  explicit BenchmarkKeys(bool authenticated) : on_(authenticated) {
+    static const std::uint8_t key[32] = {0x5e, 0xc2, 0x37, 0x91};
+    const symcr::CheckpointKey bench_key{1, key, sizeof key};
+    if (on_) (void)symcr::set_checkpoint_keys(&bench_key, 1);
+  }
+  ~BenchmarkKeys() {
+    if (on_) (void)symcr::set_checkpoint_keys(nullptr, 0);
+  }
+  BenchmarkKeys(const BenchmarkKeys&) = delete;
+  BenchmarkKeys& operator=(const BenchmarkKeys&) = delete;
+
+ private:
+  bool on_;
+};
+
+void BM_StoreSave(benchmark::State& state, symcr::Durability durability, bool authenticated) {
+  reset_to_flight_state();  // before the keys: its checkpoint is not authenticated
+  const BenchmarkKeys keys(authenticated);
   const std::string path = scratch_path("store");
   ::unlink(path.c_str());
   symcr::StoreOptions options;
@@ -112,11 +132,13 @@ void BM_StoreSave(benchmark::State& state, symcr::Durability durability) {
   store.close();
   ::unlink(path.c_str());
 }
-BENCHMARK_CAPTURE(BM_StoreSave, page_cache, symcr::Durability::PageCache);
-BENCHMARK_CAPTURE(BM_StoreSave, fdatasync, symcr::Durability::Fdatasync)->Iterations(200);
+BENCHMARK_CAPTURE(BM_StoreSave, page_cache, symcr::Durability::PageCache, false);
+BENCHMARK_CAPTURE(BM_StoreSave, fdatasync, symcr::Durability::Fdatasync, false)->Iterations(200);
+BENCHMARK_CAPTURE(BM_StoreSave, page_cache_authenticated, symcr::Durability::PageCache, true);
 
-void BM_StoreRestoreLatest(benchmark::State& state) {
-  reset_to_flight_state();
+void store_restore_latest(benchmark::State& state, bool authenticated) {
+  reset_to_flight_state();  // before the keys: its checkpoint is not authenticated
+  const BenchmarkKeys keys(authenticated);
   const std::string path = scratch_path("store-restore");
   ::unlink(path.c_str());
   symcr::StoreOptions options;
@@ -141,7 +163,12 @@ void BM_StoreRestoreLatest(benchmark::State& state) {
   store.close();
   ::unlink(path.c_str());
 }
+void BM_StoreRestoreLatest(benchmark::State& state) { store_restore_latest(state, false); }
 BENCHMARK(BM_StoreRestoreLatest);
+void BM_StoreRestoreLatestAuthenticated(benchmark::State& state) {
+  store_restore_latest(state, true);
+}
+BENCHMARK(BM_StoreRestoreLatestAuthenticated);
 
 // ---- symcr: single-file checkpoints (exclusive temp file + rename) ---------------------------
 void BM_CheckpointFile(benchmark::State& state) {

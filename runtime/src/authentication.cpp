@@ -22,7 +22,6 @@ using KeyRing = std::vector<OwnedKey>;
 // (never freed): a save or restore on another thread may still be reading it, and keys are set
 // a few times in a process's life, not per checkpoint.
 std::atomic<const KeyRing*> current_keys{nullptr};
-std::atomic<std::uint64_t> generation{0};
 
 std::mutex& keys_mutex() {
   static std::mutex mutex;
@@ -51,8 +50,6 @@ void record_mac(const std::uint8_t* record, std::size_t size, const OwnedKey& ke
 }  // namespace
 
 bool keys_set() { return current_keys.load(std::memory_order_acquire) != nullptr; }
-
-std::uint64_t keys_generation() { return generation.load(std::memory_order_acquire); }
 
 std::uint32_t signing_key_id() { return current_keys.load(std::memory_order_acquire)->front().id; }
 
@@ -118,7 +115,6 @@ Status set_checkpoint_keys(const CheckpointKey* keys, std::size_t count) {
   std::lock_guard<std::mutex> lock(detail::keys_mutex());
   const detail::KeyRing* previous = detail::current_keys.exchange(ring, std::memory_order_acq_rel);
   if (previous != nullptr) detail::retired_rings().push_back(previous);
-  detail::generation.fetch_add(1, std::memory_order_acq_rel);
   return Status();
 }
 

@@ -17,8 +17,6 @@ namespace symcr::detail {
 bool keys_set();
 // The id of the key records are signed with (keys_set() only).
 std::uint32_t signing_key_id();
-// Changes whenever the keys do: what was checked under other keys must be checked again.
-std::uint64_t keys_generation();
 
 // Writes the MAC of the complete record at `record` (its header laid out for authentication,
 // the checksum not yet written) into the header.

@@ -95,8 +95,6 @@ struct Store::Impl {
   // The scan open() made is what the file holds: only this Store writes a store it locked, and
   // it has not saved since. The first restore_latest() then reads no slot again.
   bool scan_current = false;
-  // The checkpoint keys the slots were classified with: new keys mean a new scan.
-  std::uint64_t scanned_keys = 0;
 
   int area_for_hash(std::uint64_t hash) const {
     for (int i = 0; i < 2; ++i) {
@@ -142,7 +140,6 @@ struct Store::Impl {
 
   Status scan_slots(int fd) {
     newest_scanned = -1;
-    scanned_keys = detail::keys_generation();
     for (std::uint32_t i = 0; i < slots.size(); ++i) {
       Status status = read_slot(fd, i, slots[i]);
       if (!status.ok()) return status;
@@ -659,10 +656,7 @@ Report Store::restore_latest(const RestoreOptions& options) {
   Impl& impl = *impl_;
   // A store opened read-only may have been written by its owner since the scan.
   Status status;
-  if (!impl.scan_current || !impl.read_only_reason.empty() ||
-      impl.scanned_keys != detail::keys_generation()) {
-    status = impl.scan_slots(fd_);
-  }
+  if (!impl.scan_current || !impl.read_only_reason.empty()) status = impl.scan_slots(fd_);
   impl.scan_current = false;
   if (!status.ok()) {
     detail::ReportAccess::set_status(report, status);
@@ -686,6 +680,7 @@ Report Store::restore_latest(const RestoreOptions& options) {
   Status last_rejection;
   for (const std::uint32_t i : impl.newest_first) {
     const detail::RecordView* record = &impl.newest_view;
+    const std::uint8_t* bytes = impl.newest_bytes.data();
     int area_index = impl.slots[i].area;
     if (static_cast<int>(i) != impl.newest_scanned) {  // a fallback: read it again
       Impl::Slot reread;
@@ -696,7 +691,13 @@ Report Store::restore_latest(const RestoreOptions& options) {
       }
       if (reread.state != StoreSlotState::Valid) continue;
       record = &impl.view;
+      bytes = impl.slot_bytes.data();
       area_index = reread.area;
+    }
+    // Only the slot about to be restored needs its MAC checked (with the keys set now).
+    if (!detail::check_authentication(bytes, *record).ok()) {
+      impl.slots[i].state = StoreSlotState::Unauthenticated;
+      continue;
     }
     const StoreSchemaArea& area = impl.areas[area_index];
     report =

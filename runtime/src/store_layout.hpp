@@ -75,7 +75,9 @@ enum class StoreSlotState : std::uint8_t {
   Corrupt,        // torn or damaged record
   UnknownSchema,  // the record is intact but no valid area holds its schema
   FutureVersion,  // written by a newer record format
-  Unauthenticated,  // valid, but its MAC is missing or does not verify with the program's keys
+  // Valid, but its MAC is missing or does not verify with the program's keys: found when the
+  // slot is about to be restored (the scan checks no MAC; only the restored slot's is needed).
+  Unauthenticated,
 };
 const char* store_slot_state_name(StoreSlotState state);
 
