@@ -135,11 +135,14 @@ void BM_StoreSave(benchmark::State& state, symcr::Durability durability) {
 BENCHMARK_CAPTURE(BM_StoreSave, page_cache, symcr::Durability::PageCache);
 BENCHMARK_CAPTURE(BM_StoreSave, fdatasync, symcr::Durability::Fdatasync)->Iterations(200);
 
-void BM_StoreRestoreLatest(benchmark::State& state) {
+// With `fallback_depth`, each iteration is a start's restore and its confirm(): the crash-loop
+// fallback's two journal writes (a restore that is already recorded writes nothing).
+void store_restore_latest(benchmark::State& state, std::uint32_t fallback_depth) {
   const std::string path = scratch_path("store-restore");
   ::unlink(path.c_str());
   symcr::StoreOptions options;
   options.slot_size = 4096;
+  options.fallback_depth = fallback_depth;
   symcr::Store store;
   symcr::Status status = symcr::Store::open(path.c_str(), schema, options, store);
   if (!status.ok()) return fail(state, "open", status.message());
@@ -154,12 +157,26 @@ void BM_StoreRestoreLatest(benchmark::State& state) {
       fail(state, "restore_latest", report.status().message());
       break;
     }
+    if (fallback_depth != 0) {
+      status = store.confirm();
+      if (!status.ok()) {
+        fail(state, "confirm", status.message());
+        break;
+      }
+    }
   }
   state.counters["bytes"] = store_record_bytes();
   store.close();
   ::unlink(path.c_str());
 }
+
+void BM_StoreRestoreLatest(benchmark::State& state) { store_restore_latest(state, 0); }
 BENCHMARK(BM_StoreRestoreLatest);
+
+void BM_StoreRestoreLatestAndConfirmWithFallback(benchmark::State& state) {
+  store_restore_latest(state, 2);
+}
+BENCHMARK(BM_StoreRestoreLatestAndConfirmWithFallback);
 
 void BM_CheckpointFile(benchmark::State& state) {
   const std::string path = scratch_path("single.ckpt");

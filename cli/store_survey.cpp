@@ -37,6 +37,13 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
         status = check_payload(store.area(area).schema(), view.payload, view.payload_size);
       }
       s.restorable = status.ok() && authentic.ok();
+      const detail::RestoreJournal& journal = store.journal();
+      if (s.restorable && journal.excludes(slot.header.sequence)) {
+        s.passed_over = true;
+        s.problem = journal.gave_up_on(slot.header.sequence)
+                        ? "crash-loop fallback: given up on"
+                        : "crash-loop fallback: suspect (a restore never confirmed)";
+      }
       if (!authentic.ok()) {
         s.state = detail::store_slot_state_name(detail::StoreSlotState::Unauthenticated);
         s.problem = authentic.message();
@@ -50,7 +57,7 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
     survey.slots.push_back(std::move(s));
   }
   for (const std::uint32_t i : store.valid_slots_newest_first()) {
-    if (survey.slots[i].restorable) {
+    if (survey.slots[i].restorable && !survey.slots[i].passed_over) {
       survey.restore_latest_slot = i;
       break;
     }
@@ -60,6 +67,22 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
 
 namespace {
 
+std::string journal_text(const detail::RestoreJournal& journal) {
+  if (journal.empty()) return "empty";
+  std::string text = journal.unconfirmed != 0
+                         ? "restore of #" + std::to_string(journal.unconfirmed) + " unconfirmed"
+                         : "nothing unconfirmed";
+  if (journal.suspect_high != 0) {
+    text += "; suspect #" + std::to_string(journal.suspect_low) + " to #" +
+            std::to_string(journal.suspect_high) + " (" + std::to_string(journal.fallbacks) +
+            (journal.fallbacks == 1 ? " fallback)" : " fallbacks)");
+  }
+  if (journal.given_up_through != 0) {
+    text += "; given up through #" + std::to_string(journal.given_up_through);
+  }
+  return text;
+}
+
 std::string area_text(const detail::StoreSchemaArea& area) {
   if (!area.valid) return "empty or invalid";
   return "hash " + hex64(area.hash) + ", " + std::to_string(area.size) + " bytes, " +
@@ -68,6 +91,7 @@ std::string area_text(const detail::StoreSchemaArea& area) {
 }
 
 Colour state_colour(const SlotSurvey& slot) {
+  if (slot.passed_over) return Colour::Dim;
   if (slot.restorable) return Colour::Green;
   if (slot.damaged) return Colour::Red;
   return Colour::Dim;
@@ -87,6 +111,7 @@ void print_store_overview(const std::string& path, const detail::StoreReader& st
   for (int i = 0; i < 2; ++i) {
     header.add({{"schema_area " + std::to_string(i)}, {area_text(store.area(i))}});
   }
+  header.add({{"restore_journal"}, {journal_text(store.journal())}});
   std::string restore_text = "none (no restorable slot)";
   if (survey.restore_latest_slot) {
     const SlotSurvey& s = survey.slots[*survey.restore_latest_slot];
@@ -150,6 +175,17 @@ void write_store_json(JsonWriter& json, const detail::StoreReader& store,
   json.array_end();
   json.key_end();
 
+  const detail::RestoreJournal& journal = store.journal();
+  json.key_begin("restore_journal");
+  json.object_begin();
+  json.field("unconfirmed", journal.unconfirmed);
+  json.field("suspect_low", journal.suspect_low);
+  json.field("suspect_high", journal.suspect_high);
+  json.field("given_up_through", journal.given_up_through);
+  json.field("fallbacks", journal.fallbacks);
+  json.object_end();
+  json.key_end();
+
   json.key_begin("slots");
   json.array_begin();
   for (const SlotSurvey& s : survey.slots) {
@@ -157,6 +193,7 @@ void write_store_json(JsonWriter& json, const detail::StoreReader& store,
     json.field("slot", s.index);
     json.field("state", s.state);
     json.field("restorable", s.restorable);
+    json.field("passed_over", s.passed_over);
     if (s.has_header) {
       json.field("sequence", s.header.sequence);
       json.field("time", utc_iso8601(s.header.timestamp_ns));

@@ -24,6 +24,9 @@ struct SlotSurvey {
   int area = -1;
   bool restorable = false;
   bool damaged = false;         // written, and failed a check (not merely stale or empty)
+  // Restorable, but the crash-loop fallback's journal excludes it: restore_latest() passes
+  // over it (`problem` says why).
+  bool passed_over = false;
 };
 
 struct StoreSurvey {
@@ -36,7 +39,8 @@ StoreSurvey survey_store(const detail::StoreReader& store);
 // Geometry, schema areas and the slot table, `selected` marked.
 void print_store_overview(const std::string& path, const detail::StoreReader& store,
                           const StoreSurvey& survey, std::optional<std::uint32_t> selected);
-// Inside an open JSON object: "geometry", "schema_areas", "slots", "restore_latest_slot".
+// Inside an open JSON object: "geometry", "schema_areas", "restore_journal", "slots",
+// "restore_latest_slot".
 void write_store_json(JsonWriter& json, const detail::StoreReader& store,
                       const StoreSurvey& survey);
 

@@ -11,14 +11,19 @@
 //        present and not zero, a length to truncate the file to
 //        (a damaged header, when not fixed, takes the recovery path that scans the slots);
 //        byte 40, when present, bit 0: the reader authenticates checkpoints (fuzz_worlds.hpp's
-//        key), and with bit 4 of the control byte slot records are signed again
+//        key), and with bit 4 of the control byte slot records are signed again; byte 41,
+//        when present, the crash-loop fallback depth of the writable open (bits 0-2; 0: off);
+//        bytes 64..111, when present, the restore journal at file offset 64 (its CRC fixed
+//        with bit 4 of the control byte)
 //     1: schema area 0 (at 4096): u64 hash, u32 size, u32 crc32c, schema bytes
 //     2: schema area 1 (at 4096 + schema_area_size)
 //     3...: slot i's bytes (a record), at slots_offset + i * slot_size, cut at slot_size
 // The file gets the size its header implies (sparse), capped at 4 MiB. Checked: a read-only
 // open and restore write nothing; whatever a writable open decides (recover the header, keep a
 // foreign geometry, grow a truncated file back), it restores what the read-only one restores
-// and, when that was a checkpoint, changes no byte of the file past its header.
+// and, when that was a checkpoint, changes no byte of the file past its header but the
+// journal; with a fallback depth, the journal then names the checkpoint restored as
+// unconfirmed (and none when nothing was restored).
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -32,6 +37,7 @@
 #include <vector>
 
 #include "fuzz_worlds.hpp"
+#include "restore_journal.hpp"
 #include "store_reader.hpp"
 
 namespace {
@@ -100,6 +106,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<std::uint8_t> header(4096, 0);
   for (std::size_t i = 0; i < sections[0].size() && i < 36; ++i) header[i] = sections[0][i];
   if (fix) le::store32(header.data() + 32, symcr::detail::crc32c(header.data(), 32));
+  constexpr std::size_t kJournalAt = symcr::detail::kRestoreJournalOffset;
+  constexpr std::size_t kJournalEnd = kJournalAt + symcr::detail::kRestoreJournalSize;
+  const std::uint32_t fallback_depth = sections[0].size() > 41 ? sections[0][41] & 7u : 0;
+  for (std::size_t i = kJournalAt; i < sections[0].size() && i < kJournalEnd; ++i) {
+    header[i] = sections[0][i];
+  }
+  if (fix) {
+    le::store32(header.data() + kJournalEnd - 4,
+                symcr::detail::crc32c(header.data() + kJournalAt, kJournalEnd - kJournalAt - 4));
+  }
   const std::uint32_t slot_count = le::load32(header.data() + 12);
   const std::uint32_t slot_size = le::load32(header.data() + 16);
   const std::uint32_t area_size = le::load32(header.data() + 20);
@@ -164,6 +180,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   symcr::StoreOptions options;
   options.slots = (control & 0x80) ? slot_count + 1 : slot_count;
   options.slot_size = slot_size;
+  options.fallback_depth = fallback_depth;
   const bool options_valid = symcr::detail::check_store_dimensions(options.slots, slot_size).ok();
   {
     symcr::Store store;
@@ -172,13 +189,26 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const symcr::Report report = store.restore_latest(restore_options);
       restored = report.ok();
       (void)report.to_json();
+      if (fallback_depth != 0 && !store.read_only()) {
+        const std::vector<std::uint8_t> now = read_whole(path);
+        const symcr::detail::RestoreJournal journal =
+            now.size() >= kJournalEnd
+                ? symcr::detail::decode_restore_journal(now.data() + kJournalAt,
+                                                        kJournalEnd - kJournalAt)
+                : symcr::detail::RestoreJournal();
+        if (journal.unconfirmed != (restored ? report.sequence() : 0)) {
+          fail("the journal does not name the restore as unconfirmed", world, report);
+        }
+      }
       if (!report.ok() && fuzz::world_snapshot(world) != before) {
         fail("a refused restore modified the live state", world, report);
       }
       if (!fuzz::world_rules_hold(world)) fail("a restored value breaks the reader's rules", world, report);
     }
   }
-  if (restorable && options_valid && !restored) {
+  // With a fallback depth the writable open may count an unconfirmed restore as a crash, which
+  // a read-only one (recording nothing) does not.
+  if (restorable && options_valid && fallback_depth == 0 && !restored) {
     std::fprintf(stderr, "symcr fuzz: open() lost a checkpoint that open_readonly() restores\n");
     std::abort();
   }
@@ -189,10 +219,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::fprintf(stderr, "symcr fuzz: opening shrank a store holding checkpoints\n");
     std::abort();
   }
-  if (restorable &&
-      !std::equal(file_before.begin() + std::min<std::size_t>(36, file_before.size()),
-                  file_before.end(),
-                  file_after.begin() + std::min<std::size_t>(36, file_before.size()))) {
+  auto same_range = [&](std::size_t from, std::size_t to) {
+    from = std::min(from, file_before.size());
+    to = std::min(to, file_before.size());
+    return std::equal(file_before.begin() + from, file_before.begin() + to,
+                      file_after.begin() + from);
+  };
+  if (restorable && !(same_range(36, kJournalAt) &&
+                      (fallback_depth != 0 || same_range(kJournalAt, kJournalEnd)) &&
+                      same_range(kJournalEnd, file_before.size()))) {
     std::fprintf(stderr, "symcr fuzz: opening or restoring changed the store's bytes\n");
     std::abort();
   }

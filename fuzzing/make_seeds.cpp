@@ -233,9 +233,10 @@ std::vector<std::uint8_t> read_file(const std::string& path) {
 
 // The store file at `path` in the fuzzer's compact form (fuzz_store.cpp).
 // With `cut_in_slot`, the header section also asks the fuzzer to truncate the file 100 bytes
-// into that slot.
+// into that slot; with a `fallback_depth`, it carries the restore journal and that depth.
 std::vector<std::uint8_t> compact_store(const std::string& path, std::uint8_t control,
-                                        int cut_in_slot = -1, bool authenticated = false) {
+                                        int cut_in_slot = -1, bool authenticated = false,
+                                        std::uint8_t fallback_depth = 0) {
   const std::vector<std::uint8_t> file = read_file(path);
   std::vector<std::uint8_t> out{control};
   const std::uint32_t slot_count = le::load32(file.data() + 12);
@@ -244,6 +245,11 @@ std::vector<std::uint8_t> compact_store(const std::string& path, std::uint8_t co
   const std::uint64_t slots_offset = le::load64(file.data() + 24);
   std::vector<std::uint8_t> header(file.begin(), file.begin() + 36);
   if (cut_in_slot >= 0 || authenticated) header.resize(authenticated ? 41 : 40);
+  if (fallback_depth != 0) {
+    header.resize(112);
+    std::copy(file.begin() + 64, file.begin() + 112, header.begin() + 64);
+    header[41] = fallback_depth;
+  }
   if (cut_in_slot >= 0) {
     le::store32(header.data() + 36, static_cast<std::uint32_t>(
                                         slots_offset + std::uint64_t(cut_in_slot) * slot_size + 100));
@@ -381,6 +387,25 @@ int main(int argc, char** argv) {
     write_seed(stores, std::string(world_name(world)) + "-truncated",
                compact_store(path, static_cast<std::uint8_t>(world | 0x10), /*cut_in_slot=*/1));
     written += 3;
+    {
+      // The crash-loop fallback: a restore recorded and never confirmed (the journal), which the
+      // fuzzer's writable open then finds.
+      symcr::StoreOptions with_fallback = options;
+      with_fallback.fallback_depth = 2;
+      symcr::Store store;
+      symcr::Status status =
+          symcr::Store::open(path.c_str(), world_schema(world), with_fallback, store);
+      if (status.ok()) status = store.restore_latest().status();
+      reset_world(world);
+      if (!status.ok()) {
+        std::fprintf(stderr, "store %s (fallback): %s\n", world_name(world), status.message());
+        return 1;
+      }
+      store.close();
+      write_seed(stores, std::string(world_name(world)) + "-unconfirmed-restore",
+                 compact_store(path, static_cast<std::uint8_t>(world | 0x10), -1, false, 2));
+      ++written;
+    }
     if (partner(world) != world) {
       symcr::Store store;
       symcr::Status status = symcr::Store::open(path.c_str(), world_schema(partner(world)), options, store);

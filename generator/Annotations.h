@@ -31,7 +31,8 @@ enum class DirectiveKind {
   Range,      ///< range(Type::field, lo, hi): as SYMCR_RANGE(lo, hi)
   CheckpointAt, ///< checkpoint_at(function, entry|exit [, every N])
   RestoreAt,    ///< restore_at(function, entry|exit [, on_failure=continue|stop] ...)
-  Store,        ///< store(path [, slots=N] [, slot_size=N] [, durability=...])
+  Store,        ///< store(path [, slots=N] [, slot_size=N] [, durability=...]
+                ///< [, fallback_depth=N [, confirm_after=N]])
 };
 
 struct DirectiveArgument {

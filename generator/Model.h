@@ -219,6 +219,8 @@ struct PointStoreModel {
   unsigned Slots = 0;    ///< 0: the runtime's default
   unsigned SlotSize = 0; ///< 0: the runtime's default
   bool Fdatasync = false;
+  unsigned FallbackDepth = 0; ///< crash-loop fallback; 0: off
+  unsigned ConfirmAfter = 0;  ///< checkpoints saved after a restore confirm it
   std::string Spelling;
   Location Where; ///< invalid when no store directive was given
 };

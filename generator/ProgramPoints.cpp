@@ -24,6 +24,10 @@ bool isPointDirective(const Directive &D) {
 
 namespace {
 
+/// Checkpoints saved after a restore that confirm it, when the store directive
+/// asks for a fallback_depth and says nothing else.
+constexpr unsigned kDefaultConfirmAfter = 10;
+
 std::string locationKey(const Location &L) {
   return L.File + ":" + std::to_string(L.Line) + ":" + std::to_string(L.Column);
 }
@@ -94,18 +98,35 @@ void ProgramPoints::addDirective(const Directive &D) {
         Store.Fdatasync = Option.second == "fdatasync";
         continue;
       }
+      if (Option.first == "fallback_depth" &&
+          parseCount(Option.second, Store.FallbackDepth))
+        continue;
+      if (Option.first == "confirm_after" &&
+          parseCount(Option.second, Store.ConfirmAfter))
+        continue;
       Diags.error(A.Where,
                   "unknown store option '" + A.Text +
-                      "' (expected slots=N, slot_size=BYTES or "
-                      "durability=page_cache|fdatasync)");
+                      "' (expected slots=N, slot_size=BYTES, "
+                      "durability=page_cache|fdatasync, fallback_depth=N or "
+                      "confirm_after=N)");
       return;
     }
+    if (Store.ConfirmAfter != 0 && Store.FallbackDepth == 0) {
+      Diags.error(D.Where, "confirm_after=N confirms the restores of the "
+                           "crash-loop fallback: give fallback_depth=N too");
+      return;
+    }
+    // A restore proves itself over this many checkpoints unless told otherwise.
+    if (Store.FallbackDepth != 0 && Store.ConfirmAfter == 0)
+      Store.ConfirmAfter = kDefaultConfirmAfter;
     PointStoreModel &Current = Program.PointStore;
     if (!Current.Where.valid()) {
       Current = Store;
     } else if (Current.Path != Store.Path || Current.Slots != Store.Slots ||
                Current.SlotSize != Store.SlotSize ||
-               Current.Fdatasync != Store.Fdatasync) {
+               Current.Fdatasync != Store.Fdatasync ||
+               Current.FallbackDepth != Store.FallbackDepth ||
+               Current.ConfirmAfter != Store.ConfirmAfter) {
       Diags.error(D.Where, "a second, different store directive: every point of "
                            "a program uses one store, given at " +
                                locationKey(Current.Where));
@@ -291,7 +312,8 @@ std::string emitPointStoreDefinition(const ProgramModel &Program) {
      << "extern \"C\" const struct symcr_point_store "
         "symcr_program_point_store = {"
      << quoted(Store.Path) << ", " << Store.Slots << "u, " << Store.SlotSize
-     << "u, " << (Store.Fdatasync ? 1 : 0) << "};\n";
+     << "u, " << (Store.Fdatasync ? 1 : 0) << ", " << Store.FallbackDepth
+     << "u, " << Store.ConfirmAfter << "u};\n";
   return OS.str();
 }
 
@@ -365,7 +387,12 @@ std::string renderPointsReport(const ProgramModel &Program) {
      << " slots of "
      << (Store.SlotSize ? std::to_string(Store.SlotSize) + " bytes"
                         : std::string("the default size"))
-     << (Store.Fdatasync ? ", fdatasync" : "") << "):\n";
+     << (Store.Fdatasync ? ", fdatasync" : "");
+  if (Store.FallbackDepth != 0)
+    OS << ", crash-loop fallback depth " << Store.FallbackDepth
+       << ", a restore confirmed after " << Store.ConfirmAfter
+       << (Store.ConfirmAfter == 1 ? " checkpoint" : " checkpoints");
+  OS << "):\n";
   for (const PointModel &P : Program.Points) {
     OS << "  " << P.Spelling << " (" << locationKey(P.Where) << ")\n";
     for (const std::string &At : P.InsertedAt)

@@ -116,6 +116,10 @@ size_t symcr_report_count(const symcr_report* report, int decision) {
   return report->report.count(static_cast<symcr::Decision>(decision));
 }
 
+size_t symcr_report_skipped(const symcr_report* report) {
+  return report != nullptr ? report->report.skipped().size() : 0;
+}
+
 const char* symcr_report_text(symcr_report* report) {
   if (report == nullptr) return "";
   report->text = report->report.to_text();
@@ -136,6 +140,7 @@ void symcr_store_options_init(symcr_store_options* options) {
   options->slots = defaults.slots;
   options->slot_size = defaults.slot_size;
   options->fdatasync = defaults.durability == symcr::Durability::Fdatasync;
+  options->fallback_depth = defaults.fallback_depth;
 }
 
 int symcr_store_open(const char* path, const symcr_schema* schema,
@@ -150,6 +155,7 @@ int symcr_store_open(const char* path, const symcr_schema* schema,
     store_options.slot_size = options->slot_size;
     store_options.durability =
         options->fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
+    store_options.fallback_depth = options->fallback_depth;
   }
   auto* handle = new (std::nothrow) symcr_store;
   if (handle == nullptr) return record_c_error(symcr::Status(symcr::Error::Io, "out of memory"));
@@ -177,6 +183,11 @@ int symcr_store_restore_latest(symcr_store* store, int flags, symcr_report** rep
     result = store->store.restore_latest(restore_options(flags));
   }
   return hand_over(std::move(result), report);
+}
+
+int symcr_store_confirm(symcr_store* store) {
+  if (store == nullptr) return record_c_error(symcr::Status(symcr::Error::Io, "no store"));
+  return record_c_error(store->store.confirm());
 }
 
 uint64_t symcr_store_last_sequence(const symcr_store* store) {

@@ -32,6 +32,9 @@ struct PointState {
   std::string last_save_error;  // logged once until a save succeeds again
   symcr_restore_hook hook = nullptr;
   void* hook_context = nullptr;
+  // Crash-loop fallback: checkpoints still to save before the restore is confirmed (0: none
+  // pending).
+  unsigned saves_until_confirmed = 0;
 };
 
 // Never destroyed: a point reached while static objects are destroyed still finds it.
@@ -77,6 +80,7 @@ symcr::Status open_store(PointState& s, const symcr_point_store& where) {
   if (where.slot_size != 0) options.slot_size = where.slot_size;
   options.durability =
       where.fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
+  options.fallback_depth = where.fallback_depth;
   symcr::Status status = symcr::Store::open(path, options, s.store);
   if (status.ok()) s.path = path;
   return status;
@@ -87,6 +91,13 @@ void checkpoint(PointState& s, symcr_point& point) {
   if (point.passes % every != 0) return;
   symcr::Status status = open_store(s, *point.store);
   if (status.ok()) status = s.store.save();
+  if (status.ok() && s.saves_until_confirmed != 0 && --s.saves_until_confirmed == 0) {
+    status = s.store.confirm();
+    if (!status.ok()) {
+      log_line({point.inserted_at, ": cannot confirm the restore: ", status.message()});
+      return;
+    }
+  }
   if (status.ok()) {
     s.last_save_error.clear();
     return;
@@ -124,12 +135,22 @@ bool restore(PointState& s, symcr_point& point, symcr_report& report) {
     options.strict = (point.restore_flags & SYMCR_RESTORE_STRICT) != 0;
     options.accept_other_program = (point.restore_flags & SYMCR_RESTORE_ACCEPT_OTHER_PROGRAM) != 0;
     report.report = s.store.restore_latest(options);
+    if (report.report.ok()) s.saves_until_confirmed = point.store->confirm_after;
   } else {
     symcr::detail::ReportAccess::set_status(report.report, opened);
   }
   // A success is the hook's to report when there is one (the runtime's line would be a second,
   // written inside the restore point's time); a failure is always logged.
   const bool hooked = s.hook != nullptr || symcr_on_restore_point != nullptr;
+  // Checkpoints passed over on the way to the one restored (a crash-loop fallback, a torn
+  // slot) are always said; a failure's report lists them itself.
+  for (const symcr::SkippedCheckpoint& skipped : report.report.skipped()) {
+    if (!report.report.ok()) break;
+    const std::string slot = std::to_string(skipped.slot);
+    const std::string sequence = std::to_string(skipped.sequence);
+    log_line({point.inserted_at, ": passed over slot ", slot.c_str(), " (checkpoint #",
+              sequence.c_str(), "): ", skipped.reason.c_str()});
+  }
   if (report.report.ok() && !hooked) {
     const std::string sequence = std::to_string(report.report.sequence());
     log_line({point.inserted_at, ": restored checkpoint #", sequence.c_str(), " of ", path});
@@ -163,6 +184,14 @@ int symcr_points_open_store(void) {
   PointState& s = state();
   std::lock_guard<std::mutex> guard(s.lock);
   return symcr::detail::record_c_error(open_store(s, symcr_program_point_store));
+}
+
+int symcr_points_confirm(void) {
+  PointState& s = state();
+  std::lock_guard<std::mutex> guard(s.lock);
+  s.saves_until_confirmed = 0;
+  if (!s.store.is_open()) return SYMCR_OK;
+  return symcr::detail::record_c_error(s.store.confirm());
 }
 
 void symcr_point_reached(struct symcr_point* point) {

@@ -149,6 +149,14 @@ __attribute__((cold)) std::string Report::to_text() const {
     out += entry.detail;
     out += '\n';
   }
+  for (const SkippedCheckpoint& skipped : skipped_) {
+    char slot[64];
+    std::snprintf(slot, sizeof slot, "skipped slot %" PRIu32 " (sequence %" PRIu64 "): ",
+                  skipped.slot, skipped.sequence);
+    out += slot;
+    out += skipped.reason;
+    out += '\n';
+  }
   char summary[64];
   std::snprintf(summary, sizeof summary, "sequence %" PRIu64 ", ", sequence_);
   out += summary;
@@ -188,6 +196,21 @@ __attribute__((cold)) std::string Report::to_json() const {
     append_json_string(out, entry.detail);
     out += ",\"lossy\":";
     out += entry.lossy ? "true" : "false";
+    out += '}';
+  }
+  out += "],\"skipped\":[";
+  first = true;
+  for (const SkippedCheckpoint& skipped : skipped_) {
+    if (!first) out += ',';
+    first = false;
+    std::snprintf(number, sizeof number, "%" PRIu32, skipped.slot);
+    out += "{\"slot\":";
+    out += number;
+    std::snprintf(number, sizeof number, "%" PRIu64, skipped.sequence);
+    out += ",\"sequence\":";
+    out += number;
+    out += ",\"reason\":";
+    append_json_string(out, skipped.reason);
     out += '}';
   }
   out += "]}";

@@ -29,6 +29,7 @@ struct ReportAccess {
                   bool lossy) {
     report.add(std::move(path), decision, std::move(detail), lossy);
   }
+  static std::vector<SkippedCheckpoint>& skipped(Report& report) { return report.skipped_; }
   // Starts an empty report with the entries of `source` (shared, not copied); a later add()
   // copies them first.
   static void set_source(Report& report, std::shared_ptr<const ReportSource> source) {

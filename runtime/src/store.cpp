@@ -25,6 +25,7 @@
 #include "program_schema.hpp"
 #include "record.hpp"
 #include "report_access.hpp"
+#include "restore_journal.hpp"
 #include "store_layout.hpp"
 #include "symcr/symcr.hpp"
 
@@ -95,6 +96,70 @@ struct Store::Impl {
   // The scan open() made is what the file holds: only this Store writes a store it locked, and
   // it has not saved since. The first restore_latest() then reads no slot again.
   bool scan_current = false;
+
+  // Crash-loop fallback (restore_journal.hpp): the journal as this Store knows it, its bytes as
+  // last read or written, and whether the restore it names unconfirmed is this Store's own (a
+  // second restore_latest() in one run is no sign of a crash).
+  std::uint32_t fallback_depth = 0;
+  detail::RestoreJournal journal;
+  std::uint8_t journal_bytes[detail::kRestoreJournalSize] = {};
+  bool unconfirmed_is_ours = false;
+
+  // Records `journal` in the header page, unless that is what the file already holds.
+  Status write_journal(int fd, Durability durability) {
+    std::uint8_t bytes[detail::kRestoreJournalSize];
+    detail::encode_restore_journal(journal, bytes);
+    if (std::memcmp(bytes, journal_bytes, sizeof bytes) == 0) return Status();
+    Status status = detail::pwrite_all(fd, bytes, sizeof bytes,
+                                       static_cast<off_t>(detail::kRestoreJournalOffset),
+                                       path.c_str());
+    if (status.ok() && durability == Durability::Fdatasync && ::fdatasync(fd) != 0) {
+      status = detail::io_error("cannot fdatasync", path.c_str(), errno);
+    }
+    if (status.ok()) std::memcpy(journal_bytes, bytes, sizeof bytes);
+    return status;
+  }
+
+  // The slots no restore could use, for the report (a slot found unauthenticated is listed
+  // where the restore came to it).
+  void list_unrestorable_slots(std::vector<SkippedCheckpoint>& skipped) const {
+    for (std::uint32_t i = 0; i < slots.size(); ++i) {
+      const char* reason = nullptr;
+      switch (slots[i].state) {
+        case StoreSlotState::Corrupt:
+          reason = "torn or corrupt: its record does not validate";
+          break;
+        case StoreSlotState::UnknownSchema:
+          reason = "its schema is in neither schema area (a later build overwrote it)";
+          break;
+        case StoreSlotState::FutureVersion:
+          reason = "written by a newer record format";
+          break;
+        default:
+          break;
+      }
+      if (reason != nullptr) skipped.push_back(SkippedCheckpoint{i, 0, reason});
+    }
+  }
+
+  void adopt_journal(const std::uint8_t* bytes, std::size_t size) {
+    journal = detail::decode_restore_journal(bytes, size);
+    if (size >= sizeof journal_bytes) {
+      std::memcpy(journal_bytes, bytes, sizeof journal_bytes);
+    } else {
+      std::memset(journal_bytes, 0, sizeof journal_bytes);
+    }
+  }
+
+  Status read_journal(int fd) {
+    std::uint8_t bytes[detail::kRestoreJournalSize] = {};
+    std::size_t got = 0;
+    Status status = detail::pread_full(fd, bytes, sizeof bytes,
+                                       static_cast<off_t>(detail::kRestoreJournalOffset), got,
+                                       path.c_str());
+    if (status.ok()) adopt_journal(bytes, got);
+    return status;
+  }
 
   int area_for_hash(std::uint64_t hash) const {
     for (int i = 0; i < 2; ++i) {
@@ -236,6 +301,7 @@ struct Store::Impl {
   // Adopts `g` for a file just initialised with nothing in it.
   void become_empty(const StoreGeometry& g) {
     geometry = g;
+    adopt_journal(nullptr, 0);
     for (StoreSchemaArea& area : areas) area = StoreSchemaArea();
     own_area = -1;
     lay_out_slots();
@@ -298,6 +364,9 @@ struct Store::Impl {
     }
     for (std::uint32_t slot = 0; next < kept.size(); ++next, ++slot) {
       copies.push_back({target.slot_offset(slot), kept[next].data(), kept[next].size()});
+    }
+    if (!journal.empty()) {  // the crash-loop fallback's memory moves with the checkpoints
+      copies.push_back({detail::kRestoreJournalOffset, journal_bytes, sizeof journal_bytes});
     }
 
     char temp[PATH_MAX];
@@ -523,10 +592,16 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
   const StoreGeometry wanted =
       detail::store_geometry_for(options.slots, options.slot_size, blob.size);
 
-  std::uint8_t header[detail::kStoreHeaderSize] = {};
+  // One read for the header and the restore journal after it.
+  std::uint8_t header[detail::kRestoreJournalOffset + detail::kRestoreJournalSize] = {};
   std::size_t got = 0;
   Status status = detail::pread_full(fd, header, sizeof header, 0, got, path);
   if (!status.ok()) return creation_failed(status);
+  impl.fallback_depth = can_write ? options.fallback_depth : 0;
+  if (got > detail::kRestoreJournalOffset) {
+    impl.adopt_journal(header + detail::kRestoreJournalOffset, got - detail::kRestoreJournalOffset);
+  }
+  got = std::min(got, detail::kStoreHeaderSize);
   Status header_status;
   if (!created) header_status = detail::decode_store_header(header, got, path, impl.geometry);
   bool needs_initialising = created;
@@ -647,6 +722,38 @@ Status Store::save() {
   return Status();
 }
 
+namespace {
+
+// Why restore_latest() passes over a valid slot that the journal excludes.
+const char* exclusion_reason(const detail::RestoreJournal& journal, std::uint64_t sequence) {
+  if (journal.gave_up_on(sequence)) {
+    return "crash-loop fallback: given up on, its restores never confirmed down to the "
+           "fallback depth or the oldest checkpoint (the program started afresh since)";
+  }
+  if (sequence == journal.suspect_low) {
+    return "crash-loop fallback: the last start restored it and stopped before "
+           "Store::confirm() (a crash, or a stop too early)";
+  }
+  return "crash-loop fallback: restored, or saved after a restore, that was never confirmed";
+}
+
+void skip(std::vector<SkippedCheckpoint>& skipped, std::uint32_t slot, std::uint64_t sequence,
+          std::string reason) {
+  skipped.push_back(SkippedCheckpoint{slot, sequence, std::move(reason)});
+}
+
+}  // namespace
+
+Status Store::confirm() {
+  if (!is_open()) return Status(Error::Io, "the store is not open");
+  Impl& impl = *impl_;
+  if (!impl.unconfirmed_is_ours) return Status();  // nothing this Store restored waits for it
+  impl.journal.confirm();
+  Status status = impl.write_journal(fd_, options_.durability);
+  if (status.ok()) impl.unconfirmed_is_ours = false;
+  return status;
+}
+
 Report Store::restore_latest(const RestoreOptions& options) {
   Report report;
   if (!is_open()) {
@@ -657,28 +764,50 @@ Report Store::restore_latest(const RestoreOptions& options) {
   // A store opened read-only may have been written by its owner since the scan.
   Status status;
   if (!impl.scan_current || !impl.read_only_reason.empty()) status = impl.scan_slots(fd_);
+  if (status.ok() && !impl.read_only_reason.empty()) status = impl.read_journal(fd_);
   impl.scan_current = false;
   if (!status.ok()) {
     detail::ReportAccess::set_status(report, status);
     return report;
   }
   impl.newest_first.clear();
+  std::uint64_t newest_valid = 0;
   for (std::uint32_t i = 0; i < impl.slots.size(); ++i) {
-    if (impl.slots[i].state == StoreSlotState::Valid) impl.newest_first.push_back(i);
-    if (impl.slots[i].state == StoreSlotState::Valid && impl.slots[i].sequence > last_sequence_) {
-      last_sequence_ = impl.slots[i].sequence;
-    }
+    if (impl.slots[i].state != StoreSlotState::Valid) continue;
+    impl.newest_first.push_back(i);
+    newest_valid = std::max(newest_valid, impl.slots[i].sequence);
   }
+  last_sequence_ = std::max(last_sequence_, newest_valid);
   std::sort(impl.newest_first.begin(), impl.newest_first.end(),
             [&impl](std::uint32_t a, std::uint32_t b) {
               return impl.slots[a].sequence > impl.slots[b].sequence;
             });
 
+  // Crash-loop fallback: a restore recorded by an earlier start and never confirmed makes its
+  // checkpoint and the newer ones suspect; past the depth, the fallback gives up on them all.
+  // A store that cannot be written still honours what its journal says, but records nothing.
+  detail::RestoreJournal& journal = impl.journal;
+  const bool recording = impl.fallback_depth > 0 && impl.read_only_reason.empty();
+  bool crashed = false;  // this start found an unconfirmed restore
+  std::uint32_t crash_depth = 0;
+  if (recording && journal.unconfirmed != 0 && !impl.unconfirmed_is_ours) {
+    crashed = true;
+    crash_depth = journal.fallbacks + 1;
+    if (!journal.record_crash(last_sequence_, impl.fallback_depth)) journal.give_up(last_sequence_);
+  }
+
+  std::vector<SkippedCheckpoint> skipped;
   // Valid slots whose payload the engine still rejected as corrupt (after its CRC passed: a
   // writer bug or a collision), and the last such message.
-  unsigned rejected = 0;
+  unsigned rejected = 0, suspect = 0;
   Status last_rejection;
   for (const std::uint32_t i : impl.newest_first) {
+    const std::uint64_t sequence = impl.slots[i].sequence;
+    if (journal.excludes(sequence)) {
+      ++suspect;
+      skip(skipped, i, sequence, exclusion_reason(journal, sequence));
+      continue;
+    }
     const detail::RecordView* record = &impl.newest_view;
     const std::uint8_t* bytes = impl.newest_bytes.data();
     int area_index = impl.slots[i].area;
@@ -689,23 +818,48 @@ Report Store::restore_latest(const RestoreOptions& options) {
         detail::ReportAccess::set_status(report, status);
         return report;
       }
-      if (reread.state != StoreSlotState::Valid) continue;
+      if (reread.state != StoreSlotState::Valid) {
+        skip(skipped, i, sequence, "changed since it was validated, and no longer validates");
+        continue;
+      }
       record = &impl.view;
       bytes = impl.slot_bytes.data();
       area_index = reread.area;
     }
     // Only the slot about to be restored needs its MAC checked (with the keys set now).
-    if (!detail::check_authentication(bytes, *record).ok()) {
+    Status authenticated = detail::check_authentication(bytes, *record);
+    if (!authenticated.ok()) {
       impl.slots[i].state = StoreSlotState::Unauthenticated;
+      skip(skipped, i, sequence, authenticated.message());
       continue;
+    }
+    if (recording) {
+      // Recorded before the state is touched: a crash during or after the restore is seen by
+      // the next start. A restore that cannot be recorded is not applied.
+      journal.unconfirmed = sequence;
+      status = impl.write_journal(fd_, options_.durability);
+      if (!status.ok()) {
+        detail::ReportAccess::set_status(report, status);
+        return report;
+      }
+      impl.unconfirmed_is_ours = true;
     }
     const StoreSchemaArea& area = impl.areas[area_index];
     report =
         detail::restore_record(*record, area.schema(), area.hash, *schema_, options, area.parsed);
     const Error error = report.status().error();
-    if (error != Error::Corrupt && error != Error::Truncated) return report;
+    if (error != Error::Corrupt && error != Error::Truncated) {
+      if (!report.ok() && recording) {
+        journal.unconfirmed = 0;  // nothing was applied: nothing to confirm
+        (void)impl.write_journal(fd_, options_.durability);
+      }
+      impl.list_unrestorable_slots(skipped);
+      detail::ReportAccess::skipped(report) = std::move(skipped);
+      return report;
+    }
     ++rejected;
     last_rejection = report.status();
+    skip(skipped, i, sequence, std::string("rejected by the restore: ") + last_rejection.message());
   }
 
   unsigned empty = 0, corrupt = 0, unknown = 0, future = 0, unauthenticated = 0;
@@ -717,15 +871,41 @@ Report Store::restore_latest(const RestoreOptions& options) {
     unauthenticated += slot.state == StoreSlotState::Unauthenticated;
   }
   report.clear();
-  detail::ReportAccess::set_status(
-      report,
-      Status(Error::NoValidSlot,
-             "%s: no restorable checkpoint in %zu slots (%u empty, %u corrupt or torn, %u with an "
-             "unknown schema, %u from a future format, %u unauthenticated, %u rejected by "
-             "restore%s%s)",
-             impl.path.c_str(), impl.slots.size(), empty, corrupt, unknown, future,
-             unauthenticated, rejected, rejected ? ": " : "",
-             rejected ? last_rejection.message() : ""));
+  if (recording) {
+    // Nothing restored: the state stays initial and nothing waits for confirmation. After a
+    // crash, what is left is given up on, so the checkpoints saved from the initial state are
+    // the next ones restored (with the full depth again).
+    if (crashed) journal.give_up(last_sequence_);
+    journal.unconfirmed = 0;
+    impl.unconfirmed_is_ours = false;
+    status = impl.write_journal(fd_, options_.durability);
+    if (!status.ok()) {
+      detail::ReportAccess::set_status(report, status);
+      return report;
+    }
+  }
+  if (crashed) {
+    detail::ReportAccess::set_status(
+        report, Status(Error::NoValidSlot,
+                       "%s: the crash-loop fallback %s after %u unconfirmed restores in a row "
+                       "(depth %u): nothing restored, the state stays initial",
+                       impl.path.c_str(),
+                       crash_depth > impl.fallback_depth ? "gave up"
+                                                         : "found no older checkpoint to restore",
+                       crash_depth, impl.fallback_depth));
+  } else {
+    detail::ReportAccess::set_status(
+        report,
+        Status(Error::NoValidSlot,
+               "%s: no restorable checkpoint in %zu slots (%u empty, %u corrupt or torn, %u with "
+               "an unknown schema, %u from a future format, %u unauthenticated, %u passed over "
+               "by the crash-loop fallback, %u rejected by restore%s%s)",
+               impl.path.c_str(), impl.slots.size(), empty, corrupt, unknown, future,
+               unauthenticated, suspect, rejected, rejected ? ": " : "",
+               rejected ? last_rejection.message() : ""));
+  }
+  impl.list_unrestorable_slots(skipped);
+  detail::ReportAccess::skipped(report) = std::move(skipped);
   return report;
 }
 

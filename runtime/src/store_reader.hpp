@@ -12,6 +12,7 @@
 
 #include "engine.hpp"
 #include "record.hpp"
+#include "restore_journal.hpp"
 #include "store_layout.hpp"
 #include "symcr/symcr.hpp"
 
@@ -38,6 +39,8 @@ class StoreReader {
   const StoreGeometry& geometry() const { return geometry_; }
   const StoreSchemaArea& area(int index) const { return areas_[index]; }
   const std::vector<StoreSlot>& slots() const { return slots_; }
+  // The crash-loop fallback's journal (empty when the store has none).
+  const RestoreJournal& journal() const { return journal_; }
 
   // Valid slots, highest sequence first: the order restore_latest() tries them in.
   std::vector<std::uint32_t> valid_slots_newest_first() const;
@@ -56,6 +59,7 @@ class StoreReader {
   StoreGeometry geometry_;
   StoreSchemaArea areas_[2];
   std::vector<StoreSlot> slots_;
+  RestoreJournal journal_;
 };
 
 }  // namespace symcr::detail

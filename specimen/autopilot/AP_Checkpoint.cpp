@@ -103,6 +103,7 @@ bool AP_Checkpoint::init(Method method, const char* path, std::uint32_t every_lo
 
 void AP_Checkpoint::save_task() {
   AP_Checkpoint& self = checkpointing;
+  if (self._loops_until_confirmed != 0 && --self._loops_until_confirmed == 0) self.symcr_confirm();
   if (self._method == Method::None || !copter.armed()) return;
   if (++self._loops % self._every_loops != 0) return;
   self.save();
@@ -248,7 +249,9 @@ bool AP_Checkpoint::points_restored() {
 
 #if SPECIMEN_WITH_SYMCR
 bool AP_Checkpoint::symcr_open() {
-  const symcr::Status opened = symcr::Store::open(_path, symcr::StoreOptions{}, g_store);
+  symcr::StoreOptions options;
+  options.fallback_depth = _fallback_depth;
+  const symcr::Status opened = symcr::Store::open(_path, options, g_store);
   if (!opened.ok()) {
     std::fprintf(stderr, "symcr: %s\n", opened.message());
     return false;
@@ -273,7 +276,19 @@ bool AP_Checkpoint::symcr_restore() {
     return false;
   }
   _sequence = static_cast<std::uint32_t>(g_restore_report.sequence());
+  if (_fallback_depth != 0) _loops_until_confirmed = _confirm_after;
   return true;
+}
+
+// The restored state flew `_confirm_after` loops: the store may trust it again.
+void AP_Checkpoint::symcr_confirm() {
+  const symcr::Status confirmed = g_store.confirm();
+  if (confirmed.ok()) {
+    std::fprintf(stderr, "symcr: the restored state flew %u loops: its restore is confirmed\n",
+                 static_cast<unsigned>(_confirm_after));
+  } else {
+    std::fprintf(stderr, "symcr: cannot confirm the restore: %s\n", confirmed.message());
+  }
 }
 #else
 bool AP_Checkpoint::symcr_open() {
@@ -282,4 +297,5 @@ bool AP_Checkpoint::symcr_open() {
 }
 bool AP_Checkpoint::symcr_save() { return false; }
 bool AP_Checkpoint::symcr_restore() { return false; }
+void AP_Checkpoint::symcr_confirm() {}
 #endif

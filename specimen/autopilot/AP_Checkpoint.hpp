@@ -28,6 +28,12 @@ class AP_Checkpoint {
   static bool parse_method(const char* name, Method& out);
   static bool symcr_available();
 
+  // symcr: the store's crash-loop fallback (0: off), and the loops after a restore that
+  // confirm it. Before init().
+  void set_crash_loop_fallback(std::uint32_t depth, std::uint32_t confirm_after_loops) {
+    _fallback_depth = depth;
+    _confirm_after = confirm_after_loops == 0 ? 1 : confirm_after_loops;
+  }
   // Opens (creating if needed) the checkpoint file. False with a message on stderr.
   bool init(Method method, const char* path, std::uint32_t every_loops);
   // Restores the latest checkpoint into `copter`. False (and `copter` untouched for symcr)
@@ -44,6 +50,7 @@ class AP_Checkpoint {
   bool symcr_open();
   bool symcr_save();
   bool symcr_restore();
+  void symcr_confirm();
   static bool points_open();
   bool points_restored();
   static void points_save();
@@ -56,6 +63,9 @@ class AP_Checkpoint {
   std::uint32_t _loops = 0;
   std::uint32_t _sequence = 0;
   std::uint32_t _bytes = 0;
+  std::uint32_t _fallback_depth = 0;
+  std::uint32_t _confirm_after = 1;
+  std::uint32_t _loops_until_confirmed = 0;  // after a restore, with a fallback depth
   int _fd = -1;
 };
 

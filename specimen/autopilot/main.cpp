@@ -4,6 +4,7 @@
 //
 //   copter --sim-fd 3 --gcs-fd 4 [--checkpoint none|raw-image|symcr|symcr-points --checkpoint-path FILE
 //          --checkpoint-every LOOPS] [--restore]
+//          [--fallback-depth N --confirm-after LOOPS]   (symcr: the crash-loop fallback)
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -19,7 +20,8 @@ constexpr int kSensorTimeoutMs = 30000;
 void usage() {
   std::fprintf(stderr,
                "usage: copter --sim-fd N --gcs-fd N [--checkpoint none|raw-image|symcr|symcr-points]\n"
-               "              [--checkpoint-path FILE] [--checkpoint-every LOOPS] [--restore]\n");
+               "              [--checkpoint-path FILE] [--checkpoint-every LOOPS] [--restore]\n"
+               "              [--fallback-depth N] [--confirm-after LOOPS]\n");
 }
 
 void apply_sensors(const mav::SimSensors& in) {
@@ -41,6 +43,8 @@ int main(int argc, char** argv) {
   AP_Checkpoint::Method method = AP_Checkpoint::Method::None;
   const char* checkpoint_path = "copter.ckpt";
   std::uint32_t checkpoint_every = 10;
+  std::uint32_t fallback_depth = 0;
+  std::uint32_t confirm_after = 200;  // loops: 2 s at 100 Hz
   bool restore = false;
   for (int i = 1; i < argc; ++i) {
     const char* arg = argv[i];
@@ -64,6 +68,10 @@ int main(int argc, char** argv) {
       checkpoint_path = value, ++i;
     } else if (std::strcmp(arg, "--checkpoint-every") == 0) {
       checkpoint_every = static_cast<std::uint32_t>(std::atoi(value)), ++i;
+    } else if (std::strcmp(arg, "--fallback-depth") == 0) {
+      fallback_depth = static_cast<std::uint32_t>(std::atoi(value)), ++i;
+    } else if (std::strcmp(arg, "--confirm-after") == 0) {
+      confirm_after = static_cast<std::uint32_t>(std::atoi(value)), ++i;
     } else {
       usage();
       return 2;
@@ -77,6 +85,7 @@ int main(int argc, char** argv) {
   hal.gcs = mav::Channel(gcs_fd);
 
   copter.setup();
+  checkpointing.set_crash_loop_fallback(fallback_depth, confirm_after);
   if (!checkpointing.init(method, checkpoint_path, checkpoint_every)) return 3;
 
   // The first sensor frame gives the time; restore after it so that the restored state and

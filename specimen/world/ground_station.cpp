@@ -129,6 +129,10 @@ void GroundStation::handle(mav::Channel& link, const mav::Frame& frame, double t
   }
 }
 
+void GroundStation::send_mode(mav::Channel& link, std::uint32_t mode) {
+  link.send(mav::make_frame(mav::SET_MODE, mav::SetMode{mode, 1, 1}));
+}
+
 void GroundStation::send_exploit(mav::Channel& link) {
   // NAMED_VALUE_FLOAT's name field is 10 bytes; this frame carries 24 bytes of "name": enough
   // to run over the value and the handler pointer stored after it in the vulnerable build.

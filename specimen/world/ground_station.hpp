@@ -22,6 +22,8 @@ class GroundStation {
   void on_autopilot_restarted() { last_heartbeat_s_ = -1; }
   // Sends the crafted NAMED_VALUE_FLOAT frame of the red-team exploit.
   void send_exploit(mav::Channel& link);
+  // The operator switches the flight mode (mav::MODE_LOITER to pause, MODE_AUTO to resume).
+  void send_mode(mav::Channel& link, std::uint32_t mode);
 
   bool armed() const { return armed_; }
   bool mission_started() const { return started_; }

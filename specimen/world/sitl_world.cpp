@@ -57,6 +57,10 @@ struct Options {
   double checkpoint_at_s = -1;   // seconds after arming; < 0: never stop the autopilot
   double exploit_at_s = -1;      // red team: seconds after arming to send the exploit
   double exploit_again_s = -1;   // red team: seconds after the restart to send it again
+  double pause_at_s = -1;        // seconds after arming: the operator pauses (LOITER) ...
+  double pause_s = 1.0;          // ... and resumes the mission (AUTO) this much later
+  int restarts = 0;              // watchdog: restarts of a restarted autopilot that stops
+  int fallback_depth = 0;        // symcr: the store's crash-loop fallback (0: off)
   int checkpoint_every = 10;     // autopilot loops between checkpoints
   double outage_s = 0.2;         // world time while no autopilot runs (motors hold)
   double time_limit_s = 0;       // 0: from the route length
@@ -78,6 +82,7 @@ struct Result {
   std::uint32_t checkpoint_bytes = 0;
   double checkpoint_us_sum = 0;
   bool restarted = false;
+  int restarts = 0;  // how often the autopilot was restarted (the first restart included)
   bool restored = false;
   double restore_us = -1;
   std::string autopilot_exit;
@@ -90,6 +95,7 @@ struct Result {
                "usage: sitl_world --autopilot EXE --mission FILE [--resume-autopilot EXE]\n"
                "  [--method none|raw-image|symcr|symcr-points|criu|criu-unchecked]\n"
                "  [--checkpoint-at S] [--exploit-at S] [--exploit-again S]\n"
+               "  [--pause-at S] [--pause S] [--restarts N] [--fallback-depth N]\n"
                "  [--checkpoint-every LOOPS]"
                " [--criu EXE] [--criu-every S] [--outage S] [--seed N] [--time-limit S]\n"
                "  [--speedup X] [--wind M/S] [--workdir DIR] [--track FILE]\n",
@@ -113,6 +119,10 @@ Options parse(int argc, char** argv) {
     else if (arg == "--checkpoint-at") o.checkpoint_at_s = std::stod(value);
     else if (arg == "--exploit-at") o.exploit_at_s = std::stod(value);
     else if (arg == "--exploit-again") o.exploit_again_s = std::stod(value);
+    else if (arg == "--pause-at") o.pause_at_s = std::stod(value);
+    else if (arg == "--pause") o.pause_s = std::stod(value);
+    else if (arg == "--restarts") o.restarts = std::stoi(value);
+    else if (arg == "--fallback-depth") o.fallback_depth = std::stoi(value);
     else if (arg == "--checkpoint-every") o.checkpoint_every = std::stoi(value);
     else if (arg == "--outage") o.outage_s = std::stod(value);
     else if (arg == "--time-limit") o.time_limit_s = std::stod(value);
@@ -189,6 +199,9 @@ class World {
       args = {"--checkpoint", options_.method, "--checkpoint-path",
               options_.workdir + "/checkpoint." + (options_.method == "raw-image" ? "img" : "store"),
               "--checkpoint-every", std::to_string(options_.checkpoint_every)};
+      if (options_.fallback_depth > 0) {
+        args.insert(args.end(), {"--fallback-depth", std::to_string(options_.fallback_depth)});
+      }
     }
     return args;
   }
@@ -310,6 +323,9 @@ bool World::restart_autopilot(Result& result, int& segment) {
   segment = 1;
   for (double t = 0; t < options_.outage_s; t += kLoopUs * 1e-6) step_world(held, segment);
   result.restarted = true;
+  ++result.restarts;
+  result.restored = false;  // until this start reports its restore
+  result.restore_us = -1;
   if (criu_) {
     if (!criu_restore(result)) return false;
   } else {
@@ -423,6 +439,7 @@ Result World::run() {
   int segment = 0;
   bool exploit_sent = false;
   bool exploit_resent = false;
+  bool pause_sent = false, resume_sent = false;
   bool airborne = false;
   double landed_since = -1;
   for (;;) {
@@ -433,6 +450,11 @@ Result World::run() {
       if (exploit_sent && !result.restarted && options_.method != "none") {
         // The attack crashed the flight software: the watchdog restarts the repaired build
         // from the latest checkpoint taken before the exploit.
+        if (!restart_autopilot(result, segment)) return result;
+        continue;
+      }
+      if (result.restarted && result.restarts <= options_.restarts && !criu_) {
+        // The watchdog restarts a restarted build that stopped again (a crash loop).
         if (!restart_autopilot(result, segment)) return result;
         continue;
       }
@@ -482,6 +504,15 @@ Result World::run() {
       // The attacker tries again: a restored build that is still vulnerable falls again.
       station_.send_exploit(autopilot_.gcs());
       exploit_resent = true;
+    }
+    if (station_.mission_started() && options_.pause_at_s >= 0 && !pause_sent &&
+        mission_s >= options_.pause_at_s) {
+      station_.send_mode(autopilot_.gcs(), mav::MODE_LOITER);
+      pause_sent = true;
+    }
+    if (pause_sent && !resume_sent && mission_s >= options_.pause_at_s + options_.pause_s) {
+      station_.send_mode(autopilot_.gcs(), mav::MODE_AUTO);
+      resume_sent = true;
     }
     if (station_.mission_started() && options_.exploit_at_s >= 0 && !exploit_sent &&
         mission_s >= options_.exploit_at_s) {
@@ -571,6 +602,7 @@ int main(int argc, char** argv) {
       << ",\"checkpoint_bytes\":" << r.checkpoint_bytes << ",\"checkpoint_us_mean\":"
       << (r.checkpoints_saved > 0 ? r.checkpoint_us_sum / r.checkpoints_saved : 0.0)
       << ",\"restarted\":" << (r.restarted ? "true" : "false")
+      << ",\"restarts\":" << r.restarts
       << ",\"restored\":" << (r.restored ? "true" : "false") << ",\"restore_us\":" << r.restore_us
       << ",\"autopilot_exit\":\"" << json_escape(r.autopilot_exit) << "\""
       << ",\"route_points\":" << mission.route_points().size() << ",\"checkpoint_point\":"

@@ -9,6 +9,8 @@
 //   fixture flip <path> <offset>            invert one byte
 //   fixture truncate <path> <size>          cut the file
 //   fixture flip-newest-slot <path>         invert a payload byte of the store's newest slot
+//   fixture restore-unconfirmed <path> <n>  <n> starts that restore from the store with the
+//                                           crash-loop fallback (depth 3) and never confirm
 //   fixture flip-resign <path> <offset>     invert one byte of a single-file checkpoint, then
 //                                           fix its schema hash and checksum: a hostile file
 //                                           that passes the integrity checks
@@ -131,6 +133,19 @@ int main(int argc, char** argv) {
       cli_fixture::fill_state(static_cast<int>(seed));
       status = store.save();
       if (!status.ok()) return fail("save", status);
+    }
+    return 0;
+  }
+  if (std::strcmp(command, "restore-unconfirmed") == 0) {
+    symcr::StoreOptions options;
+    options.slots = 4;
+    options.slot_size = 4096;
+    options.fallback_depth = 3;
+    for (long start = 0; start < number; ++start) {
+      symcr::Store store;
+      symcr::Status status = symcr::Store::open(path, cli_fixture::schema(), options, store);
+      if (status.ok()) status = store.restore_latest().status();
+      if (!status.ok()) return fail("restore", status);
     }
     return 0;
   }

@@ -27,6 +27,9 @@ run(${V0} store ${DIR}/v0.store 6)
 run(${V0} store ${DIR}/torn.store 6)
 run(${V0} flip-newest-slot ${DIR}/torn.store)
 run(${V0} store ${DIR}/empty.store 0)
+# Two starts that restored and crashed: the second passed over 6 and restored 5, unconfirmed.
+run(${V0} store ${DIR}/crashed.store 6)
+run(${V0} restore-unconfirmed ${DIR}/crashed.store 2)
 # A store across a patch: v0 saved sequences 1-3 (schema area 0), then v1 saved 4 (area 1).
 run(${V0} store ${DIR}/patched.store 3)
 run(${V1} store-more ${DIR}/patched.store 1)

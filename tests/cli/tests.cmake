@@ -62,6 +62,13 @@ symcr_cli_test(inspect_torn_store EXIT 0 ARGS inspect ${files}/torn.store
          "copter.ticks += 1005\n")
 symcr_cli_test(inspect_torn_slot EXIT 2 ARGS inspect --slot 1 ${files}/torn.store
   EXPECT "slot 1 is corrupt: checksum mismatch")
+symcr_cli_test(inspect_crash_loop_store EXIT 0 ARGS inspect ${files}/crashed.store
+  EXPECT "restore_journal +restore of #5 unconfirmed; suspect #6 to #6 \\(1 fallback\\)"
+         "restore_latest +slot 0 \\(sequence 5\\)"
+         "\n1 +valid +6 .*crash-loop fallback: suspect")
+symcr_cli_test(inspect_crash_loop_store_json EXIT 0 JSON ARGS inspect --json ${files}/crashed.store
+  EXPECT "\"unconfirmed\": 5" "\"suspect_high\": 6" "\"passed_over\": true"
+         "\"restore_latest_slot\": 0")
 symcr_cli_test(inspect_empty_store EXIT 2 ARGS inspect ${files}/empty.store
   EXPECT "restore_latest +none \\(no restorable slot\\)" "\n0 +empty +- "
          "no slot holds a restorable checkpoint")

@@ -143,7 +143,8 @@ static void store_round_trip(const char* directory) {
   snprintf(path, sizeof path, "%s/c.store", directory);
 
   symcr_store_options_init(&options);
-  CHECK(options.slots == 4 && options.slot_size == 65536 && options.fdatasync == 0);
+  CHECK(options.slots == 4 && options.slot_size == 65536 && options.fdatasync == 0 &&
+        options.fallback_depth == 0);
   options.slots = 3;
   options.slot_size = 4096;
   CHECK(symcr_store_open(path, NULL, &options, &store) == SYMCR_OK);
@@ -189,6 +190,50 @@ static void store_round_trip(const char* directory) {
   symcr_store_close(NULL);
 }
 
+/* The crash-loop fallback: a start that restores and ends without confirming makes the next
+   start restore the older checkpoint; a confirmed start does not. */
+static void crash_loop_fallback(const char* directory) {
+  char path[1024];
+  symcr_store* store = NULL;
+  symcr_store_options options;
+  symcr_report* report = NULL;
+  int seed;
+  snprintf(path, sizeof path, "%s/crash.store", directory);
+  symcr_store_options_init(&options);
+  options.fallback_depth = 1;
+  CHECK(symcr_store_open(path, NULL, &options, &store) == SYMCR_OK);
+  if (store == NULL) return;
+  for (seed = 1; seed <= 3; ++seed) {
+    fill(seed);
+    CHECK(symcr_store_save(store) == SYMCR_OK);
+  }
+  CHECK(symcr_store_restore_latest(store, 0, NULL) == SYMCR_OK);
+  symcr_store_close(store); /* no symcr_store_confirm: a crash, as far as the store knows */
+
+  store = NULL;
+  CHECK(symcr_store_open(path, NULL, &options, &store) == SYMCR_OK);
+  if (store == NULL) return;
+  scramble();
+  CHECK(symcr_store_restore_latest(store, 0, &report) == SYMCR_OK);
+  CHECK(symcr_report_sequence(report) == 2);
+  CHECK(symcr_report_skipped(report) == 1);
+  CHECK(strstr(symcr_report_text(report), "skipped slot") != NULL);
+  CHECK(holds(2));
+  symcr_report_free(report);
+  CHECK(symcr_store_confirm(store) == SYMCR_OK);
+  symcr_store_close(store);
+
+  store = NULL;
+  CHECK(symcr_store_open(path, NULL, &options, &store) == SYMCR_OK);
+  if (store == NULL) return;
+  scramble();
+  CHECK(symcr_store_restore_latest(store, 0, NULL) == SYMCR_OK);
+  CHECK(holds(3)); /* confirmed: nothing is suspect any more */
+  symcr_store_close(store);
+  CHECK(symcr_store_confirm(NULL) == SYMCR_ERROR_IO);
+  CHECK(symcr_report_skipped(NULL) == 0);
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     fprintf(stderr, "usage: %s <scratch directory>\n", argv[0]);
@@ -199,6 +244,7 @@ int main(int argc, char** argv) {
   errors(argv[1]);
   authenticated(argv[1]);
   store_round_trip(argv[1]);
+  crash_loop_fallback(argv[1]);
   if (failures == 0) printf("symcr C API: all checks passed\n");
   return failures == 0 ? 0 : 1;
 }

@@ -57,7 +57,24 @@ TEST(EngineReport, JsonEscapesEverything) {
   EXPECT_EQ(report.to_json(),
             "{\"ok\":false,\"error\":\"Strict\",\"message\":\"no \\\"way\\\"\",\"sequence\":0,"
             "\"entries\":[{\"path\":\"a\\\"b\\\\c\\n\\u0001\",\"decision\":\"rejected\","
-            "\"detail\":\"bad \\ufffd byte, ok \xc3\xa9\",\"lossy\":true}]}");
+            "\"detail\":\"bad \\ufffd byte, ok \xc3\xa9\",\"lossy\":true}],\"skipped\":[]}");
+}
+
+TEST(EngineReport, SkippedCheckpointsAreRenderedInTextAndJson) {
+  symcr::Report report;
+  symcr::detail::ReportAccess::skipped(report).push_back({3, 12, "torn \"x\""});
+  symcr::detail::ReportAccess::skipped(report).push_back({0, 0, "corrupt"});
+  symcr::detail::ReportAccess::set_sequence(report, 11);
+  const std::string text = report.to_text();
+  EXPECT_NE(text.find("skipped slot 3 (sequence 12): torn \"x\"\nskipped slot 0 (sequence 0): "
+                      "corrupt\nsequence 11, status: ok\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(report.to_json().find("\"skipped\":[{\"slot\":3,\"sequence\":12,\"reason\":"
+                                  "\"torn \\\"x\\\"\"},{\"slot\":0,\"sequence\":0,"
+                                  "\"reason\":\"corrupt\"}]}"),
+            std::string::npos)
+      << report.to_json();
 }
 
 }  // namespace

@@ -226,6 +226,34 @@ TEST_F(StoreTest, FallsBackPastABitFlipInTheNewestSlot) {
   expect_restores_sequence(5);
 }
 
+TEST_F(StoreTest, TheReportListsTheSlotsPassedOverAndWhy) {
+  save_seeds(1, 4);
+  StoreFile file(path);
+  const std::uint32_t torn = file.slot_with_sequence(4);
+  file.slot(torn)[60] ^= 0x04;
+  const std::uint32_t rejected = file.slot_with_sequence(3);
+  file.slot(rejected)[56 + kPayloadOffsetOfActiveA] = 7;
+  file.reseal(rejected);
+  file.write();
+  scramble_a();
+  const symcr::Report report = restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 2u);
+  ASSERT_EQ(report.skipped().size(), 2u) << report.to_text();
+  EXPECT_EQ(report.skipped()[0].slot, rejected);
+  EXPECT_EQ(report.skipped()[0].sequence, 3u);
+  EXPECT_NE(report.skipped()[0].reason.find("rejected by the restore"), std::string::npos);
+  EXPECT_EQ(report.skipped()[1].slot, torn);
+  EXPECT_NE(report.skipped()[1].reason.find("torn or corrupt"), std::string::npos);
+  // A restore that passed nothing over lists nothing: the next save (sequence 4, after the
+  // rejected 3 that still validates) goes into the torn slot.
+  save_seeds(5, 5);
+  const symcr::Report clean = restore_latest();
+  EXPECT_EQ(clean.sequence(), 4u);
+  expect_a(5);
+  EXPECT_TRUE(clean.skipped().empty()) << clean.to_text();
+}
+
 TEST_F(StoreTest, FallsBackPastATornNewestSlot) {
   save_seeds(1, 6);
   {

@@ -41,13 +41,18 @@
 extern "C" {
 #endif
 
-/* The store the points of a program use: store(path, slots=, slot_size=, durability=). The
- * environment variable SYMCR_STORE, when set, replaces `path` at run time. */
+/* The store the points of a program use: store(path, slots=, slot_size=, durability=,
+ * fallback_depth=, confirm_after=). The environment variable SYMCR_STORE, when set, replaces
+ * `path` at run time. With a fallback_depth (the crash-loop fallback of symcr::StoreOptions),
+ * the restore point's restore is confirmed once `confirm_after` checkpoints were saved after
+ * it, or when the program calls symcr_points_confirm(). */
 struct symcr_point_store {
   const char* path;
   unsigned slots;
   unsigned slot_size;
   int fdatasync; /* durability=fdatasync */
+  unsigned fallback_depth;
+  unsigned confirm_after;
 };
 
 #define SYMCR_POINT_CHECKPOINT 0
@@ -88,6 +93,9 @@ void symcr_on_restore_point(const struct symcr_point* point, struct symcr_report
  * needs the store opens it. Returns SYMCR_OK (0) or an error code of <symcr/symcr.h>, with the
  * message in symcr_last_error(); SYMCR_ERROR_NO_SCHEMA when the program has no points. */
 int symcr_points_open_store(void);
+/* Crash-loop fallback: the state the restore point restored has proven itself, before the
+ * store's confirm_after checkpoints did so. SYMCR_OK also when nothing waits for it. */
+int symcr_points_confirm(void);
 
 /* The store of the store(...) directive, defined by symcr-gen's schema source. */
 extern const struct symcr_point_store symcr_program_point_store;

@@ -96,6 +96,9 @@ int symcr_report_ok(const symcr_report* report);
 int symcr_report_error(const symcr_report* report);
 uint64_t symcr_report_sequence(const symcr_report* report);
 size_t symcr_report_count(const symcr_report* report, int decision);
+/* Store restores: how many slots were passed over (Report::skipped; the text and JSON say
+ * which and why). */
+size_t symcr_report_skipped(const symcr_report* report);
 /* Text and JSON renderings, owned by the report, valid until symcr_report_free. */
 const char* symcr_report_text(symcr_report* report);
 const char* symcr_report_json(symcr_report* report);
@@ -107,6 +110,8 @@ typedef struct symcr_store_options {
   uint32_t slots;     /* default 4 */
   uint32_t slot_size; /* bytes per slot, header included; default 65536 */
   int fdatasync;      /* non-zero: fdatasync after each save */
+  /* Crash-loop fallback (StoreOptions::fallback_depth): 0 (the default) turns it off. */
+  uint32_t fallback_depth;
 } symcr_store_options;
 
 void symcr_store_options_init(symcr_store_options* options);
@@ -116,6 +121,8 @@ int symcr_store_open(const char* path, const symcr_schema* schema,
                      const symcr_store_options* options, symcr_store** store);
 int symcr_store_save(symcr_store* store);
 int symcr_store_restore_latest(symcr_store* store, int flags, symcr_report** report);
+/* Crash-loop fallback: the state this start restored has proven itself (Store::confirm). */
+int symcr_store_confirm(symcr_store* store);
 uint64_t symcr_store_last_sequence(const symcr_store* store);
 void symcr_store_close(symcr_store* store);
 

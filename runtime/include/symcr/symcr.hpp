@@ -107,6 +107,14 @@ struct ReportEntry {
   bool lossy;          // refused in strict mode (data lost or value not restored)
 };
 
+// A store slot that restore_latest() passed over: torn or corrupt, unauthenticated, rejected
+// by the restore, or suspected by the crash-loop fallback (StoreOptions::fallback_depth).
+struct SkippedCheckpoint {
+  std::uint32_t slot;
+  std::uint64_t sequence;  // 0 when the slot's record could not be read
+  std::string reason;
+};
+
 namespace detail {
 struct ReportAccess;
 struct ReportSource;
@@ -131,6 +139,9 @@ class Report {
   const std::vector<ReportEntry>& entries() const;
   std::size_t count(Decision decision) const;
   std::uint64_t sequence() const { return sequence_; }  // of the checkpoint restored
+  // Store restores: the slots passed over on the way to the one restored (suspect, rejected,
+  // unauthenticated) and those whose record is unusable (torn, corrupt, unknown schema).
+  const std::vector<SkippedCheckpoint>& skipped() const { return skipped_; }
 
   std::string to_text() const;  // aligned table, one line per entry, status last
   std::string to_json() const;  // {"ok":..,"error":..,"sequence":..,"entries":[{...}]}
@@ -145,6 +156,7 @@ class Report {
   Status status_;
   std::vector<ReportEntry> entries_;
   std::shared_ptr<const detail::ReportSource> source_;  // when set: it holds the entries
+  std::vector<SkippedCheckpoint> skipped_;
   std::uint64_t sequence_ = 0;
 };
 
@@ -201,6 +213,14 @@ struct StoreOptions {
   std::uint32_t slots = 4;
   std::uint32_t slot_size = 64 * 1024;  // bytes per slot, header included
   Durability durability = Durability::PageCache;
+  // Crash-loop fallback; 0 turns it off. restore_latest() records in the store which checkpoint
+  // it restored, and Store::confirm() marks that restore good once the program has run long
+  // enough. A start that finds the last restore unconfirmed (the restored state may have
+  // crashed the program) passes over that checkpoint and every one saved after it, and
+  // restores the newest older one that validates; after `fallback_depth` such fallbacks in a
+  // row, it restores nothing (Error::NoValidSlot, the state stays initial) and the program
+  // starts afresh. Report::skipped() says which checkpoints were passed over and why.
+  std::uint32_t fallback_depth = 0;
 };
 
 class Store {
@@ -234,8 +254,13 @@ class Store {
 
   // Saves every root into the oldest slot with one positioned write.
   Status save();
-  // Restores the newest slot that validates, falling back past torn or corrupt ones.
+  // Restores the newest slot that validates, falling back past torn or corrupt ones (and,
+  // with a fallback_depth, past the checkpoints suspected of a crash loop).
   Report restore_latest(const RestoreOptions& options = {});
+  // Crash-loop fallback: the state restored by this start has proven itself (call it after
+  // enough good loops, or a time). Cheap when there is nothing to confirm: it writes only
+  // after a restore, once. Returns Error::Io if the store could not record it.
+  Status confirm();
 
   bool is_open() const { return fd_ >= 0; }
   // True when save() refuses: opened read-only, or a damaged store recovered for restoring.

@@ -1,0 +1,392 @@
+// The store's crash-loop fallback (StoreOptions::fallback_depth, Store::confirm; docs/format.md
+// §4 "Restore journal"): a start whose restore was never confirmed makes the next start pass
+// over that checkpoint and the ones saved after it, down to the configured depth, then give up
+// and leave the state initial. A "start" is a Store opened on the file; a crash is a Store
+// closed (or a process ended) without confirm(), which is all the store can see of one.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "file_test_schemas.hpp"
+#include "file_test_util.hpp"
+#include "restore_journal.hpp"
+#include "symcr/symcr.hpp"
+
+namespace file_tests {
+namespace {
+
+using symcr::Error;
+using symcr::detail::RestoreJournal;
+
+std::vector<std::uint8_t> state_a() {
+  std::vector<std::uint8_t> bytes = snapshot(copter_a);
+  const std::vector<std::uint8_t> telemetry = snapshot(telemetry_a);
+  bytes.insert(bytes.end(), telemetry.begin(), telemetry.end());
+  return bytes;
+}
+
+void expect_a(int seed) {
+  EXPECT_EQ(copter_a.ticks, 1000 + seed);
+  EXPECT_EQ(copter_a.mission.items[2].speed, seed * 10 + 2);
+  EXPECT_EQ(telemetry_a.frames, static_cast<std::uint32_t>(7 * seed));
+}
+
+std::vector<std::uint64_t> skipped_sequences(const symcr::Report& report) {
+  std::vector<std::uint64_t> sequences;
+  for (const symcr::SkippedCheckpoint& skipped : report.skipped()) {
+    sequences.push_back(skipped.sequence);
+  }
+  return sequences;
+}
+
+class CrashLoopTest : public ::testing::Test {
+ protected:
+  TempDir dir;
+  std::string path = dir.file("copter.store");
+  symcr::StoreOptions options;
+
+  CrashLoopTest() { options.fallback_depth = 2; }
+
+  void open(symcr::Store& store) {
+    const symcr::Status status = symcr::Store::open(path.c_str(), schema_a, options, store);
+    ASSERT_TRUE(status.ok()) << status.message();
+  }
+  // Saves seeds first..last as sequences first..last (on a new store).
+  void save_seeds(int first, int last) {
+    symcr::Store store;
+    open(store);
+    for (int seed = first; seed <= last; ++seed) {
+      fill_a(seed);
+      ASSERT_TRUE(store.save().ok());
+    }
+  }
+  // One start that restores (the live state scrambled first) and ends without confirming.
+  symcr::Report start_and_crash() {
+    symcr::Store store;
+    open(store);
+    scramble_a();
+    return store.restore_latest();
+  }
+  // One start that restores and confirms.
+  symcr::Report start_and_confirm() {
+    symcr::Store store;
+    open(store);
+    scramble_a();
+    symcr::Report report = store.restore_latest();
+    const symcr::Status confirmed = store.confirm();
+    EXPECT_TRUE(confirmed.ok()) << confirmed.message();
+    return report;
+  }
+  RestoreJournal journal() const {
+    const std::vector<std::uint8_t> bytes = read_file(path);
+    return symcr::detail::decode_restore_journal(
+        bytes.data() + symcr::detail::kRestoreJournalOffset, symcr::detail::kRestoreJournalSize);
+  }
+};
+
+TEST_F(CrashLoopTest, WithoutADepthNothingIsRecordedAndTheNewestIsAlwaysRestored) {
+  options.fallback_depth = 0;
+  save_seeds(1, 4);
+  for (int start = 0; start < 3; ++start) {
+    const symcr::Report report = start_and_crash();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(report.sequence(), 4u);
+    EXPECT_TRUE(report.skipped().empty());
+  }
+  const std::vector<std::uint8_t> bytes = read_file(path);
+  for (std::size_t i = 36; i < 4096; ++i) ASSERT_EQ(bytes[i], 0) << "header page byte " << i;
+}
+
+TEST_F(CrashLoopTest, ACrashAfterARestoreMakesTheNextStartRestoreTheOlderCheckpoint) {
+  save_seeds(1, 4);
+  const symcr::Report first = start_and_crash();
+  ASSERT_TRUE(first.ok()) << first.status().message();
+  EXPECT_EQ(first.sequence(), 4u);
+  expect_a(4);
+  EXPECT_EQ(journal().unconfirmed, 4u);
+
+  const symcr::Report second = start_and_crash();
+  ASSERT_TRUE(second.ok()) << second.status().message();
+  EXPECT_EQ(second.sequence(), 3u);
+  expect_a(3);
+  ASSERT_EQ(second.skipped().size(), 1u);
+  EXPECT_EQ(second.skipped()[0].sequence, 4u);
+  EXPECT_NE(second.skipped()[0].reason.find("Store::confirm()"), std::string::npos)
+      << second.skipped()[0].reason;
+  // The report's renderings say it too.
+  EXPECT_NE(second.to_text().find("skipped slot"), std::string::npos) << second.to_text();
+  EXPECT_NE(second.to_json().find("\"skipped\":[{\"slot\":"), std::string::npos)
+      << second.to_json();
+  const RestoreJournal after = journal();
+  EXPECT_EQ(after.unconfirmed, 3u);
+  EXPECT_EQ(after.suspect_low, 4u);
+  EXPECT_EQ(after.suspect_high, 4u);
+  EXPECT_EQ(after.fallbacks, 1u);
+}
+
+TEST_F(CrashLoopTest, AProcessKilledAfterItsRestoreIsSeenByTheNextStart) {
+  save_seeds(1, 3);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    symcr::Store store;
+    if (!symcr::Store::open(path.c_str(), schema_a, options, store).ok()) ::_exit(2);
+    if (store.restore_latest().sequence() != 3) ::_exit(3);
+    ::abort();  // the restored state "crashes" the program
+  }
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "child exit " << WEXITSTATUS(status);
+  const symcr::Report report = start_and_crash();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 2u);
+  expect_a(2);
+}
+
+TEST_F(CrashLoopTest, AConfirmedRestoreIsRestoredAgainAtTheNextStart) {
+  save_seeds(1, 4);
+  ASSERT_EQ(start_and_confirm().sequence(), 4u);
+  EXPECT_TRUE(journal().empty());
+  const symcr::Report again = start_and_confirm();
+  EXPECT_EQ(again.sequence(), 4u);
+  EXPECT_TRUE(again.skipped().empty());
+  expect_a(4);
+}
+
+TEST_F(CrashLoopTest, AConfirmAfterAFallbackClearsTheSuspicion) {
+  save_seeds(1, 4);
+  start_and_crash();
+  ASSERT_EQ(start_and_confirm().sequence(), 3u);
+  EXPECT_TRUE(journal().empty());
+  // Checkpoint 4 is trusted again: nothing marks it once the fallback's restore proved good.
+  EXPECT_EQ(start_and_confirm().sequence(), 4u);
+}
+
+TEST_F(CrashLoopTest, CheckpointsSavedAfterAnUnconfirmedRestoreAreSuspectToo) {
+  save_seeds(1, 3);
+  {
+    symcr::Store store;
+    open(store);
+    ASSERT_EQ(store.restore_latest().sequence(), 3u);
+    // The program runs on the restored state and saves it: 4 and 5 carry what 3 held.
+    fill_a(40);
+    ASSERT_TRUE(store.save().ok());
+    fill_a(50);
+    ASSERT_TRUE(store.save().ok());
+    EXPECT_EQ(store.last_sequence(), 5u);
+  }  // crash before confirm()
+  const symcr::Report report = start_and_crash();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 2u);
+  expect_a(2);
+  EXPECT_EQ(skipped_sequences(report), (std::vector<std::uint64_t>{5, 4, 3}));
+}
+
+TEST_F(CrashLoopTest, PastTheDepthNothingIsRestoredAndTheStateStaysInitial) {
+  options.fallback_depth = 1;
+  save_seeds(1, 4);
+  EXPECT_EQ(start_and_crash().sequence(), 4u);
+  EXPECT_EQ(start_and_crash().sequence(), 3u);  // the one fallback the depth allows
+  const std::vector<std::uint8_t> scrambled = [] {
+    scramble_a();
+    return state_a();
+  }();
+  symcr::Store store;
+  open(store);
+  const symcr::Report gave_up = store.restore_latest();
+  EXPECT_EQ(gave_up.status().error(), Error::NoValidSlot);
+  EXPECT_NE(std::string(gave_up.status().message()).find("crash-loop fallback"), std::string::npos)
+      << gave_up.status().message();
+  EXPECT_EQ(state_a(), scrambled) << "a given-up restore wrote into the state";
+  EXPECT_EQ(skipped_sequences(gave_up), (std::vector<std::uint64_t>{4, 3, 2, 1}));
+  EXPECT_TRUE(store.confirm().ok());  // nothing restored: nothing to confirm
+  EXPECT_EQ(journal().given_up_through, 4u);
+  EXPECT_EQ(journal().unconfirmed, 0u);
+
+  // The program starts afresh and saves from its initial state: those checkpoints, and only
+  // they, are restored from now on, and the depth starts over for them.
+  fill_a(9);
+  ASSERT_TRUE(store.save().ok());
+  EXPECT_EQ(store.last_sequence(), 5u);
+  store.close();
+  const symcr::Report fresh = start_and_crash();
+  ASSERT_TRUE(fresh.ok()) << fresh.status().message();
+  EXPECT_EQ(fresh.sequence(), 5u);
+  expect_a(9);
+  // That restore crashes too: no older checkpoint is left that was not given up on.
+  const symcr::Report none = start_and_crash();
+  EXPECT_EQ(none.status().error(), Error::NoValidSlot);
+  EXPECT_EQ(journal().given_up_through, 5u);
+}
+
+TEST_F(CrashLoopTest, WhenEveryCheckpointIsSuspectBeforeTheDepthTheStartGivesUpAtOnce) {
+  options.fallback_depth = 5;
+  save_seeds(1, 2);
+  EXPECT_EQ(start_and_crash().sequence(), 2u);
+  EXPECT_EQ(start_and_crash().sequence(), 1u);
+  scramble_a();
+  const std::vector<std::uint8_t> scrambled = state_a();
+  const symcr::Report report = start_and_crash();
+  EXPECT_EQ(report.status().error(), Error::NoValidSlot);
+  EXPECT_NE(std::string(report.status().message()).find("found no older checkpoint to restore"),
+            std::string::npos)
+      << report.status().message();
+  EXPECT_EQ(state_a(), scrambled);
+  // A start after that is not another crash: nothing was restored to crash on.
+  const symcr::Report later = start_and_crash();
+  EXPECT_EQ(later.status().error(), Error::NoValidSlot);
+  EXPECT_NE(std::string(later.status().message()).find("2 passed over by the crash-loop"),
+            std::string::npos)
+      << later.status().message();
+}
+
+TEST_F(CrashLoopTest, ASecondRestoreInOneRunIsNotACrash) {
+  save_seeds(1, 4);
+  symcr::Store store;
+  open(store);
+  EXPECT_EQ(store.restore_latest().sequence(), 4u);
+  EXPECT_EQ(store.restore_latest().sequence(), 4u);
+  EXPECT_EQ(journal().fallbacks, 0u);
+}
+
+TEST_F(CrashLoopTest, ARefusedRestoreLeavesNothingToConfirm) {
+  static symcr::Schema rover = schema_a;
+  static symcr::Schema copter = schema_a;
+  rover.program = "rover";
+  copter.program = "copter";
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), rover, options, store).ok());
+    fill_a(4);
+    ASSERT_TRUE(store.save().ok());
+  }
+  for (int start = 0; start < 3; ++start) {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), copter, options, store).ok());
+    EXPECT_EQ(store.restore_latest().status().error(), Error::Incompatible);
+    EXPECT_EQ(journal().unconfirmed, 0u);
+    EXPECT_EQ(journal().fallbacks, 0u) << "a refused restore counted as a crash";
+  }
+}
+
+TEST_F(CrashLoopTest, TheJournalMovesWithTheCheckpointsWhenTheGeometryChanges) {
+  save_seeds(1, 3);
+  start_and_crash();  // restored 3
+  options.slots = 6;
+  {
+    symcr::Store store;
+    open(store);
+    ASSERT_EQ(store.restore_latest().sequence(), 2u);
+    fill_a(7);
+    ASSERT_TRUE(store.save().ok());  // rewrites the store with six slots
+    EXPECT_EQ(store.options().slots, 6u);
+  }
+  const RestoreJournal moved = journal();
+  EXPECT_EQ(moved.unconfirmed, 2u);
+  const symcr::Report report = start_and_crash();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 1u);
+  expect_a(1);
+}
+
+TEST_F(CrashLoopTest, AReadOnlyStoreHonoursTheSuspicionsButRecordsNothing) {
+  save_seeds(1, 4);
+  start_and_crash();                            // restored 4
+  ASSERT_EQ(start_and_crash().sequence(), 3u);  // 4 suspect, 3 unconfirmed
+  const std::vector<std::uint8_t> before = read_file(path);
+  symcr::Store store;
+  ASSERT_TRUE(symcr::Store::open_readonly(path.c_str(), schema_a, store).ok());
+  scramble_a();
+  const symcr::Report report = store.restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 3u);
+  EXPECT_EQ(skipped_sequences(report), (std::vector<std::uint64_t>{4}));
+  EXPECT_TRUE(store.confirm().ok());
+  EXPECT_EQ(read_file(path), before);
+}
+
+TEST_F(CrashLoopTest, ADamagedJournalIsIgnored) {
+  save_seeds(1, 4);
+  start_and_crash();
+  std::vector<std::uint8_t> bytes = read_file(path);
+  bytes[symcr::detail::kRestoreJournalOffset + 8] ^= 0x01;  // the unconfirmed sequence
+  write_file(path, bytes);
+  const symcr::Report report = start_and_crash();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 4u);
+  EXPECT_TRUE(report.skipped().empty());
+  EXPECT_EQ(journal().unconfirmed, 4u);  // rewritten whole
+}
+
+TEST_F(CrashLoopTest, ConfirmWritesOnlyOnce) {
+  save_seeds(1, 2);
+  symcr::Store store;
+  open(store);
+  ASSERT_EQ(store.restore_latest().sequence(), 2u);
+  ASSERT_TRUE(store.confirm().ok());
+  const std::vector<std::uint8_t> confirmed = read_file(path);
+  // Later calls (a program may confirm in every loop) find nothing to write.
+  std::vector<std::uint8_t> tampered = confirmed;
+  tampered[symcr::detail::kRestoreJournalOffset + 20] ^= 0x10;
+  write_file(path, tampered);
+  for (int i = 0; i < 3; ++i) ASSERT_TRUE(store.confirm().ok());
+  EXPECT_EQ(read_file(path), tampered);
+}
+
+TEST(RestoreJournalTest, EncodesAndDecodes) {
+  RestoreJournal journal;
+  journal.unconfirmed = 7;
+  journal.suspect_low = 8;
+  journal.suspect_high = 11;
+  journal.given_up_through = 3;
+  journal.fallbacks = 2;
+  std::uint8_t bytes[symcr::detail::kRestoreJournalSize];
+  symcr::detail::encode_restore_journal(journal, bytes);
+  const RestoreJournal decoded = symcr::detail::decode_restore_journal(bytes, sizeof bytes);
+  EXPECT_EQ(decoded.unconfirmed, 7u);
+  EXPECT_EQ(decoded.suspect_low, 8u);
+  EXPECT_EQ(decoded.suspect_high, 11u);
+  EXPECT_EQ(decoded.given_up_through, 3u);
+  EXPECT_EQ(decoded.fallbacks, 2u);
+  // Every byte is covered: by the magic, the fields or the checksum.
+  for (std::size_t i = 0; i < sizeof bytes; ++i) {
+    bytes[i] ^= 0x20;
+    EXPECT_TRUE(symcr::detail::decode_restore_journal(bytes, sizeof bytes).empty()) << i;
+    bytes[i] ^= 0x20;
+  }
+  EXPECT_TRUE(symcr::detail::decode_restore_journal(bytes, sizeof bytes - 1).empty());
+}
+
+TEST(RestoreJournalTest, ACrashWidensTheSuspectRangeDownwardsAndCountsTheDepth) {
+  RestoreJournal journal;
+  journal.unconfirmed = 9;
+  EXPECT_TRUE(journal.record_crash(/*newest=*/12, /*depth=*/2));
+  EXPECT_EQ(journal.suspect_low, 9u);
+  EXPECT_EQ(journal.suspect_high, 12u);
+  EXPECT_EQ(journal.unconfirmed, 0u);
+  EXPECT_TRUE(journal.excludes(9));
+  EXPECT_TRUE(journal.excludes(12));
+  EXPECT_FALSE(journal.excludes(8));
+  EXPECT_FALSE(journal.excludes(13));
+  journal.unconfirmed = 6;
+  EXPECT_TRUE(journal.record_crash(14, 2));
+  EXPECT_EQ(journal.suspect_low, 6u);
+  EXPECT_EQ(journal.suspect_high, 14u);
+  journal.unconfirmed = 5;
+  EXPECT_FALSE(journal.record_crash(14, 2)) << "a third fallback exceeds a depth of two";
+  journal.give_up(14);
+  EXPECT_EQ(journal.given_up_through, 14u);
+  EXPECT_EQ(journal.fallbacks, 0u);
+  EXPECT_TRUE(journal.excludes(1));
+  EXPECT_FALSE(journal.excludes(15));
+  journal.confirm();
+  EXPECT_EQ(journal.given_up_through, 14u) << "what was given up on stays so";
+}
+
+}  // namespace
+}  // namespace file_tests
