@@ -244,6 +244,22 @@ void BM_SchemaChangeRestoreCached(benchmark::State& state) {
 }
 BENCHMARK(BM_SchemaChangeRestoreCached);
 
+// Live update: V0's roots moved into V1's in this process (symcr::transfer), plan prepared.
+void BM_SchemaChangeTransfer(benchmark::State& state) {
+  fill_state(1);
+  const symcr::Status prepared = symcr::prepare_transfer(schema, v1::schema);
+  if (!prepared.ok()) return fail(state, "prepare_transfer", prepared.message());
+  for (auto _ : state) {
+    const symcr::Report report = symcr::transfer(schema, v1::schema);
+    if (!report.ok()) {
+      fail(state, "transfer", report.status().message());
+      break;
+    }
+  }
+  if (!v1_restored()) fail(state, "V0 -> V1", "wrong values transferred");
+}
+BENCHMARK(BM_SchemaChangeTransfer);
+
 // Not cached: the runtime keeps a few plans keyed by the reader Schema object, so restoring in
 // turn into more distinct (identical) reader Schema objects than it keeps makes every restore
 // build its plan from scratch — what the first restore after a patch costs, with no engine hook.

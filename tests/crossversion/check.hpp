@@ -3,6 +3,7 @@
 #ifndef SYMCR_TESTS_CROSSVERSION_CHECK_HPP
 #define SYMCR_TESTS_CROSSVERSION_CHECK_HPP
 
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -42,6 +43,14 @@ inline int save(int argc, char** argv) {
     std::fprintf(stderr, "checkpoint failed: %s\n", status.message());
     return 1;
   }
+  // The live pairs (live/host.cpp): XV_LIVE_AT_SAVE holds the address of the host's function
+  // that runs v1 on this build's state, here, while it is live; its verdict is v0's.
+  if (const char* hook = std::getenv("XV_LIVE_AT_SAVE")) {
+    using RunV1 = int (*)(const void* v0_schema);
+    const RunV1 run_v1 =
+        reinterpret_cast<RunV1>(static_cast<std::uintptr_t>(std::strtoull(hook, nullptr, 16)));
+    return run_v1(symcr_program_schema());
+  }
   return 0;
 }
 
@@ -80,10 +89,27 @@ inline void restore_through_device_and_exit(const char* path) {
   std::exit(0);
 }
 
+// The live pairs (live/host.cpp): XV_LIVE_FROM holds the address of the v0 module's schema in
+// this process, whose roots are transferred into this build's (from v0's live state, at v0's
+// save point) instead of restoring a file.
+inline const symcr::Schema* live_source() {
+  const char* from = std::getenv("XV_LIVE_FROM");
+  if (from == nullptr) return nullptr;
+  return reinterpret_cast<const symcr::Schema*>(
+      static_cast<std::uintptr_t>(std::strtoull(from, nullptr, 16)));
+}
+
 inline symcr::Report restore(int argc, char** argv, bool strict = false) {
   if (argc < 2) {
     std::fprintf(stderr, "usage: %s <checkpoint>\n", argv[0]);
     return symcr::restore("", symcr::RestoreOptions());  // fails: no such file
+  }
+  if (const symcr::Schema* source = live_source()) {
+    symcr::RestoreOptions options;
+    options.strict = strict;
+    symcr::Report report = symcr::transfer(*source, *symcr_program_schema(), options);
+    std::printf("%s\n", report.to_text().c_str());
+    return report;
   }
   if (std::getenv("XV_DEVICE") != nullptr) restore_through_device_and_exit(argv[1]);
   if (xv_check_embedded_plan != nullptr) failures() += xv_check_embedded_plan(argv[1]);

@@ -207,6 +207,16 @@ Status checkpoint_to_buffer(const Schema& schema, std::vector<std::uint8_t>& out
 Report restore_from_buffer(const Schema& schema, const std::uint8_t* data, std::size_t size,
                            const RestoreOptions& options = {});
 
+// Live update: moves the roots of `from` (one build's schema, loaded in this process, e.g. the
+// running module) into the roots of `to` (another build loaded beside it), by the rules, report
+// and strict mode of a restore, with no file. All or nothing as a restore is: a refused
+// transfer (Incompatible, Strict, an unsavable state) writes nothing into `to`, and `from` is
+// only read. Call it where both builds are quiescent (no thread inside either).
+// prepare_transfer() resolves the plan beforehand (right after loading `to`), so that the
+// transfer itself only encodes and writes; transfer() does it too when it was not done.
+Status prepare_transfer(const Schema& from, const Schema& to);
+Report transfer(const Schema& from, const Schema& to, const RestoreOptions& options = {});
+
 // ---------------------------------------------------------------------------------------------
 // The checkpoint store (docs/format.md §4): one preallocated file with a ring of slots.
 struct StoreOptions {
