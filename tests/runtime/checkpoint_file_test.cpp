@@ -25,31 +25,6 @@ namespace {
 
 using symcr::Error;
 
-void expect_a(int seed) {
-  EXPECT_EQ(copter_a.ticks, 1000 + seed);
-  EXPECT_EQ(copter_a.mode, seed % 2 ? FlightMode::Auto : FlightMode::Land);
-  for (int i = 0; i < 4; ++i) {
-    EXPECT_EQ(copter_a.mission.items[i].lat, 42.0 + seed + i * 0.25);
-    EXPECT_EQ(copter_a.mission.items[i].lon, -83.5 - i);
-    EXPECT_EQ(copter_a.mission.items[i].alt, 100.0f + i);
-    EXPECT_EQ(copter_a.mission.items[i].speed, seed * 10 + i);
-  }
-  EXPECT_EQ(copter_a.mission.current, seed % 4);
-  EXPECT_TRUE(copter_a.mission.active);
-  EXPECT_EQ(copter_a.armed_ms, 5000000000ull + static_cast<std::uint64_t>(seed));
-  EXPECT_EQ(copter_a.battery, 15.5f - static_cast<float>(seed) * 0.125f);
-  EXPECT_EQ(telemetry_a.frames, static_cast<std::uint32_t>(7 * seed));
-  EXPECT_EQ(telemetry_a.rssi, -seed);
-}
-
-// Both roots' bytes: what a failed restore must leave exactly as it was.
-std::vector<std::uint8_t> state_a() {
-  std::vector<std::uint8_t> bytes = snapshot(copter_a);
-  const std::vector<std::uint8_t> telemetry = snapshot(telemetry_a);
-  bytes.insert(bytes.end(), telemetry.begin(), telemetry.end());
-  return bytes;
-}
-
 class CheckpointFile : public ::testing::Test {
  protected:
   TempDir dir;

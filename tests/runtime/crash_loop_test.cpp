@@ -15,6 +15,7 @@
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
 #include "restore_journal.hpp"
+#include "store_fixture.hpp"
 #include "symcr/symcr.hpp"
 
 namespace file_tests {
@@ -22,19 +23,6 @@ namespace {
 
 using symcr::Error;
 using symcr::detail::RestoreJournal;
-
-std::vector<std::uint8_t> state_a() {
-  std::vector<std::uint8_t> bytes = snapshot(copter_a);
-  const std::vector<std::uint8_t> telemetry = snapshot(telemetry_a);
-  bytes.insert(bytes.end(), telemetry.begin(), telemetry.end());
-  return bytes;
-}
-
-void expect_a(int seed) {
-  EXPECT_EQ(copter_a.ticks, 1000 + seed);
-  EXPECT_EQ(copter_a.mission.items[2].speed, seed * 10 + 2);
-  EXPECT_EQ(telemetry_a.frames, static_cast<std::uint32_t>(7 * seed));
-}
 
 std::vector<std::uint64_t> skipped_sequences(const symcr::Report& report) {
   std::vector<std::uint64_t> sequences;
@@ -44,27 +32,10 @@ std::vector<std::uint64_t> skipped_sequences(const symcr::Report& report) {
   return sequences;
 }
 
-class CrashLoopTest : public ::testing::Test {
+class CrashLoopTest : public StoreFixture {
  protected:
-  TempDir dir;
-  std::string path = dir.file("copter.store");
-  symcr::StoreOptions options;
-
   CrashLoopTest() { options.fallback_depth = 2; }
 
-  void open(symcr::Store& store) {
-    const symcr::Status status = symcr::Store::open(path.c_str(), schema_a, options, store);
-    ASSERT_TRUE(status.ok()) << status.message();
-  }
-  // Saves seeds first..last as sequences first..last (on a new store).
-  void save_seeds(int first, int last) {
-    symcr::Store store;
-    open(store);
-    for (int seed = first; seed <= last; ++seed) {
-      fill_a(seed);
-      ASSERT_TRUE(store.save().ok());
-    }
-  }
   // One start that restores (the live state scrambled first) and ends without confirming.
   symcr::Report start_and_crash() {
     symcr::Store store;

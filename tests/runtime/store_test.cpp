@@ -18,6 +18,7 @@
 #include "file_test_util.hpp"
 #include "little_endian.hpp"
 #include "plan.hpp"
+#include "store_fixture.hpp"
 #include "symcr/device.hpp"
 #include "symcr/symcr.hpp"
 
@@ -39,13 +40,6 @@ namespace {
 
 namespace le = symcr::detail::le;
 using symcr::Error;
-
-std::vector<std::uint8_t> state_a() {
-  std::vector<std::uint8_t> bytes = snapshot(copter_a);
-  const std::vector<std::uint8_t> telemetry = snapshot(telemetry_a);
-  bytes.insert(bytes.end(), telemetry.begin(), telemetry.end());
-  return bytes;
-}
 
 // Raw access to a store file, read through its header, to corrupt what a crash could.
 struct StoreFile {
@@ -75,26 +69,8 @@ struct StoreFile {
   void write() const { write_file(path, bytes); }
 };
 
-class StoreTest : public ::testing::Test {
+class StoreTest : public StoreFixture {
  protected:
-  TempDir dir;
-  std::string path = dir.file("copter.store");
-  symcr::StoreOptions options;
-
-  void open(symcr::Store& store, const symcr::Schema& schema = schema_a) {
-    const symcr::Status status = symcr::Store::open(path.c_str(), schema, options, store);
-    ASSERT_TRUE(status.ok()) << status.message();
-  }
-  // Opens, saves seeds first..last (sequences 1..n), closes.
-  void save_seeds(int first, int last) {
-    symcr::Store store;
-    open(store);
-    for (int seed = first; seed <= last; ++seed) {
-      fill_a(seed);
-      const symcr::Status status = store.save();
-      ASSERT_TRUE(status.ok()) << status.message();
-    }
-  }
   symcr::Report restore_latest(const symcr::Schema& schema = schema_a) {
     symcr::Store store;
     open(store, schema);
@@ -107,13 +83,6 @@ class StoreTest : public ::testing::Test {
   // hold seed `seed`.
   void expect_store_restores(symcr::Store& store, int seed);
 };
-
-void expect_a(int seed) {
-  EXPECT_EQ(copter_a.ticks, 1000 + seed);
-  EXPECT_EQ(copter_a.mission.items[2].speed, seed * 10 + 2);
-  EXPECT_EQ(copter_a.armed_ms, 5000000000ull + static_cast<std::uint64_t>(seed));
-  EXPECT_EQ(telemetry_a.frames, static_cast<std::uint32_t>(7 * seed));
-}
 
 void StoreTest::expect_store_restores(symcr::Store& store, int seed) {
   scramble_a();

@@ -16,20 +16,6 @@ namespace {
 
 using symcr::Error;
 
-std::vector<std::uint8_t> state_a() {
-  std::vector<std::uint8_t> bytes = snapshot(copter_a);
-  const std::vector<std::uint8_t> telemetry = snapshot(telemetry_a);
-  bytes.insert(bytes.end(), telemetry.begin(), telemetry.end());
-  return bytes;
-}
-
-std::vector<std::uint8_t> state_b() {
-  std::vector<std::uint8_t> bytes = snapshot(copter_b);
-  const std::vector<std::uint8_t> telemetry = snapshot(telemetry_b);
-  bytes.insert(bytes.end(), telemetry.begin(), telemetry.end());
-  return bytes;
-}
-
 void reset_b() {
   copter_b = CopterB{};
   telemetry_b = Telemetry{};
