@@ -8,6 +8,7 @@
 #include "AP_Math.hpp"
 #include "Location.hpp"
 #include "channel.hpp"
+#include "messages.hpp"
 
 // One loop's worth of sensor readings, as the drivers deliver them.
 struct SensorSample {
@@ -23,6 +24,27 @@ struct SensorSample {
 
 class AP_HAL {
  public:
+  // One SIM_SENSORS frame from the world: this loop's readings and time.
+  void apply_sensors(const mav::SimSensors& in) {
+    sample.gyro = {in.gyro[0], in.gyro[1], in.gyro[2]};
+    sample.accel = {in.accel[0], in.accel[1], in.accel[2]};
+    sample.mag_heading = in.mag_heading;
+    sample.baro_alt = in.baro_alt;
+    sample.gps_new = in.gps_new != 0;
+    sample.gps_fix = in.gps_fix;
+    sample.gps_loc =
+        Location::make(in.gps_lat, in.gps_lng, static_cast<std::int32_t>(in.gps_alt * 100.0f));
+    sample.gps_vel = {in.gps_vel[0], in.gps_vel[1], in.gps_vel[2]};
+    now_us = in.time_us;
+  }
+
+  // This loop's motor outputs to the world (4 of them, 0..1). False when the world is gone.
+  bool send_motors(const float* outputs) {
+    mav::SimMotors out{};
+    for (int i = 0; i < 4; ++i) out.motor[i] = outputs[i];
+    return sim.send(mav::make_frame(mav::SIM_MOTORS, out));
+  }
+
   std::uint64_t micros64() const { return now_us; }
   std::uint32_t millis() const { return static_cast<std::uint32_t>(now_us / 1000); }
 

@@ -24,18 +24,6 @@ void usage() {
                "              [--fallback-depth N] [--confirm-after LOOPS]\n");
 }
 
-void apply_sensors(const mav::SimSensors& in) {
-  SensorSample& s = hal.sample;
-  s.gyro = {in.gyro[0], in.gyro[1], in.gyro[2]};
-  s.accel = {in.accel[0], in.accel[1], in.accel[2]};
-  s.mag_heading = in.mag_heading;
-  s.baro_alt = in.baro_alt;
-  s.gps_new = in.gps_new != 0;
-  s.gps_fix = in.gps_fix;
-  s.gps_loc = Location::make(in.gps_lat, in.gps_lng, static_cast<std::int32_t>(in.gps_alt * 100.0f));
-  s.gps_vel = {in.gps_vel[0], in.gps_vel[1], in.gps_vel[2]};
-  hal.now_us = in.time_us;
-}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -94,16 +82,14 @@ int main(int argc, char** argv) {
   bool restored_pending = restore;
   while (hal.sim.receive(frame, kSensorTimeoutMs)) {
     if (frame.msgid != mav::SIM_SENSORS) continue;
-    apply_sensors(mav::read_payload<mav::SimSensors>(frame));
+    hal.apply_sensors(mav::read_payload<mav::SimSensors>(frame));
     if (restored_pending) {
       restored_pending = false;
       if (!checkpointing.restore()) return 4;
       copter.resume_after_restore();
     }
     copter.loop();
-    mav::SimMotors out{};
-    std::memcpy(out.motor, motors.outputs(), sizeof(out.motor));
-    if (!hal.sim.send(mav::make_frame(mav::SIM_MOTORS, out))) break;
+    if (!hal.send_motors(motors.outputs())) break;
   }
   return 0;
 }

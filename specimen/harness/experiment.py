@@ -10,8 +10,11 @@ object's bytes restored with memcpy, standing for whole-memory C/R), criu (the a
 process dumped and restored by CRIU, which checks the executable as it always does) and
 criu-unchecked (CRIU with that check reduced to sizes, which the world makes equal: the old
 memory under the new code); both only where `criu check` passes, with criu taken from $CRIU or
-PATH. Red team: the vulnerable build is checkpointed periodically, the exploit frame crashes it,
-and the latest checkpoint is restored into the repaired build.
+PATH; symcr-live (no checkpoint, no kill: the live host flies V0's vehicle module and, at the
+point, loads Vk's and moves the state into it with symcr::transfer between two loops; its
+"restore" is the gap from that loop boundary to Vk's first motor outputs). Red team: the
+vulnerable build is checkpointed periodically, the exploit frame crashes it, and the latest
+checkpoint is restored into the repaired build.
 
 Prints Table 1 and writes results.json, one SVG per mission and every flight's track and log
 under --out. Usage: experiment.py [--runs 50] [--out DIR] [--build-dir DIR]
@@ -45,7 +48,8 @@ def parse_args():
     # V0 -> V0 (the same build restored) is the control: every method must succeed there.
     p.add_argument("--versions", nargs="+", default=["V0", "V1", "V2", "V3", "V4"])
     p.add_argument("--methods", nargs="+",
-                   default=["symcr", "symcr-points", "raw-image", "criu", "criu-unchecked"])
+                   default=["symcr", "symcr-points", "symcr-live", "raw-image", "criu",
+                            "criu-unchecked"])
     p.add_argument("--no-redteam", action="store_true")
     p.add_argument("--seed", type=int, default=2020)
     p.add_argument("--outage", type=float, default=0.2, help="seconds without autopilot")
@@ -66,8 +70,12 @@ def find_build(build_dir):
             path = os.path.join(base, variant)
             if os.access(path, os.X_OK):
                 found[variant] = path
-    if os.access(os.path.join(base, "sitl_world"), os.X_OK):
-        found["sitl_world"] = os.path.join(base, "sitl_world")
+        module = os.path.join(base, name + "_live.so")  # a vehicle module (symcr-live)
+        if os.path.exists(module):
+            found[name + "_live"] = module
+    for tool in ("sitl_world", "copter_live"):
+        if os.access(os.path.join(base, tool), os.X_OK):
+            found[tool] = os.path.join(base, tool)
     config = {}
     config_path = os.path.join(base, "specimen_config.json")
     if os.path.exists(config_path):
@@ -77,6 +85,7 @@ def find_build(build_dir):
 
 
 CRIU_METHODS = ("criu", "criu-unchecked")
+LIVE_METHOD = "symcr-live"
 
 
 def find_criu():
@@ -138,8 +147,10 @@ class Progress:
 
 def autopilot(exe, name, method):
     """The build of `name` for `method`: symcr flies the builds that call symcr, symcr-points
-    the builds checkpointed by program points alone (no symcr call in their sources)."""
-    return exe[name + {"symcr": "_symcr", "symcr-points": "_points"}.get(method, "")]
+    the builds checkpointed by program points alone (no symcr call in their sources),
+    symcr-live the vehicle modules of the live host."""
+    suffix = {"symcr": "_symcr", "symcr-points": "_points", "symcr-live": "_live"}
+    return exe[name + suffix.get(method, "")]
 
 
 def fly(exe, mission_path, workdir, seed, autopilot, resume=None, method="none",
@@ -162,6 +173,8 @@ def fly(exe, mission_path, workdir, seed, autopilot, resume=None, method="none",
         cmd += ["--exploit-at", "%.2f" % exploit_at, "--exploit-again", "5"]
     if method in CRIU_METHODS:
         cmd += ["--criu", criu]
+    if method == LIVE_METHOD:
+        cmd += ["--live-host", exe["copter_live"]]
     r = subprocess.run(cmd, capture_output=True, text=True)
     try:
         flight = json.loads(r.stdout.strip().splitlines()[-1])
@@ -216,7 +229,14 @@ def main():
     if wants_criu and not criu_ok:
         notes.append("criu: unavailable on this machine: " + criu_reason)
     methods = [m for m in args.methods
-               if (not m.startswith("symcr") or symcr_built) and (m not in CRIU_METHODS or criu_ok)]
+               if (not m.startswith("symcr") or symcr_built) and (m not in CRIU_METHODS or criu_ok)
+               and (m != LIVE_METHOD or ("copter_live" in exe and "copter_v0_live" in exe))]
+    # The red team's builds have no vehicle modules: a live update does not restart anything.
+    redteam_methods = [m for m in methods if m != LIVE_METHOD]
+    if LIVE_METHOD in methods:
+        notes.append("symcr-live: no checkpoint, no kill, no restart; its Restore (us) is the gap "
+                     "from the loop boundary where V0's code stops to Vk's first motor outputs "
+                     "(transfer, links handed over, resume, one loop)")
     versions = [v for v in args.versions if "copter_" + v.lower() in exe]
     if symcr_built:
         versions = [v for v in versions if "copter_%s_symcr" % v.lower() in exe]
@@ -224,7 +244,7 @@ def main():
                and "copter_redteam_repaired" in exe)
 
     per_mission = 1 + len(versions) * len(methods) + (
-        len(methods) + ("criu" in methods) if redteam else 0)
+        len(redteam_methods) + ("criu" in methods) if redteam else 0)
     progress = Progress(len(missions) * args.runs * per_mission)
     os.makedirs(args.out, exist_ok=True)
     rows, pictures = [], {}
@@ -267,7 +287,7 @@ def main():
                         pictures[name] = (f, "%s %s, %s, run %d" % (name, version, method, i + 1))
                 rows.append(report.make_row(name, version, method, flights))
         if redteam:
-            for method in methods:
+            for method in redteam_methods:
                 def fly_redteam(i, method=method):
                     return fly(exe, mission_path, os.path.join(run_dir, "RT-%s-%d" % (method, i)),
                                seeds[i], autopilot(exe, "copter_redteam", method),
@@ -311,8 +331,8 @@ def main():
         if r["method"] in CRIU_METHODS and r["runs"] > r["successes"]:
             reasons = "; ".join("%d× %s" % (n, why) for why, n in r["failures"].items())
             notes.append("%s, %s %s: %s" % (r["method"], r["mission"], r["version"], reasons))
-    order = {"baseline": 0, "symcr": 1, "symcr-points": 2, "raw-image": 3, "criu": 4,
-             "criu-unchecked": 5}
+    order = {"baseline": 0, "symcr": 1, "symcr-points": 2, "symcr-live": 3, "raw-image": 4,
+             "criu": 5, "criu-unchecked": 6}
     mission_order = {MISSION_NAMES.get(os.path.basename(m), os.path.splitext(os.path.basename(m))[0]): i
                      for i, m in enumerate(missions)}
     rows.sort(key=lambda r: (mission_order.get(r["mission"], 99), r["version"].startswith("RT"),

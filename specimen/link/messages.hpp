@@ -26,6 +26,7 @@ enum MsgId : std::uint8_t {
   SIM_SENSORS = 150,
   SIM_MOTORS = 151,
   SIM_CHECKPOINT = 152,
+  SIM_UPDATE = 153,  // world -> a live autopilot: switch to the patched build now (no payload)
   NAMED_VALUE_FLOAT = 251,
   STATUSTEXT = 253,
 };

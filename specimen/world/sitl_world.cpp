@@ -48,7 +48,11 @@ struct Options {
   std::string mission_path;
   // none | raw-image | symcr | symcr-points | criu | criu-unchecked (CRIU with its file
   // validation reduced to sizes, which the world makes equal: the old memory under the new code)
+  // | symcr-live (the autopilot is the live host flying V0's vehicle module, told to switch to
+  // Vk's in flight: --autopilot and --resume-autopilot are the modules)
   std::string method = "none";
+  std::string live_host;         // symcr-live: the host executable (copter_live)
+  bool live_strict = false;      // symcr-live: refuse a transfer with a lossy decision
   std::string criu = "criu";     // the criu binary
   double criu_every_s = 2;       // red team: seconds between CRIU's dumps
   std::string workdir = ".";
@@ -93,9 +97,10 @@ struct Result {
   std::fprintf(stderr,
                "sitl_world: %s\n"
                "usage: sitl_world --autopilot EXE --mission FILE [--resume-autopilot EXE]\n"
-               "  [--method none|raw-image|symcr|symcr-points|criu|criu-unchecked]\n"
+               "  [--method none|raw-image|symcr|symcr-points|criu|criu-unchecked|symcr-live]\n"
                "  [--checkpoint-at S] [--exploit-at S] [--exploit-again S]\n"
                "  [--pause-at S] [--pause S] [--restarts N] [--fallback-depth N]\n"
+               "  [--live-host EXE] [--live-strict 0|1] (symcr-live)\n"
                "  [--checkpoint-every LOOPS]"
                " [--criu EXE] [--criu-every S] [--outage S] [--seed N] [--time-limit S]\n"
                "  [--speedup X] [--wind M/S] [--workdir DIR] [--track FILE]\n",
@@ -123,6 +128,8 @@ Options parse(int argc, char** argv) {
     else if (arg == "--pause") o.pause_s = std::stod(value);
     else if (arg == "--restarts") o.restarts = std::stoi(value);
     else if (arg == "--fallback-depth") o.fallback_depth = std::stoi(value);
+    else if (arg == "--live-host") o.live_host = value;
+    else if (arg == "--live-strict") o.live_strict = value == "1";
     else if (arg == "--checkpoint-every") o.checkpoint_every = std::stoi(value);
     else if (arg == "--outage") o.outage_s = std::stod(value);
     else if (arg == "--time-limit") o.time_limit_s = std::stod(value);
@@ -135,8 +142,10 @@ Options parse(int argc, char** argv) {
   }
   if (o.autopilot.empty() || o.mission_path.empty()) usage("--autopilot and --mission are required");
   if (o.method != "none" && o.method != "raw-image" && o.method != "symcr" &&
-      o.method != "symcr-points" && o.method != "criu" && o.method != "criu-unchecked")
+      o.method != "symcr-points" && o.method != "criu" && o.method != "criu-unchecked" &&
+      o.method != "symcr-live")
     usage("unknown method");
+  if (o.method == "symcr-live" && o.live_host.empty()) usage("symcr-live needs --live-host");
   if (o.resume_autopilot.empty()) o.resume_autopilot = o.autopilot;
   return o;
 }
@@ -195,6 +204,10 @@ class World {
 
   std::vector<std::string> autopilot_args() const {
     std::vector<std::string> args;
+    if (live()) {
+      return {"--module", options_.autopilot, "--update-module", options_.resume_autopilot,
+              "--strict", options_.live_strict ? "1" : "0"};
+    }
     if (options_.method != "none" && !criu_) {
       args = {"--checkpoint", options_.method, "--checkpoint-path",
               options_.workdir + "/checkpoint." + (options_.method == "raw-image" ? "img" : "store"),
@@ -206,6 +219,7 @@ class World {
     return args;
   }
   std::string log_path() const { return options_.workdir + "/autopilot.log"; }
+  bool live() const { return options_.method == "symcr-live"; }
   // Where the criu methods run the autopilot from: V0, then Vk put in its place.
   std::string installed_executable() const {
     return (std::filesystem::absolute(options_.workdir) / "autopilot").lexically_normal().string();
@@ -302,6 +316,7 @@ bool World::autopilot_loop(std::array<double, 4>& motors, bool& saved_this_loop,
       } else if (msg.event == mav::CKPT_RESTORED) {
         result_->restored = true;
         result_->restore_us = msg.nanos * 1e-3;
+        if (live()) result_->resume_point = here();  // Vk's code flies from here
       } else {
         result_->restored = false;
       }
@@ -426,7 +441,7 @@ Result World::run() {
   const double limit_s = options_.time_limit_s > 0
                              ? options_.time_limit_s
                              : 2.5 * route_m / mission_.cruise_speed_ms() + 120.0;
-  std::string first = options_.autopilot;
+  std::string first = live() ? options_.live_host : options_.autopilot;
   if (criu_) {
     if (!install_executable(options_.autopilot, result.reason)) return result;
     first = installed_executable();
@@ -523,7 +538,14 @@ Result World::run() {
     const bool at_checkpoint_point = station_.mission_started() && options_.method != "none" &&
                                      options_.exploit_at_s < 0 && options_.checkpoint_at_s >= 0 &&
                                      !result.restarted && mission_s >= options_.checkpoint_at_s;
-    if (at_checkpoint_point && criu_) {
+    if (at_checkpoint_point && live()) {
+      // No checkpoint, no kill: the running autopilot switches to Vk's code in flight.
+      mav::Frame update;
+      update.msgid = mav::SIM_UPDATE;
+      autopilot_.sim().send(update);
+      result.restarted = true;
+      result.checkpoint_point = here();
+    } else if (at_checkpoint_point && criu_) {
       // CRIU's dump stops the flight computer: the checkpoint and the crash in one.
       if (!criu_dump(result, /*leave_running=*/false)) break;
       if (!restart_autopilot(result, segment)) return result;
@@ -553,6 +575,8 @@ Result World::run() {
     // A red-team flight with a checkpoint method measures the restore after the crash: an
     // exploit that did not stop the autopilot tested nothing.
     result.reason = "the exploit did not stop the autopilot: nothing was restored";
+  } else if (live() && result.restarted && !result.restored) {
+    result.reason = "the update was refused: V0's code flew on";
   } else if (result.restarted && !result.restored) {
     result.reason = "the restarted autopilot did not report a restore";
   } else {
