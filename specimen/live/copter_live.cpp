@@ -12,6 +12,7 @@
 // The gap reported to the world (SIM_CHECKPOINT, CKPT_RESTORED) is the time from the loop
 // boundary to the new module's first motor outputs: transfer, hand-over, resume and one loop.
 #include <dlfcn.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <chrono>
@@ -19,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <thread>
 
@@ -53,8 +55,23 @@ bool resolve(void* handle, const char* name, Function& out) {
 }
 
 // Loads a module (RTLD_LOCAL: its globals, runtime and schema are its own) and sets it up.
-bool load(const char* path, Module& out) {
-  out.handle = ::dlopen(path, RTLD_NOW | RTLD_LOCAL);
+// A file already loaded would give the loaded copy back: the same build as an update (V0 -> V0)
+// is loaded from a copy of its file, a module of its own.
+bool load(const char* path, Module& out, const char* loaded = nullptr) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  std::string copy;
+  if (loaded != nullptr && fs::equivalent(path, loaded, error)) {
+    copy = (fs::temp_directory_path() / ("copter_live_" + std::to_string(::getpid()) + ".so"))
+               .string();
+    fs::copy_file(path, copy, fs::copy_options::overwrite_existing, error);
+    if (error) {
+      std::fprintf(stderr, "copter_live: cannot copy %s: %s\n", path, error.message().c_str());
+      return false;
+    }
+  }
+  out.handle = ::dlopen(copy.empty() ? path : copy.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!copy.empty()) fs::remove(copy, error);  // mapped: the file is no longer needed
   if (out.handle == nullptr) {
     std::fprintf(stderr, "copter_live: cannot load %s: %s\n", path, ::dlerror());
     return false;
@@ -134,7 +151,7 @@ int main(int argc, char** argv) {
     if (frame.msgid == mav::SIM_UPDATE && next_state.load() == 0) {
       next_state = 1;
       loader = std::thread([&] {
-        const bool ok = load(update_path, next) &&
+        const bool ok = load(update_path, next, module_path) &&
                         symcr::prepare_transfer(*flying.schema, *next.schema).ok();
         next_state = ok ? 2 : 3;
       });

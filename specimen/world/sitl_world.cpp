@@ -576,7 +576,7 @@ Result World::run() {
     // exploit that did not stop the autopilot tested nothing.
     result.reason = "the exploit did not stop the autopilot: nothing was restored";
   } else if (live() && result.restarted && !result.restored) {
-    result.reason = "the update was refused: V0's code flew on";
+    result.reason = "no update (refused, or Vk could not be loaded): V0's code flew on";
   } else if (result.restarted && !result.restored) {
     result.reason = "the restarted autopilot did not report a restore";
   } else {
