@@ -18,19 +18,23 @@ std::vector<std::uint8_t>& transfer_buffer() {
   return buffer;
 }
 
+Status check_two_builds(const Schema& from, const Schema& to) {
+  if (&from != &to) return Status();
+  return Status(Error::Incompatible, "a transfer needs two builds: `from` and `to` are one");
+}
+
 }  // namespace
 
 Status prepare_transfer(const Schema& from, const Schema& to) {
-  if (&from == &to) {
-    return Status(Error::Incompatible, "a transfer needs two builds: `from` and `to` are one");
-  }
-  detail::prepare_restore(from, detail::schema_blob(from).hash, to, nullptr);
-  return Status();
+  const Status status = check_two_builds(from, to);
+  if (status.ok()) detail::prepare_restore(from, detail::schema_blob(from).hash, to, nullptr);
+  return status;
 }
 
+// The plan is looked up (or built) once, by restore_payload: prepare_transfer is only ahead of it.
 Report transfer(const Schema& from, const Schema& to, const RestoreOptions& options) {
   Report report;
-  Status status = prepare_transfer(from, to);
+  Status status = check_two_builds(from, to);
   if (status.ok()) {
     status = detail::check_program(detail::schema_blob(from).program_id,
                                    detail::schema_blob(to).program_id, to.program,
