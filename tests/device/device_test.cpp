@@ -307,6 +307,26 @@ struct Flash {
   }
 };
 
+// Backup SRAM whose writes a reset can cut short: the bytes before the cut are new, the rest old.
+struct BackupSram {
+  std::vector<std::uint8_t> bytes;
+  std::size_t torn_after = SIZE_MAX;
+  explicit BackupSram(std::size_t size) : bytes(size, 0) {}
+
+  symcr::device::Storage storage() { return {bytes.size(), 1, read, write, nullptr, this}; }
+  static bool read(void* self, std::size_t offset, void* out, std::size_t n) {
+    std::memcpy(out, static_cast<BackupSram*>(self)->bytes.data() + offset, n);
+    return true;
+  }
+  static bool write(void* self, std::size_t offset, const void* data, std::size_t n) {
+    BackupSram& sram = *static_cast<BackupSram*>(self);
+    const std::size_t written = std::min(n, sram.torn_after);
+    std::memcpy(sram.bytes.data() + offset, data, written);
+    sram.torn_after -= sram.torn_after == SIZE_MAX ? 0 : written;
+    return written == n;
+  }
+};
+
 struct RingBuffers {
   std::vector<std::uint8_t> record = std::vector<std::uint8_t>(1024);
   std::vector<std::uint8_t> scratch =
@@ -385,11 +405,131 @@ TEST(DeviceRing, OnFlashErasesBeforeWritingAndSurvivesATornWrite) {
   ASSERT_EQ(ring_restore(after_reset, b, &sequence, &skipped), Result::Ok);
   EXPECT_EQ(sequence, 2u);
   expect_filled(2);
-  // Saving goes on after the newest header, the torn slot's, and rewrites nothing older.
+  // Saving goes on after the newest whole record: into the torn slot, with the torn save's
+  // sequence, rewriting nothing older.
   fill(4);
   ASSERT_EQ(after_reset.save(build(), b.record.data(), b.record.size()), Result::Ok);
   ASSERT_EQ(ring_restore(after_reset, b, &sequence, &skipped), Result::Ok);
-  EXPECT_EQ(sequence, 4u);
+  EXPECT_EQ(sequence, 3u);
+  EXPECT_EQ(skipped, 0u);
+  expect_filled(4);
+  EXPECT_EQ(flash.erases, 4u);  // the torn save's and this one's, both of the same slot
+}
+
+// On flash a reset while a save programs its slot can leave the magic written and the sequence
+// still erased (all ones): that slot must not be taken for the newest, nor its sequence + 1
+// (wrapped to 0) for the next one. Every point of the save's writes is tried.
+TEST(DeviceRing, OnFlashAResetAtAnyByteOfASaveNeverPinsTheRing) {
+  RingBuffers b;
+  const std::size_t record = symcr::device::record_size(kSchema);
+  for (std::size_t cut = 0; cut <= record; ++cut) {
+    Flash flash(4 * 512, 512);
+    {
+      symcr::device::Ring ring;
+      ASSERT_EQ(ring.open(flash.storage(), 512), Result::Ok);
+      for (int seed = 1; seed <= 6; ++seed) {
+        fill(seed);
+        ASSERT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Ok);
+      }
+      fill(7);
+      flash.torn_after = cut;  // the reset comes in the middle of save 7
+      ring.save(build(), b.record.data(), b.record.size());
+      flash.torn_after = SIZE_MAX;
+    }
+    std::uint64_t sequence = 0;
+    {
+      symcr::device::Ring ring;
+      ASSERT_EQ(ring.open(flash.storage(), 512), Result::Ok);
+      scramble();
+      ASSERT_EQ(ring_restore(ring, b, &sequence, nullptr), Result::Ok) << "cut after " << cut;
+      const int restored = holds(7) ? 7 : 6;
+      EXPECT_TRUE(holds(restored)) << "cut after " << cut;
+      EXPECT_EQ(sequence, static_cast<std::uint64_t>(restored)) << "cut after " << cut;
+      for (int seed = 8; seed <= 17; ++seed) {
+        fill(seed);
+        ASSERT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Ok);
+      }
+      EXPECT_EQ(ring.last_sequence(), static_cast<std::uint64_t>(restored + 10)) << cut;
+    }
+    symcr::device::Ring ring;
+    ASSERT_EQ(ring.open(flash.storage(), 512), Result::Ok);
+    scramble();
+    ASSERT_EQ(ring_restore(ring, b, &sequence, nullptr), Result::Ok) << "cut after " << cut;
+    EXPECT_TRUE(holds(17)) << "cut after " << cut << ": the newest save is not restored";
+  }
+}
+
+// In backup SRAM a save rewrites its slot in place. When the record there had been damaged and
+// the new one takes its sequence, a reset after the new header's first bytes must not bring the
+// old record back as the newest, in front of a later save.
+TEST(DeviceRing, OnBackupSramATornRewriteNeverRevivesADamagedOlderRecord) {
+  RingBuffers b;
+  const std::size_t record = symcr::device::record_size(kSchema);
+  for (std::size_t cut = 0; cut <= 64 + record; ++cut) {
+    BackupSram sram(3 * 512);
+    symcr::device::Ring ring;
+    ASSERT_EQ(ring.open(sram.storage(), 512), Result::Ok);
+    for (int seed = 1; seed <= 3; ++seed) {  // sequences 1, 2, 3 in slots 0, 1, 2
+      fill(seed);
+      ASSERT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Ok);
+    }
+    sram.bytes[512] ^= 0x01;      // save 2's magic
+    sram.bytes[1024] ^= 0x01;     // save 3's magic
+    fill(4);                      // goes after save 1, as sequence 2, into slot 1
+    ASSERT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Ok);
+    fill(5);                      // goes into slot 2, as sequence 3: save 3's
+    sram.torn_after = cut;
+    ring.save(build(), b.record.data(), b.record.size());
+    sram.torn_after = SIZE_MAX;
+    symcr::device::Ring after_reset;
+    ASSERT_EQ(after_reset.open(sram.storage(), 512), Result::Ok);
+    scramble();
+    ASSERT_EQ(ring_restore(after_reset, b, nullptr, nullptr), Result::Ok) << "cut after " << cut;
+    EXPECT_TRUE(holds(4) || holds(5)) << "cut after " << cut << ": an older save came back";
+  }
+}
+
+// Sequences run from 1 to kLastRingSequence. A record with any other (here all ones, erased
+// flash's) is not the ring's, and the next save never wraps to 0; at the last one, save refuses
+// and changes nothing.
+TEST(DeviceRing, SequencesNeverWrapAndTheLastOneRefusesFurtherSaves) {
+  RingBuffers b;
+  std::vector<std::uint8_t> sram(3 * 1024, 0);
+  const symcr::device::Storage storage = symcr::device::memory_storage(sram.data(), sram.size());
+  auto plant = [&](std::uint64_t sequence, std::size_t slot) {
+    std::size_t size = 0;
+    ASSERT_EQ(symcr::device::save(build(), sequence, b.record.data(), b.record.size(), &size),
+              Result::Ok);
+    std::memcpy(sram.data() + slot * 1024, b.record.data(), size);
+  };
+  fill(1);
+  plant(1, 0);
+  fill(2);
+  plant(~std::uint64_t{0}, 1);
+  symcr::device::Ring ring;
+  ASSERT_EQ(ring.open(storage, 1024), Result::Ok);
+  EXPECT_EQ(ring.last_sequence(), 1u);
+  std::uint64_t sequence = 0;
+  ASSERT_EQ(ring_restore(ring, b, &sequence, nullptr), Result::Ok);
+  EXPECT_EQ(sequence, 1u);
+  expect_filled(1);
+  fill(3);
+  ASSERT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Ok);
+  EXPECT_EQ(ring.last_sequence(), 2u);
+  ASSERT_EQ(ring_restore(ring, b, &sequence, nullptr), Result::Ok);
+  EXPECT_EQ(sequence, 2u);
+  expect_filled(3);
+
+  fill(4);
+  plant(symcr::device::kLastRingSequence, 2);
+  ASSERT_EQ(ring.open(storage, 1024), Result::Ok);
+  EXPECT_EQ(ring.last_sequence(), symcr::device::kLastRingSequence);
+  const std::vector<std::uint8_t> before = sram;
+  fill(5);
+  EXPECT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::SequenceExhausted);
+  EXPECT_EQ(sram, before);
+  ASSERT_EQ(ring_restore(ring, b, &sequence, nullptr), Result::Ok);
+  EXPECT_EQ(sequence, symcr::device::kLastRingSequence);
   expect_filled(4);
 }
 
@@ -417,6 +557,8 @@ TEST(DeviceProfile, ResultsHaveTexts) {
   EXPECT_STREQ(symcr::device::result_text(Result::Ok), "ok");
   EXPECT_STREQ(symcr::device::result_text(Result::OtherSchema), "record of another build's schema");
   EXPECT_STREQ(symcr::device::result_text(Result::Empty), "no checkpoint saved yet");
+  EXPECT_STREQ(symcr::device::result_text(Result::SequenceExhausted),
+               "the ring's sequence numbers are used up");
 }
 
 }  // namespace

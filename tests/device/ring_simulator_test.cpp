@@ -234,7 +234,7 @@ class Sequence {
     storage_.reset(new FaultyStorage(flash_, slots_ * slot_size_ + tail, unit, slot_size_, random_));
     buffer_.resize(slot_size_);
     scratch_.resize(symcr::device::scratch_size(kSchema));
-    last_save_bytes_ = (flash_ ? slot_size_ : 8) + record_size_;
+    last_save_bytes_ = slot_size_ + record_size_;  // until a whole save measures it
     trace("%s, %zu slots of %zu bytes (unit %zu), %zu bytes in all, record %zu bytes",
           flash_ ? "NOR flash" : "backup SRAM", slots_, slot_size_, unit,
           storage_->bytes().size(), record_size_);

@@ -28,6 +28,8 @@ const char* result_text(Result result) {
       return "more pointer targets than kMaxReferences";
     case Result::Empty:
       return "no checkpoint saved yet";
+    case Result::SequenceExhausted:
+      return "the ring's sequence numbers are used up";
   }
   return "?";
 }

@@ -1,6 +1,8 @@
 // The device profile's ring of checkpoint slots over a Storage (device.hpp): the slot to write
-// next and the newest slot to restore are found from the slots' own record headers, so the
-// ring keeps no state of its own in storage.
+// next and the newest slot to restore are found from the slots' own records, so the ring keeps
+// no state of its own in storage. A header's sequence is trusted only once its record's CRC
+// holds: a reset while a slot is written leaves any header (on flash, the magic written and the
+// sequence still erased, all ones), and such a slot must not decide where saving goes on.
 #include <cstring>
 
 #include "device_format.hpp"
@@ -40,7 +42,8 @@ Result Ring::open(const Storage& storage, std::size_t slot_size) {
   slot_count_ = slots > kMaxSlots ? kMaxSlots : slots;
   std::uint64_t sequences[kMaxSlots];
   std::size_t order[kMaxSlots];
-  if (scan(sequences, order) > 0) last_sequence_ = sequences[order[0]];
+  const std::size_t newest = newest_whole(order, scan(sequences, order));
+  if (newest != kMaxSlots) last_sequence_ = sequences[newest];
   return Result::Ok;
 }
 
@@ -54,7 +57,10 @@ std::size_t Ring::scan(std::uint64_t* sequences, std::size_t* order) const {
       continue;
     }
     sequences[i] = detail::load64(header + detail::kOffsetSequence);
-    if (sequences[i] == 0) continue;
+    if (sequences[i] == 0 || sequences[i] > kLastRingSequence) {  // not a sequence save writes
+      sequences[i] = 0;
+      continue;
+    }
     // Insertion by sequence, newest first: a handful of slots.
     std::size_t at = used++;
     while (at > 0 && sequences[order[at - 1]] < sequences[i]) {
@@ -66,24 +72,60 @@ std::size_t Ring::scan(std::uint64_t* sequences, std::size_t* order) const {
   return used;
 }
 
+bool Ring::whole(std::size_t slot) const {
+  // The CRC is computed through a small window, so that open() and save() need no slot-sized
+  // buffer: the header's checksum field counts as zeros (docs/format.md §1).
+  std::uint8_t window[detail::kHeaderSize];
+  const std::size_t offset = slot * slot_size_;
+  if (!storage_.read(storage_.context, offset, window, sizeof window)) return false;
+  const std::size_t header = detail::load16(window + detail::kOffsetHeaderSize);
+  const std::uint64_t record = static_cast<std::uint64_t>(header) +
+                               detail::load32(window + detail::kOffsetSchemaSize) +
+                               detail::load32(window + detail::kOffsetPayloadSize);
+  if (header < detail::kHeaderSize || record > slot_size_) return false;
+  const std::uint32_t stored = detail::load32(window + detail::kOffsetChecksum);
+  detail::store32(window + detail::kOffsetChecksum, 0);
+  std::uint32_t crc = detail::crc32c(0, window, sizeof window);
+  for (std::size_t at = sizeof window; at < record;) {
+    const std::size_t n = record - at < sizeof window ? record - at : sizeof window;
+    if (!storage_.read(storage_.context, offset + at, window, n)) return false;
+    crc = detail::crc32c(crc, window, n);
+    at += n;
+  }
+  return crc == stored;
+}
+
+std::size_t Ring::newest_whole(const std::size_t* order, std::size_t used) const {
+  for (std::size_t k = 0; k < used; ++k) {
+    if (whole(order[k])) return order[k];
+  }
+  return kMaxSlots;
+}
+
 Result Ring::save(const Build& build, std::uint8_t* buffer, std::size_t capacity) {
   if (slot_count_ == 0) return Result::Unsupported;
   std::uint64_t sequences[kMaxSlots];
   std::size_t order[kMaxSlots];
-  const std::size_t used = scan(sequences, order);
-  const std::size_t target = used == 0 ? 0 : (order[0] + 1) % slot_count_;
-  const std::uint64_t sequence = (used == 0 ? last_sequence_ : sequences[order[0]]) + 1;
+  // After the newest whole record: a torn or damaged slot is passed over, and is the slot
+  // written next when it follows that record.
+  const std::size_t newest = newest_whole(order, scan(sequences, order));
+  const std::size_t target = newest == kMaxSlots ? 0 : (newest + 1) % slot_count_;
+  const std::uint64_t previous = newest == kMaxSlots ? last_sequence_ : sequences[newest];
+  if (previous >= kLastRingSequence) return Result::SequenceExhausted;  // never wrap to 0
+  const std::uint64_t sequence = previous + 1;
   std::size_t size = 0;
   const std::size_t limit = capacity < slot_size_ ? capacity : slot_size_;
   Result result = device::save(build, sequence, buffer, limit, &size);
   if (result != Result::Ok) return result;
   const std::size_t offset = target * slot_size_;
-  // The old record goes first: a reset in between leaves an unreadable slot, never a stale one
-  // that looks new.
+  // The old record goes first, its whole header with its CRC (on flash, the slot): a reset
+  // later in the save leaves a slot whose CRC fails. Blanking only the magic would let a torn
+  // write of the new header (the same sequence, when the old record had been damaged) bring the
+  // old record back as the newest.
   if (storage_.erase_unit > 1) {
     if (!storage_.erase(storage_.context, offset, slot_size_)) return Result::Corrupt;
   } else {
-    static const std::uint8_t kBlank[sizeof detail::kMagic] = {0};
+    static const std::uint8_t kBlank[detail::kHeaderSize] = {0};
     if (!storage_.write(storage_.context, offset, kBlank, sizeof kBlank)) return Result::Corrupt;
   }
   if (!storage_.write(storage_.context, offset, buffer, size)) return Result::Corrupt;

@@ -36,6 +36,7 @@ enum class Result : std::uint8_t {
   Rejected,         // a value outside its SYMCR_RANGE, or refused by its symcr_validate
   TooManyPointers,  // more distinct pointer targets than kMaxReferences
   Empty,            // Ring::restore_latest: no slot was ever written
+  SequenceExhausted,  // Ring::save: the newest record's sequence is the last a ring writes
 };
 
 // A short English description of `result`, for logs.
@@ -95,16 +96,22 @@ struct Storage {
 // A Storage over plain memory at `base`: backup SRAM, or RAM a reset does not clear.
 Storage memory_storage(void* base, std::size_t size);
 
-// Slots over a Storage, each holding one record: save() writes the oldest (a torn write
-// destroys only that slot), restore_latest() restores the newest slot that restores and falls
-// back past corrupt, torn and refused ones. At most kMaxSlots slots.
+// Slots over a Storage, each holding one record: save() writes the slot after the newest whole
+// record (a reset during the write destroys only that slot), restore_latest() restores the
+// newest slot that restores and falls back past corrupt, torn and refused ones. Only records
+// whose CRC holds count: a torn or damaged slot never decides where saving goes on. Sequences
+// run from 1 to kLastRingSequence; a record outside that range is not the ring's. At most
+// kMaxSlots slots. docs/device.md lists the guarantees (D1-D6).
 constexpr std::size_t kMaxSlots = 8;
+constexpr std::uint64_t kLastRingSequence = ~std::uint64_t{0} - 1;  // all ones: erased flash
 class Ring {
  public:
   // `slot_size` bytes per slot, a multiple of the storage's erase unit; two slots at least.
   Result open(const Storage& storage, std::size_t slot_size);
 
-  // Saves into the slot after the newest one; `buffer` holds the record while it is written.
+  // Saves into the slot after the newest whole record, with the sequence after its; `buffer`
+  // holds the record while it is written. SequenceExhausted, changing nothing, when that record's
+  // sequence is kLastRingSequence (only a record written elsewhere gets there).
   Result save(const Build& build, std::uint8_t* buffer, std::size_t capacity);
 
   // Restores the newest slot that restores; `buffer` receives each slot as it is read (a slot's
@@ -117,11 +124,17 @@ class Ring {
                         std::size_t* skipped = nullptr);
 
   std::size_t slot_count() const { return slot_count_; }
-  std::uint64_t last_sequence() const { return last_sequence_; }  // 0: nothing saved yet
+  // The newest whole record's sequence when opened, then the last save's; 0: none.
+  std::uint64_t last_sequence() const { return last_sequence_; }
 
  private:
-  // Each slot's sequence from its header (0: empty or unreadable), newest first in `order`.
+  // Each slot's sequence from its header (0: empty, unreadable or out of range), newest first
+  // in `order`; the count in `order` is returned. Unchecked: see whole().
   std::size_t scan(std::uint64_t* sequences, std::size_t* order) const;
+  // Whether the slot holds a record whose CRC holds (read in pieces, no buffer needed).
+  bool whole(std::size_t slot) const;
+  // The first of `order` that is whole, or kMaxSlots.
+  std::size_t newest_whole(const std::size_t* order, std::size_t used) const;
 
   Storage storage_{};
   std::size_t slot_size_ = 0;
