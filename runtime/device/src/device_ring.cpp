@@ -125,8 +125,8 @@ Result Ring::save(const Build& build, std::uint8_t* buffer, std::size_t capacity
   if (storage_.erase_unit > 1) {
     if (!storage_.erase(storage_.context, offset, slot_size_)) return Result::Corrupt;
   } else {
-    static const std::uint8_t kBlank[detail::kHeaderSize] = {0};
-    if (!storage_.write(storage_.context, offset, kBlank, sizeof kBlank)) return Result::Corrupt;
+    const std::uint8_t blank[detail::kHeaderSize] = {};  // on the stack: no flash for zeros
+    if (!storage_.write(storage_.context, offset, blank, sizeof blank)) return Result::Corrupt;
   }
   if (!storage_.write(storage_.context, offset, buffer, size)) return Result::Corrupt;
   last_sequence_ = sequence;
