@@ -558,7 +558,7 @@ TEST(DeviceProfile, ResultsHaveTexts) {
   EXPECT_STREQ(symcr::device::result_text(Result::OtherSchema), "record of another build's schema");
   EXPECT_STREQ(symcr::device::result_text(Result::Empty), "no checkpoint saved yet");
   EXPECT_STREQ(symcr::device::result_text(Result::SequenceExhausted),
-               "the ring's sequence numbers are used up");
+               "sequence numbers used up");
 }
 
 }  // namespace

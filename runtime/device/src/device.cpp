@@ -29,7 +29,7 @@ const char* result_text(Result result) {
     case Result::Empty:
       return "no checkpoint saved yet";
     case Result::SequenceExhausted:
-      return "the ring's sequence numbers are used up";
+      return "sequence numbers used up";
   }
   return "?";
 }

@@ -118,15 +118,17 @@ Result Ring::save(const Build& build, std::uint8_t* buffer, std::size_t capacity
   Result result = device::save(build, sequence, buffer, limit, &size);
   if (result != Result::Ok) return result;
   const std::size_t offset = target * slot_size_;
-  // The old record goes first, its whole header with its CRC (on flash, the slot): a reset
-  // later in the save leaves a slot whose CRC fails. Blanking only the magic would let a torn
-  // write of the new header (the same sequence, when the old record had been damaged) bring the
-  // old record back as the newest.
+  // The old record's CRC goes first (on flash, the whole slot): a reset later in the save
+  // leaves a slot whose CRC fails. With the old CRC kept, a torn write of the new header (the
+  // same sequence, when the old record had been damaged) could bring the old record back.
   if (storage_.erase_unit > 1) {
     if (!storage_.erase(storage_.context, offset, slot_size_)) return Result::Corrupt;
   } else {
-    const std::uint8_t blank[detail::kHeaderSize] = {};  // on the stack: no flash for zeros
-    if (!storage_.write(storage_.context, offset, blank, sizeof blank)) return Result::Corrupt;
+    static const std::uint8_t kBlank[4] = {0};
+    if (!storage_.write(storage_.context, offset + detail::kOffsetChecksum, kBlank,
+                        sizeof kBlank)) {
+      return Result::Corrupt;
+    }
   }
   if (!storage_.write(storage_.context, offset, buffer, size)) return Result::Corrupt;
   last_sequence_ = sequence;
