@@ -102,7 +102,6 @@ class FaultyStorage {
     armed_ = true;
     budget_ = after_bytes;
   }
-  bool armed() const { return armed_; }
   std::size_t budget() const { return budget_; }
   bool powered_off() const { return off_; }
   void power_on() {

@@ -103,7 +103,7 @@ Storage memory_storage(void* base, std::size_t size);
 // run from 1 to kLastRingSequence; a record outside that range is not the ring's. At most
 // kMaxSlots slots. docs/device.md lists the guarantees (D1-D6).
 constexpr std::size_t kMaxSlots = 8;
-constexpr std::uint64_t kLastRingSequence = ~std::uint64_t{0} - 1;  // all ones: erased flash
+constexpr std::uint64_t kLastRingSequence = ~std::uint64_t{0} - 1;  // not all ones: erased flash
 class Ring {
  public:
   // `slot_size` bytes per slot, a multiple of the storage's erase unit; two slots at least.
