@@ -3,8 +3,6 @@
 
 #include <fcntl.h>
 #include <limits.h>
-#include <dirent.h>
-#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -12,6 +10,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+
+#include "file_system.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -21,7 +21,7 @@ class FdGuard {
  public:
   explicit FdGuard(int fd) : fd_(fd) {}
   ~FdGuard() {
-    if (fd_ >= 0) ::close(fd_);
+    if (fd_ >= 0) file_system().close(fd_);
   }
   FdGuard(const FdGuard&) = delete;
   FdGuard& operator=(const FdGuard&) = delete;
@@ -37,11 +37,7 @@ class FdGuard {
 };
 
 int open_retrying(const char* path, int flags, mode_t mode = 0) {
-  int fd;
-  do {
-    fd = ::open(path, flags, mode);
-  } while (fd < 0 && errno == EINTR);
-  return fd;
+  return file_system().open(path, flags, mode);
 }
 
 // Writes the directory holding `path` into `directory` ("." or "/" where that is it) and
@@ -78,35 +74,15 @@ long temp_file_pid(const char* name, const char* base, std::size_t base_length) 
   return pid;
 }
 
-// Removes temp files that an earlier checkpoint() of `path` left behind when its process was
-// killed between creating and renaming them: files of exactly our naming, owned by this user,
-// whose process no longer exists. Done once per path and thread (the last path cleaned is
-// remembered), so a steady stream of checkpoints reads the directory once.
-void remove_stale_temp_files(const char* path) {
+// Removes, once per path and thread, what remove_stale_temp_files() would: a steady stream of
+// checkpoints of one path reads the directory once.
+void remove_stale_temp_files_once(const char* path) {
   thread_local char last_cleaned[PATH_MAX] = {};
   if (std::strcmp(last_cleaned, path) == 0) return;
   const std::size_t length = std::strlen(path);
   if (length >= sizeof last_cleaned) return;
   std::memcpy(last_cleaned, path, length + 1);
-
-  char directory[PATH_MAX];
-  const char* base = split_directory(path, directory, sizeof directory);
-  if (base == nullptr) return;
-  DIR* listing = ::opendir(directory);
-  if (listing == nullptr) return;
-  const std::size_t base_length = std::strlen(base);
-  const long own_pid = static_cast<long>(::getpid());
-  while (const dirent* entry = ::readdir(listing)) {
-    const long pid = temp_file_pid(entry->d_name, base, base_length);
-    // Our own pid: another thread of this process may be writing that file right now.
-    if (pid <= 0 || pid == own_pid) continue;
-    if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // still alive
-    struct stat info {};
-    if (::fstatat(::dirfd(listing), entry->d_name, &info, AT_SYMLINK_NOFOLLOW) != 0) continue;
-    if (!S_ISREG(info.st_mode) || info.st_uid != ::geteuid()) continue;
-    ::unlinkat(::dirfd(listing), entry->d_name, 0);
-  }
-  ::closedir(listing);
+  remove_stale_temp_files(path);
 }
 
 }  // namespace
@@ -118,10 +94,35 @@ __attribute__((cold)) Status io_error(const char* what, const char* path, int er
   return Status(Error::Io, "%s %s: %s", what, path, message);
 }
 
+void remove_stale_temp_files(const char* path) {
+  char directory[PATH_MAX];
+  const char* base = split_directory(path, directory, sizeof directory);
+  if (base == nullptr) return;
+  struct Listing {
+    const char* directory;
+    const char* base;
+    std::size_t base_length;
+    long own_pid;
+  } listing{directory, base, std::strlen(base), file_system().process_id()};
+  file_system().list_directory(directory, [](void* context, const char* name) {
+    const Listing& l = *static_cast<const Listing*>(context);
+    const long pid = temp_file_pid(name, l.base, l.base_length);
+    // Our own pid: another thread of this process may be writing that file right now.
+    if (pid <= 0 || pid == l.own_pid || file_system().process_exists(pid)) return;
+    char temp[PATH_MAX];
+    const int n = std::snprintf(temp, sizeof temp, "%s/%s", l.directory, name);
+    if (n <= 0 || static_cast<std::size_t>(n) >= sizeof temp) return;
+    struct stat info {};
+    if (file_system().lstat(temp, &info) != 0) return;
+    if (!S_ISREG(info.st_mode) || info.st_uid != ::geteuid()) return;
+    file_system().unlink(temp);
+  }, &listing);
+}
+
 Status pwrite_all(int fd, const void* data, std::size_t size, off_t offset, const char* path) {
   const auto* p = static_cast<const std::uint8_t*>(data);
   while (size > 0) {
-    const ssize_t written = ::pwrite(fd, p, size, offset);
+    const ssize_t written = file_system().pwrite(fd, p, size, offset);
     if (written < 0) {
       if (errno == EINTR) continue;
       return io_error("cannot write", path, errno);
@@ -139,7 +140,7 @@ Status pread_full(int fd, void* data, std::size_t size, off_t offset, std::size_
   auto* p = static_cast<std::uint8_t*>(data);
   got = 0;
   while (got < size) {
-    const ssize_t n = ::pread(fd, p + got, size - got, offset + static_cast<off_t>(got));
+    const ssize_t n = file_system().pread(fd, p + got, size - got, offset + static_cast<off_t>(got));
     if (n < 0) {
       if (errno == EINTR) continue;
       return io_error("cannot read", path, errno);
@@ -162,7 +163,7 @@ Status read_regular_file(const char* path, std::uint64_t max_size,
     return io_error("cannot open", path, errno);
   }
   struct stat info {};
-  if (::fstat(fd.get(), &info) != 0) return io_error("cannot stat", path, errno);
+  if (file_system().fstat(fd.get(), &info) != 0) return io_error("cannot stat", path, errno);
   if (!S_ISREG(info.st_mode)) return Status(Error::Io, "%s is not a regular file", path);
   if (static_cast<std::uint64_t>(info.st_size) > max_size) {
     return Status(Error::TooLarge, "%s has %lld bytes, more than the %llu a checkpoint can have",
@@ -194,7 +195,7 @@ Status read_regular_file(const char* path, std::uint64_t max_size,
 
 bool temp_path_for(const char* path, unsigned attempt, char* out, std::size_t out_size) {
   const int n = std::snprintf(out, out_size, "%s.tmp.%ld.%u", path,
-                              static_cast<long>(::getpid()), attempt);
+                              file_system().process_id(), attempt);
   return n > 0 && static_cast<std::size_t>(n) < out_size;
 }
 
@@ -216,7 +217,7 @@ Status create_temp_file(const char* path, int access, char* temp, std::size_t te
 Status write_file_atomically(const char* path, const std::uint8_t* data, std::size_t size,
                              Durability durability) {
   struct stat existing {};
-  if (::lstat(path, &existing) == 0) {
+  if (file_system().lstat(path, &existing) == 0) {
     if (S_ISLNK(existing.st_mode)) {
       return Status(Error::Io, "refusing to replace %s: it is a symbolic link", path);
     }
@@ -225,7 +226,7 @@ Status write_file_atomically(const char* path, const std::uint8_t* data, std::si
       return Status(Error::Io, "refusing to replace %s: it is not a regular file", path);
     }
   }
-  remove_stale_temp_files(path);
+  remove_stale_temp_files_once(path);
 
   char temp[PATH_MAX];
   int fd = -1;
@@ -234,16 +235,16 @@ Status write_file_atomically(const char* path, const std::uint8_t* data, std::si
 
   FdGuard guard(fd);
   status = pwrite_all(fd, data, size, 0, temp);
-  if (status.ok() && durability == Durability::Fdatasync && ::fdatasync(fd) != 0) {
+  if (status.ok() && durability == Durability::Fdatasync && file_system().fdatasync(fd) != 0) {
     status = io_error("cannot fdatasync", temp, errno);
   }
   // close() reports delayed write errors on some file systems (NFS): check it.
-  if (::close(guard.release()) != 0 && status.ok()) status = io_error("cannot close", temp, errno);
-  if (status.ok() && ::rename(temp, path) != 0) {
+  if (file_system().close(guard.release()) != 0 && status.ok()) status = io_error("cannot close", temp, errno);
+  if (status.ok() && file_system().rename(temp, path) != 0) {
     status = io_error("cannot rename the temp file onto", path, errno);
   }
   if (!status.ok()) {
-    ::unlink(temp);
+    file_system().unlink(temp);
     return status;
   }
   if (durability == Durability::Fdatasync) return sync_parent_directory(path);
@@ -257,7 +258,7 @@ Status sync_parent_directory(const char* path) {
   }
   FdGuard fd(open_retrying(directory, O_RDONLY | O_DIRECTORY | O_CLOEXEC));
   if (fd.get() < 0) return io_error("cannot open directory", directory, errno);
-  if (::fsync(fd.get()) != 0) return io_error("cannot fsync directory", directory, errno);
+  if (file_system().fsync(fd.get()) != 0) return io_error("cannot fsync directory", directory, errno);
   return Status();
 }
 

@@ -46,6 +46,11 @@ Status create_temp_file(const char* path, int access, char* temp, std::size_t te
 Status write_file_atomically(const char* path, const std::uint8_t* data, std::size_t size,
                              Durability durability);
 
+// Removes the temp files ("<path>.tmp.<pid>.<n>") of replacing `path` that processes killed
+// between creating and renaming them left behind: regular files of exactly that naming, owned
+// by this user, whose process no longer exists.
+void remove_stale_temp_files(const char* path);
+
 // fsync of the directory holding `path`, making a rename or creation in it durable.
 Status sync_parent_directory(const char* path);
 

@@ -151,6 +151,9 @@ bool restore(PointState& s, symcr_point& point, symcr_report& report) {
     log_line({point.inserted_at, ": passed over slot ", slot.c_str(), " (checkpoint #",
               sequence.c_str(), "): ", skipped.reason.c_str()});
   }
+  for (const std::string& warning : report.report.warnings()) {
+    log_line({point.inserted_at, ": warning: ", warning.c_str()});
+  }
   if (report.report.ok() && !hooked) {
     const std::string sequence = std::to_string(report.report.sequence());
     log_line({point.inserted_at, ": restored checkpoint #", sequence.c_str(), " of ", path});

@@ -157,6 +157,11 @@ __attribute__((cold)) std::string Report::to_text() const {
     out += skipped.reason;
     out += '\n';
   }
+  for (const std::string& warning : warnings_) {
+    out += "warning: ";
+    out += warning;
+    out += '\n';
+  }
   char summary[64];
   std::snprintf(summary, sizeof summary, "sequence %" PRIu64 ", ", sequence_);
   out += summary;
@@ -212,6 +217,13 @@ __attribute__((cold)) std::string Report::to_json() const {
     out += ",\"reason\":";
     append_json_string(out, skipped.reason);
     out += '}';
+  }
+  out += "],\"warnings\":[";
+  first = true;
+  for (const std::string& warning : warnings_) {
+    if (!first) out += ',';
+    first = false;
+    append_json_string(out, warning);
   }
   out += "]}";
   return out;

@@ -30,6 +30,9 @@ struct ReportAccess {
     report.add(std::move(path), decision, std::move(detail), lossy);
   }
   static std::vector<SkippedCheckpoint>& skipped(Report& report) { return report.skipped_; }
+  static void warn(Report& report, std::string warning) {
+    report.warnings_.push_back(std::move(warning));
+  }
   // Starts an empty report with the entries of `source` (shared, not copied); a later add()
   // copies them first.
   static void set_source(Report& report, std::shared_ptr<const ReportSource> source) {

@@ -10,10 +10,65 @@
 namespace symcr::detail {
 namespace {
 
-constexpr std::uint8_t kJournalMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'J', 'N', 'L'};
+constexpr std::uint8_t kJournalMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'J', 'N', '2'};
 constexpr std::size_t kChecked = kRestoreJournalSize - 4;  // the CRC covers what precedes it
+constexpr std::uint8_t kLegacyMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'J', 'N', 'L'};
+constexpr std::size_t kLegacyChecked = kLegacyRestoreJournalSize - 4;
+
+bool ranges_hold(const RestoreJournal& journal) {
+  return journal.suspect_low <= journal.suspect_high &&
+         journal.crashed_low <= journal.crashed_high;
+}
+
+// One copy: whether it holds a journal, and which.
+bool decode_copy(const std::uint8_t* data, RestoreJournal& out) {
+  if (std::memcmp(data, kJournalMagic, sizeof kJournalMagic) != 0 ||
+      le::load32(data + kChecked) != crc32c(data, kChecked)) {
+    return false;
+  }
+  RestoreJournal journal;
+  journal.generation = le::load64(data + 8);
+  journal.unconfirmed = le::load64(data + 16);
+  journal.suspect_low = le::load64(data + 24);
+  journal.suspect_high = le::load64(data + 32);
+  journal.given_up_through = le::load64(data + 40);
+  journal.crashed_low = le::load64(data + 48);
+  journal.crashed_high = le::load64(data + 56);
+  journal.fallbacks = le::load32(data + 64);
+  journal.depth = le::load32(data + 68);
+  if (!ranges_hold(journal)) return false;  // not ours to trust
+  out = journal;
+  return true;
+}
+
+bool decode_legacy(const std::uint8_t* data, RestoreJournal& out) {
+  if (std::memcmp(data, kLegacyMagic, sizeof kLegacyMagic) != 0 ||
+      le::load32(data + kLegacyChecked) != crc32c(data, kLegacyChecked)) {
+    return false;
+  }
+  RestoreJournal journal;
+  journal.unconfirmed = le::load64(data + 8);
+  journal.suspect_low = le::load64(data + 16);
+  journal.suspect_high = le::load64(data + 24);
+  journal.given_up_through = le::load64(data + 32);
+  journal.fallbacks = le::load32(data + 40);
+  if (!ranges_hold(journal)) return false;
+  out = journal;
+  return true;
+}
 
 }  // namespace
+
+bool RestoreJournal::same_state(const RestoreJournal& o) const {
+  return unconfirmed == o.unconfirmed && suspect_low == o.suspect_low &&
+         suspect_high == o.suspect_high && given_up_through == o.given_up_through &&
+         crashed_low == o.crashed_low && crashed_high == o.crashed_high &&
+         fallbacks == o.fallbacks && depth == o.depth;
+}
+
+std::uint64_t RestoreJournal::highest_sequence() const {
+  return std::max({unconfirmed, suspect_high, given_up_through, crashed_high});
+}
 
 bool RestoreJournal::record_crash(std::uint64_t newest, std::uint32_t depth) {
   if (unconfirmed != 0) {
@@ -27,14 +82,37 @@ bool RestoreJournal::record_crash(std::uint64_t newest, std::uint32_t depth) {
   return fallbacks <= depth;
 }
 
+bool RestoreJournal::count_crash(std::uint64_t newest, std::uint32_t depth_now) {
+  if (unconfirmed == 0) return false;
+  if (!record_crash(newest, depth_now)) give_up(newest);
+  return true;
+}
+
 void RestoreJournal::give_up(std::uint64_t newest) {
-  given_up_through = std::max({given_up_through, suspect_high, newest});
+  given_up_through = std::max({given_up_through, suspect_high, crashed_high, newest});
   unconfirmed = 0;
   suspect_low = suspect_high = 0;
+  crashed_low = crashed_high = 0;
   fallbacks = 0;
 }
 
 void RestoreJournal::confirm() {
+  if (suspect_high != 0) {
+    // The confirmed restore is older than every suspect, and nothing between it and them is
+    // restorable: a crashed range above it merges with them. One below it is given up on with
+    // everything older, so that one range is enough to remember.
+    if (crashed_high == 0) {
+      crashed_low = suspect_low;
+      crashed_high = suspect_high;
+    } else if (crashed_high > unconfirmed) {
+      crashed_low = std::min(crashed_low, suspect_low);
+      crashed_high = std::max(crashed_high, suspect_high);
+    } else {
+      given_up_through = std::max(given_up_through, crashed_high);
+      crashed_low = suspect_low;
+      crashed_high = suspect_high;
+    }
+  }
   unconfirmed = 0;
   suspect_low = suspect_high = 0;
   fallbacks = 0;
@@ -42,27 +120,33 @@ void RestoreJournal::confirm() {
 
 void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out) {
   std::memcpy(out, kJournalMagic, sizeof kJournalMagic);
-  le::store64(out + 8, journal.unconfirmed);
-  le::store64(out + 16, journal.suspect_low);
-  le::store64(out + 24, journal.suspect_high);
-  le::store64(out + 32, journal.given_up_through);
-  le::store32(out + 40, journal.fallbacks);
+  le::store64(out + 8, journal.generation);
+  le::store64(out + 16, journal.unconfirmed);
+  le::store64(out + 24, journal.suspect_low);
+  le::store64(out + 32, journal.suspect_high);
+  le::store64(out + 40, journal.given_up_through);
+  le::store64(out + 48, journal.crashed_low);
+  le::store64(out + 56, journal.crashed_high);
+  le::store32(out + 64, journal.fallbacks);
+  le::store32(out + 68, journal.depth);
   le::store32(out + kChecked, crc32c(out, kChecked));
 }
 
-RestoreJournal decode_restore_journal(const std::uint8_t* data, std::size_t size) {
-  RestoreJournal journal;
-  if (size < kRestoreJournalSize || std::memcmp(data, kJournalMagic, sizeof kJournalMagic) != 0 ||
-      le::load32(data + kChecked) != crc32c(data, kChecked)) {
-    return journal;
+RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size) {
+  RestoreJournal current;
+  bool found = false;
+  for (const std::uint64_t offset : kRestoreJournalOffsets) {
+    RestoreJournal copy;
+    if (offset + kRestoreJournalSize <= size && decode_copy(page + offset, copy) &&
+        (!found || copy.generation > current.generation)) {
+      current = copy;
+      found = true;
+    }
   }
-  journal.unconfirmed = le::load64(data + 8);
-  journal.suspect_low = le::load64(data + 16);
-  journal.suspect_high = le::load64(data + 24);
-  journal.given_up_through = le::load64(data + 32);
-  journal.fallbacks = le::load32(data + 40);
-  if (journal.suspect_low > journal.suspect_high) return RestoreJournal();  // not ours to trust
-  return journal;
+  if (!found && kLegacyRestoreJournalOffset + kLegacyRestoreJournalSize <= size) {
+    decode_legacy(page + kLegacyRestoreJournalOffset, current);
+  }
+  return current;
 }
 
 }  // namespace symcr::detail

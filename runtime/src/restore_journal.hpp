@@ -3,7 +3,8 @@
 // page. A restored state can itself make the program crash again; the journal records which
 // checkpoint a start restored until the program confirms it, so that the next start can tell
 // an unconfirmed restore (a crash, or a stop, before the state proved itself) and pass over
-// that checkpoint and every one saved after it. Internal to the runtime.
+// that checkpoint and every one saved after it. Two copies are written in turn, so a write
+// cut short leaves the previous journal readable. Internal to the runtime.
 #ifndef SYMCR_SRC_RESTORE_JOURNAL_HPP
 #define SYMCR_SRC_RESTORE_JOURNAL_HPP
 
@@ -12,10 +13,19 @@
 
 namespace symcr::detail {
 
-inline constexpr std::uint64_t kRestoreJournalOffset = 64;  // in the store's header page
-inline constexpr std::size_t kRestoreJournalSize = 48;
+// The two copies, in the store's header page; generation g is written to copy g % 2.
+inline constexpr std::uint64_t kRestoreJournalOffsets[2] = {128, 256};
+inline constexpr std::size_t kRestoreJournalSize = 76;
+// Where the header page's journal bytes end: one read at open covers the header and both.
+inline constexpr std::size_t kRestoreJournalEnd = 256 + kRestoreJournalSize;
+// The single journal of stores written by earlier versions (48 bytes at 64), read when
+// neither copy holds a journal.
+inline constexpr std::uint64_t kLegacyRestoreJournalOffset = 64;
+inline constexpr std::size_t kLegacyRestoreJournalSize = 48;
 
 struct RestoreJournal {
+  // Counts the journal's writes: the copy with the higher one is the current journal.
+  std::uint64_t generation = 0;
   // The sequence a start restored that no confirm() has vouched for since; 0: none.
   std::uint64_t unconfirmed = 0;
   // Checkpoints suspected of crashing the program: sequences suspect_low … suspect_high
@@ -24,34 +34,57 @@ struct RestoreJournal {
   std::uint64_t suspect_high = 0;
   // The fallback gave up on every checkpoint with a sequence up to this one: never restored.
   std::uint64_t given_up_through = 0;
+  // Suspects a confirmed fallback restore proved bad (they crashed, or were saved after a
+  // restore that did): never restored again. 0 … 0: none.
+  std::uint64_t crashed_low = 0;
+  std::uint64_t crashed_high = 0;
   // Unconfirmed restores in a row: how deep the fallback has gone.
   std::uint32_t fallbacks = 0;
+  // The fallback depth of the program that wrote the journal: how deep its next start goes.
+  std::uint32_t depth = 0;
 
   bool empty() const {
-    return unconfirmed == 0 && suspect_high == 0 && given_up_through == 0 && fallbacks == 0;
+    return unconfirmed == 0 && suspect_high == 0 && given_up_through == 0 && crashed_high == 0 &&
+           fallbacks == 0;
   }
+  // Same state, whatever the generation.
+  bool same_state(const RestoreJournal& other) const;
   bool suspects(std::uint64_t sequence) const {
     return suspect_high != 0 && sequence >= suspect_low && sequence <= suspect_high;
   }
+  bool crashed(std::uint64_t sequence) const {
+    return crashed_high != 0 && sequence >= crashed_low && sequence <= crashed_high;
+  }
   bool gave_up_on(std::uint64_t sequence) const { return sequence <= given_up_through; }
-  bool excludes(std::uint64_t sequence) const { return suspects(sequence) || gave_up_on(sequence); }
+  bool excludes(std::uint64_t sequence) const {
+    return suspects(sequence) || crashed(sequence) || gave_up_on(sequence);
+  }
+  // The highest sequence the journal names: a new checkpoint is numbered above it, so that
+  // no exclusion covers it.
+  std::uint64_t highest_sequence() const;
 
   // A start found `unconfirmed` set: the checkpoint it names and every one saved after it, up
   // to `newest` (the store's highest valid sequence now), become suspect, and the fallback goes
   // one level deeper. False when that exceeds `depth`: the caller then gives up.
   bool record_crash(std::uint64_t newest, std::uint32_t depth);
+  // What a start does first when it finds `unconfirmed` set (a crash, or a stop, before
+  // confirm()): record_crash(), and give_up() past `depth`. False when nothing was unconfirmed.
+  bool count_crash(std::uint64_t newest, std::uint32_t depth);
   // Gives up on every checkpoint up to `newest`: the program starts from its initial state and
   // only checkpoints it saves from then on are restored again.
   void give_up(std::uint64_t newest);
-  // The program vouched for its restored state: nothing is pending or suspect any more (what
-  // was given up on stays so).
+  // The program vouched for its restored state: nothing is pending any more. Suspects of a
+  // fallback become crashed (never restored again); what was given up on stays so.
   void confirm();
 };
 
-void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out);  // Size bytes
-// A journal whose magic or checksum does not hold (a store written before journals existed, or
-// damaged bytes) reads as empty: the restore then behaves as without the fallback.
-RestoreJournal decode_restore_journal(const std::uint8_t* data, std::size_t size);
+// Encodes `journal` as one copy (kRestoreJournalSize bytes, its generation included).
+void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out);
+// The current journal of a store whose first `size` bytes are `page`: the copy with the
+// higher generation of those whose magic and checksum hold, else the legacy journal, else an
+// empty journal (a new store, or damaged bytes: the restore then behaves as without the
+// fallback).
+RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size);
 
 }  // namespace symcr::detail
 

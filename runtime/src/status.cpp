@@ -46,6 +46,7 @@ const char* error_name(Error error) {
     case Error::NoValidSlot: return "NoValidSlot";
     case Error::TooLarge: return "TooLarge";
     case Error::Unauthenticated: return "Unauthenticated";
+    case Error::StoreFull: return "StoreFull";
   }
   return "Unknown";
 }

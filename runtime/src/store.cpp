@@ -21,6 +21,7 @@
 #include "crc32c.hpp"
 #include "engine.hpp"
 #include "file_io.hpp"
+#include "file_system.hpp"
 #include "little_endian.hpp"
 #include "program_schema.hpp"
 #include "record.hpp"
@@ -97,26 +98,33 @@ struct Store::Impl {
   // it has not saved since. The first restore_latest() then reads no slot again.
   bool scan_current = false;
 
-  // Crash-loop fallback (restore_journal.hpp): the journal as this Store knows it, its bytes as
-  // last read or written, and whether the restore it names unconfirmed is this Store's own (a
-  // second restore_latest() in one run is no sign of a crash).
+  // Crash-loop fallback (restore_journal.hpp): the depth asked for, the journal as this Store
+  // knows it and as the file last held it, and whether the restore it names unconfirmed is
+  // this Store's own (a second restore_latest() in one run is no sign of a crash).
   std::uint32_t fallback_depth = 0;
+  bool allow_unrecorded_restore = false;
   detail::RestoreJournal journal;
-  std::uint8_t journal_bytes[detail::kRestoreJournalSize] = {};
+  detail::RestoreJournal recorded;
   bool unconfirmed_is_ours = false;
+  // Per slot, during save(): whether the crash-loop fallback may still restore it.
+  std::vector<std::uint8_t> needed_by_fallback;
 
-  // Records `journal` in the header page, unless that is what the file already holds.
+  // Records `journal` in the header page, unless that is what the file already holds: into the
+  // copy not holding the current journal, so a write cut short leaves that one readable.
   Status write_journal(int fd, Durability durability) {
+    if (journal.same_state(recorded)) return Status();
+    journal.generation = recorded.generation + 1;
     std::uint8_t bytes[detail::kRestoreJournalSize];
     detail::encode_restore_journal(journal, bytes);
-    if (std::memcmp(bytes, journal_bytes, sizeof bytes) == 0) return Status();
-    Status status = detail::pwrite_all(fd, bytes, sizeof bytes,
-                                       static_cast<off_t>(detail::kRestoreJournalOffset),
-                                       path.c_str());
-    if (status.ok() && durability == Durability::Fdatasync && ::fdatasync(fd) != 0) {
+    Status status = detail::pwrite_all(
+        fd, bytes, sizeof bytes,
+        static_cast<off_t>(detail::kRestoreJournalOffsets[journal.generation % 2]),
+        path.c_str());
+    if (status.ok() && durability == Durability::Fdatasync &&
+        detail::file_system().fdatasync(fd) != 0) {
       status = detail::io_error("cannot fdatasync", path.c_str(), errno);
     }
-    if (status.ok()) std::memcpy(journal_bytes, bytes, sizeof bytes);
+    if (status.ok()) recorded = journal;
     return status;
   }
 
@@ -142,23 +150,80 @@ struct Store::Impl {
     }
   }
 
-  void adopt_journal(const std::uint8_t* bytes, std::size_t size) {
-    journal = detail::decode_restore_journal(bytes, size);
-    if (size >= sizeof journal_bytes) {
-      std::memcpy(journal_bytes, bytes, sizeof journal_bytes);
-    } else {
-      std::memset(journal_bytes, 0, sizeof journal_bytes);
-    }
+  // `page`: the first `size` bytes of the file.
+  void adopt_journal(const std::uint8_t* page, std::size_t size) {
+    journal = page != nullptr ? detail::read_restore_journal(page, size) : detail::RestoreJournal();
+    recorded = journal;
   }
 
   Status read_journal(int fd) {
-    std::uint8_t bytes[detail::kRestoreJournalSize] = {};
+    std::uint8_t page[detail::kRestoreJournalEnd] = {};
     std::size_t got = 0;
-    Status status = detail::pread_full(fd, bytes, sizeof bytes,
-                                       static_cast<off_t>(detail::kRestoreJournalOffset), got,
-                                       path.c_str());
-    if (status.ok()) adopt_journal(bytes, got);
+    Status status = detail::pread_full(fd, page, sizeof page, 0, got, path.c_str());
+    if (status.ok()) adopt_journal(page, got);
     return status;
+  }
+
+  // The highest sequence the store holds (in any record that is intact, restorable or not) or
+  // its journal names: a new checkpoint is numbered above it.
+  std::uint64_t highest_known_sequence() const {
+    std::uint64_t highest = journal.highest_sequence();
+    for (const Slot& slot : slots) highest = std::max(highest, slot.sequence);
+    return highest;
+  }
+
+  // Marks in `needed_by_fallback` the checkpoints the crash-loop fallback may still restore
+  // while a restore waits for confirm(): the restored one, and the newest valid ones older than
+  // it that the journal does not exclude, one for each fallback the depth still allows.
+  // Returns how many it marked.
+  std::uint32_t mark_fallback_needs() {
+    needed_by_fallback.assign(slots.size(), 0);
+    if (fallback_depth == 0 || journal.unconfirmed == 0) return 0;
+    std::uint32_t marked = 0;
+    for (std::uint32_t i = 0; i < slots.size(); ++i) {
+      if (slots[i].state == StoreSlotState::Valid && slots[i].sequence == journal.unconfirmed) {
+        needed_by_fallback[i] = 1;
+        ++marked;
+      }
+    }
+    std::uint64_t below = journal.unconfirmed;
+    for (std::uint32_t level = journal.fallbacks; level < fallback_depth; ++level) {
+      int next = -1;
+      for (std::uint32_t i = 0; i < slots.size(); ++i) {
+        const Slot& slot = slots[i];
+        if (slot.state == StoreSlotState::Valid && slot.sequence < below &&
+            !journal.excludes(slot.sequence) &&
+            (next < 0 || slot.sequence > slots[static_cast<std::size_t>(next)].sequence)) {
+          next = static_cast<int>(i);
+        }
+      }
+      if (next < 0) break;
+      needed_by_fallback[static_cast<std::size_t>(next)] = 1;
+      below = slots[static_cast<std::size_t>(next)].sequence;
+      ++marked;
+    }
+    return marked;
+  }
+
+  // The slot save() writes: one holding nothing restorable, else the oldest checkpoint the
+  // journal excludes, else the oldest one the fallback does not need; -1 when every slot is
+  // needed. It is never the newest valid checkpoint, unless the fallback needs every older one
+  // and the newest was itself saved after a restore still waiting for confirm().
+  int slot_to_overwrite() {
+    mark_fallback_needs();
+    int excluded = -1, oldest = -1;
+    for (std::uint32_t i = 0; i < slots.size(); ++i) {
+      const Slot& slot = slots[i];
+      if (slot.state != StoreSlotState::Valid) return static_cast<int>(i);
+      if (journal.excludes(slot.sequence)) {
+        if (excluded < 0 || slot.sequence < slots[static_cast<std::size_t>(excluded)].sequence)
+          excluded = static_cast<int>(i);
+      } else if (!needed_by_fallback[i] &&
+                 (oldest < 0 || slot.sequence < slots[static_cast<std::size_t>(oldest)].sequence)) {
+        oldest = static_cast<int>(i);
+      }
+    }
+    return excluded >= 0 ? excluded : oldest;
   }
 
   int area_for_hash(std::uint64_t hash) const {
@@ -199,7 +264,10 @@ struct Store::Impl {
     if (!status.ok()) return status;
     slot.state = read.state;
     slot.area = read.area;
-    slot.sequence = read.state == StoreSlotState::Valid ? view.header.sequence : 0;
+    // An intact record of an unknown schema still holds its number: saves number above it.
+    const bool intact =
+        read.state == StoreSlotState::Valid || read.state == StoreSlotState::UnknownSchema;
+    slot.sequence = intact ? view.header.sequence : 0;
     return Status();
   }
 
@@ -230,12 +298,26 @@ struct Store::Impl {
   }
 
   // Writes this build's schema into the area the newest valid slot does not use, so that
-  // checkpoint stays restorable; slots using the overwritten area become unrestorable.
+  // checkpoint stays restorable, and never into one holding a checkpoint the crash-loop
+  // fallback needs; slots using the overwritten area become unrestorable.
   Status write_own_area(int fd, const Schema& schema, Durability durability) {
     Status status = scan_slots(fd);  // the disk may have changed since open
     if (!status.ok()) return status;
+    bool area_needed[2] = {false, false};
+    mark_fallback_needs();
+    for (std::uint32_t i = 0; i < slots.size(); ++i) {
+      if (needed_by_fallback[i] && slots[i].area >= 0) area_needed[slots[i].area] = true;
+    }
     const int newest = newest_valid_slot();
-    const int target = (newest >= 0 && slots[static_cast<std::size_t>(newest)].area == 0) ? 1 : 0;
+    int target = (newest >= 0 && slots[static_cast<std::size_t>(newest)].area == 0) ? 1 : 0;
+    if (area_needed[target]) target = 1 - target;
+    if (area_needed[target]) {
+      return Status(Error::StoreFull,
+                    "%s: this build's first checkpoint needs a schema area, and both hold "
+                    "checkpoints the crash-loop fallback needs until confirm(); nothing was "
+                    "written",
+                    path.c_str());
+    }
     const detail::SchemaBlob& blob = detail::schema_blob(schema);
     if (detail::kStoreAreaHeaderSize + blob.size > geometry.schema_area_size) {
       return Status(Error::TooLarge,
@@ -260,7 +342,8 @@ struct Store::Impl {
     }
     status = detail::pwrite_all(fd, area_bytes.data(), area_bytes.size(),
                                 static_cast<off_t>(geometry.area_offset(target)), path.c_str());
-    if (status.ok() && durability == Durability::Fdatasync && ::fdatasync(fd) != 0) {
+    if (status.ok() && durability == Durability::Fdatasync &&
+        detail::file_system().fdatasync(fd) != 0) {
       status = detail::io_error("cannot fdatasync", path.c_str(), errno);
     }
     if (!status.ok()) return status;
@@ -282,8 +365,9 @@ struct Store::Impl {
   };
   Status initialise(int fd, const char* file, const StoreGeometry& g,
                     const std::vector<Copy>& copies) {
-    if (::ftruncate(fd, 0) != 0) return detail::io_error("cannot truncate", file, errno);
-    const int rc = ::posix_fallocate(fd, 0, static_cast<off_t>(g.file_size()));
+    detail::FileSystem& files = detail::file_system();
+    if (files.ftruncate(fd, 0) != 0) return detail::io_error("cannot truncate", file, errno);
+    const int rc = files.fallocate(fd, static_cast<off_t>(g.file_size()));
     if (rc != 0) return detail::io_error("cannot preallocate", file, rc);
     for (const Copy& copy : copies) {
       Status status =
@@ -294,7 +378,7 @@ struct Store::Impl {
     detail::encode_store_header(g, header);
     Status status = detail::pwrite_all(fd, header, sizeof header, 0, file);
     if (!status.ok()) return status;
-    if (::fdatasync(fd) != 0) return detail::io_error("cannot fdatasync", file, errno);
+    if (files.fdatasync(fd) != 0) return detail::io_error("cannot fdatasync", file, errno);
     return Status();
   }
 
@@ -319,8 +403,17 @@ struct Store::Impl {
     target.schema_area_size = std::max(target.schema_area_size, geometry.schema_area_size);
     target.slots_offset = detail::kStorePageSize + 2 * std::uint64_t{target.schema_area_size};
 
-    // What to carry: the areas, and up to slot_count - 1 newest checkpoints (the save about to
-    // happen takes the last slot).
+    // What to carry: the areas, every checkpoint the crash-loop fallback may still need, then
+    // the newest others the journal does not exclude, up to slot_count - 1 in all (the save
+    // about to happen takes the last slot).
+    const std::uint32_t needed = mark_fallback_needs();
+    if (needed + 1 > target.slot_count) {
+      return Status(Error::StoreFull,
+                    "%s: cannot rewrite the store into %u slots while the crash-loop fallback "
+                    "needs %u checkpoints until confirm(), and one slot for this one; nothing "
+                    "was written",
+                    path.c_str(), target.slot_count, needed);
+    }
     std::vector<std::vector<std::uint8_t>> kept;
     std::vector<Copy> copies;
     for (int i = 0; i < 2; ++i) {
@@ -335,9 +428,13 @@ struct Store::Impl {
     }
     newest_first.clear();
     for (std::uint32_t i = 0; i < slots.size(); ++i) {
-      if (slots[i].state == StoreSlotState::Valid) newest_first.push_back(i);
+      if (slots[i].state == StoreSlotState::Valid &&
+          (needed_by_fallback[i] || !journal.excludes(slots[i].sequence))) {
+        newest_first.push_back(i);
+      }
     }
     std::sort(newest_first.begin(), newest_first.end(), [this](std::uint32_t a, std::uint32_t b) {
+      if (needed_by_fallback[a] != needed_by_fallback[b]) return needed_by_fallback[a] > 0;
       return slots[a].sequence > slots[b].sequence;
     });
     std::uint32_t carried = 0;
@@ -348,8 +445,9 @@ struct Store::Impl {
       if (!status.ok()) return status;
       if (reread.state != StoreSlotState::Valid) continue;
       if (view.record_size > target.slot_size) {
-        // The newest checkpoint must survive: keep the old geometry while it cannot move.
-        if (carried == 0) return Status();
+        // The newest checkpoint, and those the fallback needs, must survive: keep the old
+        // geometry while they cannot move.
+        if (carried == 0 || needed_by_fallback[i]) return Status();
         continue;
       }
       kept.emplace_back(slot_bytes.begin(),
@@ -365,27 +463,31 @@ struct Store::Impl {
     for (std::uint32_t slot = 0; next < kept.size(); ++next, ++slot) {
       copies.push_back({target.slot_offset(slot), kept[next].data(), kept[next].size()});
     }
-    if (!journal.empty()) {  // the crash-loop fallback's memory moves with the checkpoints
-      copies.push_back({detail::kRestoreJournalOffset, journal_bytes, sizeof journal_bytes});
+    std::uint8_t journal_copy[detail::kRestoreJournalSize];
+    if (!recorded.empty()) {  // the crash-loop fallback's memory moves with the checkpoints
+      detail::encode_restore_journal(recorded, journal_copy);
+      copies.push_back({detail::kRestoreJournalOffsets[recorded.generation % 2], journal_copy,
+                        sizeof journal_copy});
     }
 
     char temp[PATH_MAX];
     int new_fd = -1;
     status = detail::create_temp_file(path.c_str(), O_RDWR, temp, sizeof temp, new_fd);
     if (!status.ok()) return status;
-    if (::flock(new_fd, LOCK_EX | LOCK_NB) != 0) {
+    detail::FileSystem& files = detail::file_system();
+    if (files.flock(new_fd, LOCK_EX | LOCK_NB) != 0) {
       status = detail::io_error("cannot lock", temp, errno);
     }
     if (status.ok()) status = initialise(new_fd, temp, target, copies);
-    if (status.ok() && ::rename(temp, path.c_str()) != 0) {
+    if (status.ok() && files.rename(temp, path.c_str()) != 0) {
       status = detail::io_error("cannot rename the rewritten store onto", path.c_str(), errno);
     }
     if (!status.ok()) {
-      ::unlink(temp);
-      ::close(new_fd);
+      files.unlink(temp);
+      files.close(new_fd);
       return status;
     }
-    ::close(fd);  // releases the old file's lock; the new file holds its own
+    files.close(fd);  // releases the old file's lock; the new file holds its own
     fd = new_fd;
     geometry_pending = false;
     geometry = target;
@@ -412,7 +514,7 @@ struct Store::Impl {
       std::uint8_t header[detail::kStoreHeaderSize];
       detail::encode_store_header(guess, header);
       status = detail::pwrite_all(fd, header, sizeof header, 0, path.c_str());
-      if (status.ok() && ::fdatasync(fd) != 0) {
+      if (status.ok() && detail::file_system().fdatasync(fd) != 0) {
         status = detail::io_error("cannot fdatasync", path.c_str(), errno);
       }
       if (!status.ok()) return status;
@@ -464,7 +566,7 @@ Store& Store::operator=(Store&& other) noexcept {
 }
 
 void Store::close() {
-  if (fd_ >= 0) ::close(fd_);  // also releases the flock
+  if (fd_ >= 0) detail::file_system().close(fd_);  // also releases the flock
   fd_ = -1;
   delete impl_;
   impl_ = nullptr;
@@ -497,6 +599,13 @@ Status Store::open_readonly(const char* path, Store& out) {
 
 namespace {
 
+struct OpenedStoreFile {
+  int fd = -1;
+  bool created = false;
+  std::string read_only_reason;  // empty when opened for writing (and then locked)
+  struct stat info {};
+};
+
 Status open_error(const char* path, int error_number) {
   if (error_number == ELOOP) {
     return Status(Error::Io,
@@ -509,6 +618,68 @@ Status open_error(const char* path, int error_number) {
 
 bool is_permission_error(int error_number) {
   return error_number == EROFS || error_number == EACCES || error_number == EPERM;
+}
+
+bool is_same_file(const struct stat& a, const struct stat& b) {
+  return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
+// Opens the store file: for writing (created if absent, and locked), or read-only where the
+// file or its file system cannot be written or `writable` is false. The lock must be on the
+// file the path still names once locked: a writer rewriting the store for a new geometry
+// renames a new file over the path, and a descriptor opened just before locks the replaced
+// one, which that writer has left: another writer was at work, so the open fails as if locked.
+Status open_store_file(const char* path, bool writable, OpenedStoreFile& out) {
+  detail::FileSystem& files = detail::file_system();
+  out = OpenedStoreFile();
+  int fd = -1;
+  if (writable) {
+    fd = files.open(path, O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    out.created = fd >= 0;
+    if (fd < 0 && (errno == EEXIST || is_permission_error(errno))) {
+      const int create_error = errno;
+      fd = files.open(path, O_RDWR | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK, 0);
+      // Absent and not creatable (a read-only directory): the creation's error says why.
+      if (fd < 0 && errno == ENOENT) return open_error(path, create_error);
+    }
+    if (fd < 0 && is_permission_error(errno)) {
+      out.read_only_reason = std::string("store ") + path + " was opened read-only (" +
+                             std::strerror(errno) + "): restore_latest() works, save() does not";
+    }
+  } else {
+    out.read_only_reason = std::string("store ") + path + " was opened with open_readonly()";
+  }
+  if (fd < 0 && !out.read_only_reason.empty()) {
+    fd = files.open(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK, 0);
+  }
+  if (fd < 0) return open_error(path, errno);
+  Status status;
+  if (files.fstat(fd, &out.info) != 0) {
+    status = detail::io_error("cannot stat", path, errno);
+  } else if (!S_ISREG(out.info.st_mode)) {
+    status = Status(Error::Io, "%s is not a regular file", path);
+  } else if (!out.read_only_reason.empty()) {
+    out.fd = fd;
+    return Status();
+  } else if (files.flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    // One writer per store: two processes saving into one ring would overwrite each other.
+    status = errno == EWOULDBLOCK
+                 ? Status(Error::Io, "store %s is open elsewhere (locked by another Store)", path)
+                 : detail::io_error("cannot lock", path, errno);
+  } else {
+    struct stat named {};
+    if (files.lstat(path, &named) == 0 && is_same_file(named, out.info) &&
+        out.info.st_nlink > 0) {
+      out.fd = fd;
+      return Status();
+    }
+    status = Status(Error::Io,
+                    "store %s is open elsewhere (another Store rewrote it while this one "
+                    "opened it)",
+                    path);
+  }
+  files.close(fd);
+  return status;
 }
 
 }  // namespace
@@ -542,65 +713,38 @@ Status Store::open_impl(const char* path, const Schema& schema, const StoreOptio
 Status Store::open_descriptor(const char* path, const Schema& schema, const StoreOptions& options,
                               bool writable, Store& out) {
   const detail::SchemaBlob& blob = detail::schema_blob(schema);
-  bool created = false;
-  std::string read_only_reason;
-  int fd = -1;
-  if (writable) {
-    fd = ::open(path, O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
-    created = fd >= 0;
-    if (fd < 0 && (errno == EEXIST || is_permission_error(errno))) {
-      const int create_error = errno;
-      fd = ::open(path, O_RDWR | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
-      // Absent and not creatable (a read-only directory): the creation's error says why.
-      if (fd < 0 && errno == ENOENT) return open_error(path, create_error);
-    }
-    if (fd < 0 && is_permission_error(errno)) {
-      read_only_reason = std::string("store ") + path + " was opened read-only (" +
-                         std::strerror(errno) + "): restore_latest() works, save() does not";
-    }
-  } else {
-    read_only_reason = std::string("store ") + path + " was opened with open_readonly()";
-  }
-  if (fd < 0 && !read_only_reason.empty()) {
-    fd = ::open(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
-  }
-  if (fd < 0) return open_error(path, errno);
+  OpenedStoreFile file;
+  Status status = open_store_file(path, writable, file);
+  if (!status.ok()) return status;
   // Adopt the descriptor now: the caller closes it on every failure below.
-  out.fd_ = fd;
+  out.fd_ = file.fd;
   out.impl_ = new Impl();
   Impl& impl = *out.impl_;
   impl.path = path;
-  impl.read_only_reason = read_only_reason;
-  const bool can_write = read_only_reason.empty();
+  impl.read_only_reason = file.read_only_reason;
+  const int fd = file.fd;
+  const bool created = file.created;
+  const bool can_write = file.read_only_reason.empty();
   // A created file that cannot be made a store is removed again: no empty file is left.
   auto creation_failed = [&](const Status& failure) {
-    if (created) ::unlink(path);
+    if (created) detail::file_system().unlink(path);
     return failure;
   };
-
-  struct stat info {};
-  if (::fstat(fd, &info) != 0) return detail::io_error("cannot stat", path, errno);
-  if (!S_ISREG(info.st_mode)) return Status(Error::Io, "%s is not a regular file", path);
-  // One writer per store: two processes saving into one ring would overwrite each other.
-  if (can_write && ::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    if (errno == EWOULDBLOCK) {
-      return Status(Error::Io, "store %s is open elsewhere (locked by another Store)", path);
-    }
-    return detail::io_error("cannot lock", path, errno);
-  }
+  // A rewrite for a new geometry killed before its rename left its new file behind.
+  if (can_write) detail::remove_stale_temp_files(path);
+  const struct stat& info = file.info;
   const std::uint64_t file_size = static_cast<std::uint64_t>(info.st_size);
   const StoreGeometry wanted =
       detail::store_geometry_for(options.slots, options.slot_size, blob.size);
 
   // One read for the header and the restore journal after it.
-  std::uint8_t header[detail::kRestoreJournalOffset + detail::kRestoreJournalSize] = {};
+  std::uint8_t header[detail::kRestoreJournalEnd] = {};
   std::size_t got = 0;
-  Status status = detail::pread_full(fd, header, sizeof header, 0, got, path);
+  status = detail::pread_full(fd, header, sizeof header, 0, got, path);
   if (!status.ok()) return creation_failed(status);
-  impl.fallback_depth = can_write ? options.fallback_depth : 0;
-  if (got > detail::kRestoreJournalOffset) {
-    impl.adopt_journal(header + detail::kRestoreJournalOffset, got - detail::kRestoreJournalOffset);
-  }
+  impl.fallback_depth = writable ? options.fallback_depth : 0;
+  impl.allow_unrecorded_restore = options.allow_unrecorded_restore;
+  impl.adopt_journal(header, got);
   got = std::min(got, detail::kStoreHeaderSize);
   Status header_status;
   if (!created) header_status = detail::decode_store_header(header, got, path, impl.geometry);
@@ -632,7 +776,8 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
     if (!status.ok()) return status;
     if (can_write && file_size < impl.geometry.file_size()) {
       // Truncated: the whole slots are kept; the file grows back to its size, zero-filled.
-      const int rc = ::posix_fallocate(fd, 0, static_cast<off_t>(impl.geometry.file_size()));
+      const int rc =
+          detail::file_system().fallocate(fd, static_cast<off_t>(impl.geometry.file_size()));
       if (rc != 0) return detail::io_error("cannot extend the truncated store", path, rc);
     }
     if (can_write && !same_dimensions(impl.geometry, wanted)) {
@@ -659,8 +804,7 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
         impl.areas[impl.slots[static_cast<std::size_t>(impl.newest_scanned)].area];
     detail::prepare_restore(area.schema(), area.hash, schema, area.parsed);
   }
-  const int newest = impl.newest_valid_slot();
-  out.last_sequence_ = newest >= 0 ? impl.slots[static_cast<std::size_t>(newest)].sequence : 0;
+  out.last_sequence_ = impl.highest_known_sequence();
   out.options_ = options;
   if (impl.geometry.slot_count != 0) {
     out.options_.slots = impl.geometry.slot_count;
@@ -675,7 +819,17 @@ Status Store::save() {
   if (!impl.read_only_reason.empty()) {
     return Status(Error::Io, "%s", impl.read_only_reason.c_str());
   }
-  const std::uint64_t sequence = last_sequence_ + 1;
+  // Above every sequence the store holds or its journal names, so that no older record and no
+  // exclusion can outrank or cover it.
+  const std::uint64_t newest = std::max(last_sequence_, impl.highest_known_sequence());
+  if (newest == UINT64_MAX) {
+    return Status(Error::Corrupt,
+                  "%s: the store's sequence numbers are exhausted (a record or the journal names "
+                  "sequence 2^64-1, which only damage or forgery produce); nothing was written: "
+                  "save into a new store",
+                  impl.path.c_str());
+  }
+  const std::uint64_t sequence = newest + 1;
   impl.scan_current = false;
   Status status = detail::encode_record(*schema_, /*inline_schema=*/false, sequence, impl.record);
   if (!status.ok()) return status;
@@ -696,17 +850,17 @@ Status Store::save() {
     status = impl.write_own_area(fd_, *schema_, options_.durability);
     if (!status.ok()) return status;
   }
-  // The oldest slot: an invalid one, else the lowest sequence. With two or more slots it is
-  // never the newest valid one, so a torn write costs at most this checkpoint.
-  std::uint32_t target = 0;
-  for (std::uint32_t i = 0; i < impl.slots.size(); ++i) {
-    if (impl.slots[i].state != StoreSlotState::Valid) {
-      target = i;
-      break;
-    }
-    if (impl.slots[i].sequence < impl.slots[target].sequence) target = i;
+  const int target = impl.slot_to_overwrite();
+  if (target < 0) {
+    return Status(Error::StoreFull,
+                  "%s: every one of its %zu slots holds a checkpoint the crash-loop fallback "
+                  "needs until confirm() (the restored one and up to %u older ones); this "
+                  "checkpoint was not written: call confirm() once the restored state has "
+                  "proven itself, or give the store at least %u slots",
+                  impl.path.c_str(), impl.slots.size(), impl.fallback_depth,
+                  impl.fallback_depth + 2);
   }
-  Impl::Slot& slot = impl.slots[target];
+  Impl::Slot& slot = impl.slots[static_cast<std::size_t>(target)];
   slot.state = StoreSlotState::Corrupt;  // until the write completes
   slot.area = -1;
   status = detail::pwrite_all(fd_, impl.record.data(), impl.record.size(),
@@ -716,7 +870,7 @@ Status Store::save() {
   slot.sequence = sequence;
   slot.area = impl.own_area;
   last_sequence_ = sequence;
-  if (options_.durability == Durability::Fdatasync && ::fdatasync(fd_) != 0) {
+  if (options_.durability == Durability::Fdatasync && detail::file_system().fdatasync(fd_) != 0) {
     return detail::io_error("cannot fdatasync", impl.path.c_str(), errno);
   }
   return Status();
@@ -729,6 +883,10 @@ const char* exclusion_reason(const detail::RestoreJournal& journal, std::uint64_
   if (journal.gave_up_on(sequence)) {
     return "crash-loop fallback: given up on, its restores never confirmed down to the "
            "fallback depth or the oldest checkpoint (the program started afresh since)";
+  }
+  if (journal.crashed(sequence)) {
+    return "crash-loop fallback: it crashed the program, or was saved after a restore that did "
+           "(an older checkpoint restored since was confirmed)";
   }
   if (sequence == journal.suspect_low) {
     return "crash-loop fallback: the last start restored it and stopped before "
@@ -785,16 +943,29 @@ Report Store::restore_latest(const RestoreOptions& options) {
 
   // Crash-loop fallback: a restore recorded by an earlier start and never confirmed makes its
   // checkpoint and the newer ones suspect; past the depth, the fallback gives up on them all.
-  // A store that cannot be written still honours what its journal says, but records nothing.
+  // A store that cannot be written still honours what its journal says, but cannot record this
+  // restore: a crash it caused would go unnoticed, so it is refused unless the program chose
+  // to restore without the fallback.
   detail::RestoreJournal& journal = impl.journal;
   const bool recording = impl.fallback_depth > 0 && impl.read_only_reason.empty();
+  if (impl.fallback_depth > 0 && !recording) {
+    if (!impl.allow_unrecorded_restore) {
+      detail::ReportAccess::set_status(
+          report, Status(Error::Io,
+                         "%s; the crash-loop fallback cannot record a restore in it, so nothing "
+                         "was restored (StoreOptions::allow_unrecorded_restore restores without "
+                         "the fallback)",
+                         impl.read_only_reason.c_str()));
+      return report;
+    }
+  }
   bool crashed = false;  // this start found an unconfirmed restore
   std::uint32_t crash_depth = 0;
-  if (recording && journal.unconfirmed != 0 && !impl.unconfirmed_is_ours) {
-    crashed = true;
+  if (recording && !impl.unconfirmed_is_ours) {
     crash_depth = journal.fallbacks + 1;
-    if (!journal.record_crash(last_sequence_, impl.fallback_depth)) journal.give_up(last_sequence_);
+    crashed = journal.count_crash(last_sequence_, impl.fallback_depth);
   }
+  if (recording) journal.depth = impl.fallback_depth;
 
   std::vector<SkippedCheckpoint> skipped;
   // Valid slots whose payload the engine still rejected as corrupt (after its CRC passed: a
@@ -852,6 +1023,13 @@ Report Store::restore_latest(const RestoreOptions& options) {
       if (!report.ok() && recording) {
         journal.unconfirmed = 0;  // nothing was applied: nothing to confirm
         (void)impl.write_journal(fd_, options_.durability);
+      }
+      if (report.ok() && impl.fallback_depth > 0 && !recording) {
+        detail::ReportAccess::warn(
+            report, "the crash-loop fallback is disarmed for this restore: " +
+                        impl.read_only_reason +
+                        "; if the restored state crashes the program, the next start restores "
+                        "it again");
       }
       impl.list_unrestorable_slots(skipped);
       detail::ReportAccess::skipped(report) = std::move(skipped);

@@ -26,13 +26,11 @@ Status StoreReader::open(const char* path) {
   if (::fstat(fd_, &info) != 0) return io_error("cannot stat", path, errno);
   if (!S_ISREG(info.st_mode)) return Status(Error::Io, "%s is not a regular file", path);
 
-  std::uint8_t header[kRestoreJournalOffset + kRestoreJournalSize] = {};
+  std::uint8_t header[kRestoreJournalEnd] = {};
   std::size_t got = 0;
   Status status = pread_full(fd_, header, sizeof header, 0, got, path);
   if (!status.ok()) return status;
-  if (got > kRestoreJournalOffset) {
-    journal_ = decode_restore_journal(header + kRestoreJournalOffset, got - kRestoreJournalOffset);
-  }
+  journal_ = read_restore_journal(header, got);
   status = decode_store_header(header, std::min<std::size_t>(got, kStoreHeaderSize), path,
                                geometry_);
   if (!status.ok()) return status;

@@ -130,6 +130,7 @@ static void authenticated(const char* directory) {
   CHECK(strstr(symcr_last_error(), "does not verify with key id 3") != NULL);
   CHECK(c_tick_count == 0);
   CHECK(strcmp(symcr_error_name(SYMCR_ERROR_UNAUTHENTICATED), "Unauthenticated") == 0);
+  CHECK(strcmp(symcr_error_name(SYMCR_ERROR_STORE_FULL), "StoreFull") == 0);
   CHECK(symcr_set_checkpoint_keys(NULL, 1) == SYMCR_ERROR_UNSUPPORTED);
   CHECK(symcr_set_checkpoint_keys(NULL, 0) == SYMCR_OK);
 }

@@ -55,8 +55,11 @@ class CrashLoopTest : public StoreFixture {
   }
   RestoreJournal journal() const {
     const std::vector<std::uint8_t> bytes = read_file(path);
-    return symcr::detail::decode_restore_journal(
-        bytes.data() + symcr::detail::kRestoreJournalOffset, symcr::detail::kRestoreJournalSize);
+    return symcr::detail::read_restore_journal(bytes.data(), bytes.size());
+  }
+  // Where the file's current journal copy starts.
+  std::size_t journal_offset() const {
+    return symcr::detail::kRestoreJournalOffsets[journal().generation % 2];
   }
 };
 
@@ -129,13 +132,60 @@ TEST_F(CrashLoopTest, AConfirmedRestoreIsRestoredAgainAtTheNextStart) {
   expect_a(4);
 }
 
-TEST_F(CrashLoopTest, AConfirmAfterAFallbackClearsTheSuspicion) {
+TEST_F(CrashLoopTest, AConfirmAfterAFallbackNeverMakesTheCrashedCheckpointEligibleAgain) {
   save_seeds(1, 4);
   start_and_crash();
   ASSERT_EQ(start_and_confirm().sequence(), 3u);
-  EXPECT_TRUE(journal().empty());
-  // Checkpoint 4 is trusted again: nothing marks it once the fallback's restore proved good.
-  EXPECT_EQ(start_and_confirm().sequence(), 4u);
+  EXPECT_EQ(journal().unconfirmed, 0u);
+  EXPECT_EQ(journal().fallbacks, 0u);
+  EXPECT_EQ(journal().crashed_low, 4u);
+  EXPECT_EQ(journal().crashed_high, 4u);
+  // The program stops before its next save: the next starts restore 3 again, never the 4 that
+  // crashed, and a restore that proves itself is not counted as a fallback.
+  for (int start = 0; start < 3; ++start) {
+    const symcr::Report again = start_and_confirm();
+    ASSERT_TRUE(again.ok()) << again.status().message();
+    EXPECT_EQ(again.sequence(), 3u);
+    expect_a(3);
+    EXPECT_EQ(skipped_sequences(again), (std::vector<std::uint64_t>{4}));
+    EXPECT_NE(again.skipped()[0].reason.find("crashed the program"), std::string::npos)
+        << again.skipped()[0].reason;
+  }
+  // What is saved from then on is numbered above the crashed range and restored.
+  {
+    symcr::Store store;
+    open(store);
+    fill_a(50);
+    ASSERT_TRUE(store.save().ok());
+    EXPECT_EQ(store.last_sequence(), 5u);
+  }
+  EXPECT_EQ(start_and_confirm().sequence(), 5u);
+  expect_a(50);
+}
+
+TEST_F(CrashLoopTest, ASecondCrashLoopAfterAConfirmedOneExcludesBoth) {
+  options.fallback_depth = 3;
+  options.slots = 8;
+  save_seeds(1, 4);
+  start_and_crash();                               // 4 crashes
+  ASSERT_EQ(start_and_confirm().sequence(), 3u);   // 3 proves itself
+  {
+    symcr::Store store;
+    open(store);
+    for (int seed = 5; seed <= 6; ++seed) {
+      fill_a(seed);
+      ASSERT_TRUE(store.save().ok());  // sequences 5 and 6
+    }
+  }
+  EXPECT_EQ(start_and_crash().sequence(), 6u);    // 6 crashes
+  EXPECT_EQ(start_and_crash().sequence(), 5u);    // so does 5
+  const symcr::Report third = start_and_confirm();  // passes over 6, 5 and the crashed 4
+  ASSERT_TRUE(third.ok()) << third.status().message();
+  EXPECT_EQ(third.sequence(), 3u);
+  EXPECT_EQ(skipped_sequences(third), (std::vector<std::uint64_t>{6, 5, 4}));
+  EXPECT_EQ(journal().crashed_low, 4u);
+  EXPECT_EQ(journal().crashed_high, 6u);
+  EXPECT_EQ(start_and_confirm().sequence(), 3u);
 }
 
 TEST_F(CrashLoopTest, CheckpointsSavedAfterAnUnconfirmedRestoreAreSuspectToo) {
@@ -155,7 +205,111 @@ TEST_F(CrashLoopTest, CheckpointsSavedAfterAnUnconfirmedRestoreAreSuspectToo) {
   ASSERT_TRUE(report.ok()) << report.status().message();
   EXPECT_EQ(report.sequence(), 2u);
   expect_a(2);
-  EXPECT_EQ(skipped_sequences(report), (std::vector<std::uint64_t>{5, 4, 3}));
+  // 5 took the slot of 4: 3, and 2 and 1 (a depth of two), were kept for the fallback.
+  EXPECT_EQ(skipped_sequences(report), (std::vector<std::uint64_t>{5, 3}));
+}
+
+// Before confirm(), saves never overwrite what the fallback may still restore: the restored
+// checkpoint and one older checkpoint for each fallback the depth allows. With the default four
+// slots and a depth of three every slot is needed, so saves are refused until confirm().
+TEST_F(CrashLoopTest, SavesBeforeConfirmKeepEveryCheckpointTheFallbackNeeds) {
+  options.fallback_depth = 3;
+  save_seeds(1, 6);  // slots hold 3..6
+  {
+    symcr::Store store;
+    open(store);
+    ASSERT_EQ(store.restore_latest().sequence(), 6u);
+    for (int loop = 7; loop <= 10; ++loop) {
+      fill_a(loop);
+      const symcr::Status saved = store.save();
+      EXPECT_EQ(saved.error(), Error::StoreFull) << loop;
+      EXPECT_NE(std::string(saved.message()).find("confirm()"), std::string::npos)
+          << saved.message();
+    }
+  }  // crash before confirm()
+  for (int expected = 5; expected >= 3; --expected) {  // the whole depth, one start each
+    const symcr::Report report = start_and_crash();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(report.sequence(), static_cast<std::uint64_t>(expected));
+    expect_a(expected);
+  }
+  EXPECT_EQ(start_and_crash().status().error(), Error::NoValidSlot);  // past the depth
+}
+
+TEST_F(CrashLoopTest, WithTwoSlotsMoreThanTheDepthSavesGoOnBeforeConfirm) {
+  options.fallback_depth = 3;
+  options.slots = 5;
+  save_seeds(1, 6);  // slots hold 2..6
+  {
+    symcr::Store store;
+    open(store);
+    ASSERT_EQ(store.restore_latest().sequence(), 6u);
+    for (int loop = 7; loop <= 12; ++loop) {
+      fill_a(loop);
+      ASSERT_TRUE(store.save().ok()) << loop;  // each into the one slot left: 7's, then 8's...
+    }
+  }
+  for (int expected = 5; expected >= 3; --expected) {
+    const symcr::Report report = start_and_crash();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(report.sequence(), static_cast<std::uint64_t>(expected));
+  }
+}
+
+TEST_F(CrashLoopTest, OnceConfirmedTheNewestSaveIsRestored) {
+  options.fallback_depth = 3;
+  options.slots = 5;
+  save_seeds(1, 6);
+  {
+    symcr::Store store;
+    open(store);
+    ASSERT_EQ(store.restore_latest().sequence(), 6u);
+    for (int loop = 7; loop <= 9; ++loop) {
+      fill_a(loop);
+      ASSERT_TRUE(store.save().ok()) << loop;
+    }
+    ASSERT_TRUE(store.confirm().ok());
+  }
+  const symcr::Report report = start_and_confirm();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 9u);
+  expect_a(9);
+}
+
+TEST_F(CrashLoopTest, ARewriteForAnotherGeometryKeepsWhatTheFallbackNeeds) {
+  options.fallback_depth = 3;
+  save_seeds(1, 6);
+  start_and_crash();  // restored 6, crashed
+  options.slots = 2;  // a new build with a smaller store
+  {
+    symcr::Store store;
+    open(store);
+    ASSERT_EQ(store.restore_latest().sequence(), 5u);
+    fill_a(30);
+    // 5, and 4 and 3 for the two fallbacks left, cannot move into two slots with a new one.
+    EXPECT_EQ(store.save().error(), Error::StoreFull);
+    EXPECT_EQ(store.options().slots, 4u) << "the store kept its geometry";
+  }
+  EXPECT_EQ(start_and_crash().sequence(), 4u);
+  EXPECT_EQ(start_and_crash().sequence(), 3u);
+  // Once a restore is confirmed, the rewrite goes ahead and keeps the newest ones.
+  {
+    symcr::Store store;
+    open(store);
+    ASSERT_EQ(store.restore_latest().status().error(), Error::NoValidSlot);
+  }
+  save_seeds(40, 40);
+  {
+    symcr::Store store;
+    open(store);
+    ASSERT_EQ(store.restore_latest().sequence(), 7u);
+    ASSERT_TRUE(store.confirm().ok());
+    fill_a(41);
+    ASSERT_TRUE(store.save().ok());
+    EXPECT_EQ(store.options().slots, 2u);
+  }
+  EXPECT_EQ(start_and_confirm().sequence(), 8u);
+  expect_a(41);
 }
 
 TEST_F(CrashLoopTest, PastTheDepthNothingIsRestoredAndTheStateStaysInitial) {
@@ -281,11 +435,26 @@ TEST_F(CrashLoopTest, AReadOnlyStoreHonoursTheSuspicionsButRecordsNothing) {
   EXPECT_EQ(read_file(path), before);
 }
 
+TEST_F(CrashLoopTest, ADamagedJournalCopyGivesWayToTheOtherCopy) {
+  save_seeds(1, 4);
+  start_and_crash();  // journal: 4 unconfirmed
+  start_and_crash();  // journal: 4 suspect, 3 unconfirmed (the other copy)
+  ASSERT_EQ(journal().unconfirmed, 3u);
+  std::vector<std::uint8_t> bytes = read_file(path);
+  bytes[journal_offset() + 16] ^= 0x01;  // the current copy's unconfirmed sequence
+  write_file(path, bytes);
+  // The previous copy says 4 was restored and not confirmed: 4 is passed over.
+  EXPECT_EQ(journal().unconfirmed, 4u);
+  const symcr::Report report = start_and_crash();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 3u);
+}
+
 TEST_F(CrashLoopTest, ADamagedJournalIsIgnored) {
   save_seeds(1, 4);
   start_and_crash();
   std::vector<std::uint8_t> bytes = read_file(path);
-  bytes[symcr::detail::kRestoreJournalOffset + 8] ^= 0x01;  // the unconfirmed sequence
+  for (const std::uint64_t offset : symcr::detail::kRestoreJournalOffsets) bytes[offset + 16] ^= 1;
   write_file(path, bytes);
   const symcr::Report report = start_and_crash();
   ASSERT_TRUE(report.ok()) << report.status().message();
@@ -303,7 +472,7 @@ TEST_F(CrashLoopTest, ConfirmWritesOnlyOnce) {
   const std::vector<std::uint8_t> confirmed = read_file(path);
   // Later calls (a program may confirm in every loop) find nothing to write.
   std::vector<std::uint8_t> tampered = confirmed;
-  tampered[symcr::detail::kRestoreJournalOffset + 20] ^= 0x10;
+  tampered[journal_offset() + 20] ^= 0x10;
   write_file(path, tampered);
   for (int i = 0; i < 3; ++i) ASSERT_TRUE(store.confirm().ok());
   EXPECT_EQ(read_file(path), tampered);
@@ -315,22 +484,45 @@ TEST(RestoreJournalTest, EncodesAndDecodes) {
   journal.suspect_low = 8;
   journal.suspect_high = 11;
   journal.given_up_through = 3;
+  journal.crashed_low = 1;
+  journal.crashed_high = 2;
   journal.fallbacks = 2;
-  std::uint8_t bytes[symcr::detail::kRestoreJournalSize];
+  journal.depth = 4;
+  journal.generation = 5;
+  std::uint8_t page[symcr::detail::kRestoreJournalEnd] = {};
+  std::uint8_t* bytes = page + symcr::detail::kRestoreJournalOffsets[journal.generation % 2];
   symcr::detail::encode_restore_journal(journal, bytes);
-  const RestoreJournal decoded = symcr::detail::decode_restore_journal(bytes, sizeof bytes);
+  const RestoreJournal decoded = symcr::detail::read_restore_journal(page, sizeof page);
+  EXPECT_TRUE(decoded.same_state(journal));
+  EXPECT_EQ(decoded.generation, 5u);
   EXPECT_EQ(decoded.unconfirmed, 7u);
   EXPECT_EQ(decoded.suspect_low, 8u);
   EXPECT_EQ(decoded.suspect_high, 11u);
   EXPECT_EQ(decoded.given_up_through, 3u);
+  EXPECT_EQ(decoded.crashed_high, 2u);
   EXPECT_EQ(decoded.fallbacks, 2u);
+  EXPECT_EQ(decoded.depth, 4u);
   // Every byte is covered: by the magic, the fields or the checksum.
-  for (std::size_t i = 0; i < sizeof bytes; ++i) {
+  for (std::size_t i = 0; i < symcr::detail::kRestoreJournalSize; ++i) {
     bytes[i] ^= 0x20;
-    EXPECT_TRUE(symcr::detail::decode_restore_journal(bytes, sizeof bytes).empty()) << i;
+    EXPECT_TRUE(symcr::detail::read_restore_journal(page, sizeof page).empty()) << i;
     bytes[i] ^= 0x20;
   }
-  EXPECT_TRUE(symcr::detail::decode_restore_journal(bytes, sizeof bytes - 1).empty());
+  EXPECT_TRUE(symcr::detail::read_restore_journal(page, sizeof page - 1).empty());
+}
+
+TEST(RestoreJournalTest, TheCopyWithTheHigherGenerationIsTheJournal) {
+  std::uint8_t page[symcr::detail::kRestoreJournalEnd] = {};
+  RestoreJournal older, newer;
+  older.generation = 6;
+  older.unconfirmed = 3;
+  newer.generation = 7;
+  newer.unconfirmed = 4;
+  symcr::detail::encode_restore_journal(older, page + symcr::detail::kRestoreJournalOffsets[0]);
+  symcr::detail::encode_restore_journal(newer, page + symcr::detail::kRestoreJournalOffsets[1]);
+  EXPECT_EQ(symcr::detail::read_restore_journal(page, sizeof page).unconfirmed, 4u);
+  page[symcr::detail::kRestoreJournalOffsets[1] + 30] ^= 1;  // a write of it cut short
+  EXPECT_EQ(symcr::detail::read_restore_journal(page, sizeof page).unconfirmed, 3u);
 }
 
 TEST(RestoreJournalTest, ACrashWidensTheSuspectRangeDownwardsAndCountsTheDepth) {

@@ -69,6 +69,8 @@ enum class Error : std::uint8_t {
   NoValidSlot,     // store: no slot holds a valid checkpoint
   TooLarge,        // checkpoint larger than a store slot or a format limit
   Unauthenticated,  // keys are set and the checkpoint's MAC is missing or does not verify
+  // store: every slot holds a checkpoint the crash-loop fallback needs until confirm()
+  StoreFull,
 };
 
 const char* error_name(Error error);
@@ -142,6 +144,9 @@ class Report {
   // Store restores: the slots passed over on the way to the one restored (suspect, rejected,
   // unauthenticated) and those whose record is unusable (torn, corrupt, unknown schema).
   const std::vector<SkippedCheckpoint>& skipped() const { return skipped_; }
+  // What the program should know although the restore went through: e.g. a store that cannot
+  // record the restore, so the crash-loop fallback is disarmed for it.
+  const std::vector<std::string>& warnings() const { return warnings_; }
 
   std::string to_text() const;  // aligned table, one line per entry, status last
   std::string to_json() const;  // {"ok":..,"error":..,"sequence":..,"entries":[{...}]}
@@ -157,6 +162,7 @@ class Report {
   std::vector<ReportEntry> entries_;
   std::shared_ptr<const detail::ReportSource> source_;  // when set: it holds the entries
   std::vector<SkippedCheckpoint> skipped_;
+  std::vector<std::string> warnings_;
   std::uint64_t sequence_ = 0;
 };
 
@@ -230,7 +236,17 @@ struct StoreOptions {
   // restores the newest older one that validates; after `fallback_depth` such fallbacks in a
   // row, it restores nothing (Error::NoValidSlot, the state stays initial) and the program
   // starts afresh. Report::skipped() says which checkpoints were passed over and why.
+  //
+  // While a restore waits for confirm(), save() never overwrites the restored checkpoint nor the
+  // older ones the fallback may still restore (one per fallback the depth still allows); a
+  // save that finds no other slot returns Error::StoreFull and writes nothing. With `slots` at
+  // least fallback_depth + 2, saves go on before confirm().
   std::uint32_t fallback_depth = 0;
+  // A store opened for writing that turns out read-only (a read-only file or file system)
+  // cannot record a restore, so the fallback could not notice a crash the restored state
+  // causes: restore_latest() then refuses (Error::Io) unless this is set, in which case it
+  // restores without the fallback and says so in Report::warnings().
+  bool allow_unrecorded_restore = false;
 };
 
 class Store {
