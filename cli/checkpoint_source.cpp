@@ -72,15 +72,11 @@ Status load_record_file(const std::string& path, LoadedCheckpoint& out,
                         const std::string& writer_schema) {
   out.path = path;
   out.from_store = false;
-  Status status =
-      detail::read_regular_file(resolve_links(path).c_str(), kMaxRecordFileSize, out.bytes);
-  if (!status.ok()) return status;
+  std::uint64_t trailing = 0;
+  Status status = detail::read_record_file(resolve_links(path).c_str(), out.bytes, trailing);
+  if (!status.ok()) return with_path(path, status);
   status = detail::parse_record(out.bytes.data(), out.bytes.size(), out.record);
   if (!status.ok()) return with_path(path, status);
-  if (out.record.record_size != out.bytes.size()) {
-    return Status(Error::Corrupt, "%s: %zu unexpected bytes after the %zu-byte record",
-                  path.c_str(), out.bytes.size() - out.record.record_size, out.record.record_size);
-  }
   if (out.record.schema == nullptr && writer_schema.empty()) {
     return Status(Error::SchemaUnknown,
                   "%s: the record references schema %016llx by hash (a store slot's or a "

@@ -29,9 +29,6 @@ std::string resolve_links(const std::string& path);
 // Reads the magic only. Anything else is NotACheckpoint; a missing file is Io.
 Status detect_file_kind(const std::string& path, FileKind& out);
 
-// Largest record file the CLI reads (the format's own limit).
-inline constexpr std::uint64_t kMaxRecordFileSize = 0xFFFFull + 2 * 0xFFFFFFFFull;
-
 struct LoadedCheckpoint {
   std::string path;
   bool from_store = false;

@@ -66,7 +66,11 @@ int run_convert(const ConvertArgs& args) {
   }
   HostLayout layout;
   if (status.ok()) status = refuse_migrations(build.schema());
-  if (status.ok()) status = layout.lay_out(build.schema());
+  if (status.ok()) {
+    // What justifies the build's memory: the checkpoint's record and the build's schema.
+    const std::uint64_t input_size = checkpoint.record.record_size + build.bytes().size();
+    status = layout.lay_out(build.schema(), input_size);
+  }
   if (status.ok() && !args.initial.empty()) {
     status = restore_initial_state(args.initial, args.schema, build, layout);
   }

@@ -92,7 +92,7 @@ Status HostLayout::extent_of(std::uint32_t t, int depth) {
   return Status();
 }
 
-Status HostLayout::lay_out(const Schema& build) {
+Status HostLayout::lay_out(const Schema& build, std::uint64_t input_size) {
   build_ = &build;
   types_.assign(build.types, build.types + build.type_count);
   fields_.assign(build.type_count, {});
@@ -112,6 +112,17 @@ Status HostLayout::lay_out(const Schema& build) {
       types_[t].validate = nullptr;
       types_[t].migrate = nullptr;
     }
+  }
+  std::uint64_t total = 0;
+  for (const RootInfo& root : roots_) total += extents_[root.type].size;
+  if (total > kAlwaysAllowed && total / kBytesPerInputByte > input_size) {
+    return Status(Error::TooLarge,
+                  "the build's roots take %llu bytes, more than a conversion of %llu input bytes "
+                  "lays out (%llu MiB, or %llu bytes per input byte)",
+                  static_cast<unsigned long long>(total),
+                  static_cast<unsigned long long>(input_size),
+                  static_cast<unsigned long long>(kAlwaysAllowed >> 20),
+                  static_cast<unsigned long long>(kBytesPerInputByte));
   }
   for (RootInfo& root : roots_) {
     const std::size_t size = extents_[root.type].size;

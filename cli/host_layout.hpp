@@ -21,8 +21,12 @@ class HostLayout {
  public:
   // Lays `build` out and allocates its roots, zero-filled. `build` must outlive this object (its
   // names, enumerators and ranges are shared). Unsupported names the first kind that needs the
-  // build's code.
-  Status lay_out(const Schema& build);
+  // build's code. A schema file's sizes are not trusted with memory: roots larger in all than
+  // kAlwaysAllowed, or than kBytesPerInputByte per byte of `input_size` (the files the
+  // conversion reads), are refused (TooLarge) before anything is allocated.
+  static constexpr std::uint64_t kAlwaysAllowed = std::uint64_t{64} << 20;
+  static constexpr std::uint64_t kBytesPerInputByte = 16;
+  Status lay_out(const Schema& build, std::uint64_t input_size);
   const Schema& schema() const { return schema_; }
 
  private:

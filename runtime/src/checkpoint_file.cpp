@@ -12,10 +12,6 @@
 namespace symcr {
 namespace {
 
-// Largest file that can hold a record: the header size field is 16 bits, the schema and
-// payload sizes 32 bits each.
-constexpr std::uint64_t kMaxRecordFileSize = 0xFFFFull + 2 * 0xFFFFFFFFull;
-
 // Reused across checkpoints of a thread: a steady state allocates nothing.
 std::vector<std::uint8_t>& thread_buffer() {
   thread_local std::vector<std::uint8_t> buffer;
@@ -49,7 +45,8 @@ Report restore(const Schema& schema, const char* path, const RestoreOptions& opt
   // A buffer of its own, not the checkpoint one: a restore may run while another thread
   // checkpoints, and restored bytes are not needed afterwards.
   std::vector<std::uint8_t> bytes;
-  Status status = detail::read_regular_file(path, kMaxRecordFileSize, bytes);
+  std::uint64_t trailing = 0;
+  Status status = detail::read_record_file(path, bytes, trailing);
   if (!status.ok()) {
     Report report;
     detail::ReportAccess::set_status(report, status);

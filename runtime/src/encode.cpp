@@ -138,7 +138,8 @@ class Encoder {
       }
     }
     for (std::uint32_t r = 0; r < schema_.root_count && ok(); ++r) {
-      encode(schema_.roots[r].type, static_cast<const std::uint8_t*>(schema_.roots[r].address));
+      encode_object(schema_.roots[r].type,
+                    static_cast<const std::uint8_t*>(schema_.roots[r].address));
     }
     if (!ok()) return finish_error();
 
@@ -406,16 +407,33 @@ class Encoder {
     }
   }
 
+  // Values are charged against the nesting limit as every reader charges them
+  // (payload_grammar.hpp): a root or heap object its type's by-value levels, a container's
+  // element or a unique_ptr's pointee one more level and its own type's.
+  void encode_object(std::uint32_t type, const std::uint8_t* p) {
+    const int outer = depth_;
+    depth_ = static_cast<int>(facts_.nesting_levels[type]);
+    encode_within_limit(type, p);
+    depth_ = outer;
+  }
   void descend_into(std::uint32_t type, const std::uint8_t* p) {
-    if (++depth_ > kMaxValueNesting) {
+    const int outer = depth_;
+    depth_ = element_depth(type);
+    encode_within_limit(type, p);
+    depth_ = outer;
+  }
+  int element_depth(std::uint32_t type) const {
+    return depth_ + 1 + static_cast<int>(facts_.nesting_levels[type]);
+  }
+  void encode_within_limit(std::uint32_t type, const std::uint8_t* p) {
+    if (depth_ > kMaxValueNesting) {
       fail_unsupported(
-          "nesting deeper than %d containers or unique_ptrs (use raw pointers "
-          "or containers for long chains)",
+          "values nested deeper than the nesting limit of %d levels (use raw pointers for "
+          "long chains)",
           kMaxValueNesting);
     } else {
       encode(type, p);
     }
-    --depth_;
   }
 
   void prefetch_references(const TypeInfo& type, const std::uint8_t* p) const {
@@ -491,7 +509,7 @@ class Encoder {
     if (count > 0xFFFFFFFFu) return fail_unsupported("a container with more than 2^32 elements");
     put_u32(static_cast<std::uint32_t>(count));
     // Contiguous fixed-width little-endian scalars (wire width == size): one block.
-    if (ops->contiguous_data && count > 0 && depth_ < kMaxValueNesting) {
+    if (ops->contiguous_data && count > 0 && element_depth(type.element) <= kMaxValueNesting) {
       const TypeInfo& element = types_[type.element];
       if (element.kind == Kind::Int || element.kind == Kind::UInt || element.kind == Kind::Enum ||
           (element.kind == Kind::Float && element.size != 16)) {
@@ -591,7 +609,7 @@ class Encoder {
     put_u32(type);
     s_.heap.push_back(HeapObject{region, pos_});
     put_u8(reference.shared ? 1 : 0);
-    encode(type, reinterpret_cast<const std::uint8_t*>(start));
+    encode_object(type, reinterpret_cast<const std::uint8_t*>(start));
     return region;
   }
 

@@ -6,12 +6,15 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
 #include "file_system.hpp"
+#include "little_endian.hpp"
+#include "record.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -26,6 +29,10 @@ class FdGuard {
   FdGuard(const FdGuard&) = delete;
   FdGuard& operator=(const FdGuard&) = delete;
   int get() const { return fd_; }
+  void reset(int fd) {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = fd;
+  }
   int release() {
     const int fd = fd_;
     fd_ = -1;
@@ -151,10 +158,13 @@ Status pread_full(int fd, void* data, std::size_t size, off_t offset, std::size_
   return Status();
 }
 
-Status read_regular_file(const char* path, std::uint64_t max_size,
-                         std::vector<std::uint8_t>& out) {
+namespace {
+
+// Opens `path` for reading: never through a symlink as the final component, never waiting on a
+// FIFO, and only a regular file.
+Status open_regular_file(const char* path, FdGuard& fd, struct stat& info) {
   // O_NONBLOCK: opening a FIFO must not hang; it is refused just below.
-  FdGuard fd(open_retrying(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK));
+  fd.reset(open_retrying(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK));
   if (fd.get() < 0) {
     if (errno == ELOOP) {
       return Status(Error::Io, "cannot open %s: it is a symbolic link, which symcr does not "
@@ -162,9 +172,19 @@ Status read_regular_file(const char* path, std::uint64_t max_size,
     }
     return io_error("cannot open", path, errno);
   }
-  struct stat info {};
   if (file_system().fstat(fd.get(), &info) != 0) return io_error("cannot stat", path, errno);
   if (!S_ISREG(info.st_mode)) return Status(Error::Io, "%s is not a regular file", path);
+  return Status();
+}
+
+}  // namespace
+
+Status read_regular_file(const char* path, std::uint64_t max_size,
+                         std::vector<std::uint8_t>& out) {
+  FdGuard fd(-1);
+  struct stat info {};
+  Status opened = open_regular_file(path, fd, info);
+  if (!opened.ok()) return opened;
   if (static_cast<std::uint64_t>(info.st_size) > max_size) {
     return Status(Error::TooLarge, "%s has %lld bytes, more than the %llu a checkpoint can have",
                   path, static_cast<long long>(info.st_size),
@@ -190,6 +210,48 @@ Status read_regular_file(const char* path, std::uint64_t max_size,
                   static_cast<unsigned long long>(max_size));
   }
   out.resize(total);
+  return Status();
+}
+
+Status read_record_file(const char* path, std::vector<std::uint8_t>& out,
+                        std::uint64_t& trailing) {
+  trailing = 0;
+  FdGuard fd(-1);
+  struct stat info {};
+  Status status = open_regular_file(path, fd, info);
+  if (!status.ok()) return status;
+  const auto file_size = static_cast<std::uint64_t>(info.st_size);
+  out.resize(static_cast<std::size_t>(std::min<std::uint64_t>(file_size, kRecordHeaderSize)));
+  std::size_t got = 0;
+  status = pread_full(fd.get(), out.data(), out.size(), 0, got, path);
+  if (!status.ok()) return status;
+  out.resize(got);
+  // Only a header the parser would accept says how long the record is; any other head is all
+  // the parser needs to refuse the file.
+  if (got < kRecordHeaderSize || std::memcmp(out.data(), kRecordMagic, sizeof kRecordMagic) != 0) {
+    return Status();
+  }
+  const std::uint16_t version = le::load16(out.data() + 8);
+  const std::uint16_t header_size = le::load16(out.data() + 10);
+  if (version == 0 || version > kRecordFormatVersion || header_size < kRecordHeaderSize) {
+    return Status();
+  }
+  const std::uint64_t record_size = std::uint64_t{header_size} + le::load32(out.data() + 40) +
+                                    le::load32(out.data() + 44);
+  if (file_size > record_size) {
+    trailing = file_size - record_size;
+    return Status(Error::Corrupt, "%s: %llu unexpected bytes after the %llu-byte record", path,
+                  static_cast<unsigned long long>(trailing),
+                  static_cast<unsigned long long>(record_size));
+  }
+  // A file shorter than its record is read whole (the parser says how much is missing); it
+  // never grows the read past the record, whatever is appended meanwhile.
+  out.resize(static_cast<std::size_t>(file_size));
+  std::size_t rest = 0;
+  status = pread_full(fd.get(), out.data() + got, out.size() - got, static_cast<off_t>(got), rest,
+                      path);
+  if (!status.ok()) return status;
+  out.resize(got + rest);
   return Status();
 }
 
@@ -239,7 +301,9 @@ Status write_file_atomically(const char* path, const std::uint8_t* data, std::si
     status = io_error("cannot fdatasync", temp, errno);
   }
   // close() reports delayed write errors on some file systems (NFS): check it.
-  if (file_system().close(guard.release()) != 0 && status.ok()) status = io_error("cannot close", temp, errno);
+  if (file_system().close(guard.release()) != 0 && status.ok()) {
+    status = io_error("cannot close", temp, errno);
+  }
   if (status.ok() && file_system().rename(temp, path) != 0) {
     status = io_error("cannot rename the temp file onto", path, errno);
   }

@@ -28,6 +28,14 @@ Status pread_full(int fd, void* data, std::size_t size, off_t offset, std::size_
 Status read_regular_file(const char* path, std::uint64_t max_size,
                          std::vector<std::uint8_t>& out);
 
+// Reads the record at the start of regular file `path` into `out` (same refusals as
+// read_regular_file), its header first: only the bytes that header gives the record are read,
+// fewer when the file is shorter, and just the head when it does not decode (for the record
+// parser to refuse), so a file's size never drives the allocation. Bytes after the record its
+// header describes are never read: Corrupt "<path>: N unexpected bytes after the M-byte
+// record", with N in `trailing` (0 otherwise) and the head in `out`.
+Status read_record_file(const char* path, std::vector<std::uint8_t>& out, std::uint64_t& trailing);
+
 // Temp file name for attempt `attempt` at replacing `path`: "<path>.tmp.<pid>.<attempt>".
 // Returns false if it does not fit in `out`.
 bool temp_path_for(const char* path, unsigned attempt, char* out, std::size_t out_size);

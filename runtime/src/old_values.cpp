@@ -55,7 +55,7 @@ bool values_size(const Schema& writer, const detail::WireSizes& sizes, std::uint
   Measure measure;
   // Variable-size values take at least one byte each, so this loop ends within `size` steps.
   for (std::uint64_t i = 0; i < count; ++i) {
-    if (!detail::walk_value(in, type, 0, measure)) return false;
+    if (!detail::walk_value(in, type, in.object_depth(type), measure)) return false;
   }
   out = static_cast<std::size_t>(in.position() - bytes);
   return true;

@@ -1,9 +1,11 @@
 // The payload grammar's size facts, path text and fault reports (payload_grammar.hpp).
 #include "payload_grammar.hpp"
 
+#include <algorithm>
 #include <cinttypes>
 #include <cstdarg>
 #include <cstdio>
+#include <utility>
 
 #include "engine.hpp"
 
@@ -86,7 +88,79 @@ __attribute__((cold)) WireSizes wire_sizes(const Schema& writer) {
   WireSizes sizes;
   SizeFacts facts(writer, sizes);
   for (std::uint32_t t = 0; t < writer.type_count; ++t) facts.compute(t);
+  std::uint32_t culprit = kNoType;
+  if (by_value_levels(writer, sizes.levels, culprit) != ByValueNesting::Ok) {
+    // Only a schema that was not parsed (a program's own) gets here: its values are refused.
+    for (std::uint32_t& level : sizes.levels) {
+      level = std::min<std::uint32_t>(level, kMaxValueNesting + 1);
+    }
+  }
   return sizes;
+}
+
+namespace {
+
+// The `i`th type `t` holds by value, or kNoType after the last.
+std::uint32_t held_by_value(const TypeInfo& type, std::uint32_t i) {
+  switch (type.kind) {
+    case Kind::Struct:
+    case Kind::Union:
+      return i < type.field_count ? type.fields[i].type : kNoType;
+    case Kind::Array:
+    case Kind::Optional:
+      return i == 0 ? type.element : kNoType;
+    case Kind::Variant:
+      return i < type.alternative_count ? type.alternatives[i] : kNoType;
+    default:
+      return kNoType;
+  }
+}
+
+}  // namespace
+
+__attribute__((cold)) ByValueNesting by_value_levels(const Schema& schema,
+                                                     std::vector<std::uint32_t>& levels,
+                                                     std::uint32_t& culprit) {
+  constexpr std::uint32_t kUnvisited = ~std::uint32_t{0};
+  constexpr std::uint32_t kOnPath = kUnvisited - 1;
+  levels.assign(schema.type_count, kUnvisited);
+  // Depth-first with an explicit path (type, next held type to visit), on the heap.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> path;
+  for (std::uint32_t start = 0; start < schema.type_count; ++start) {
+    if (levels[start] != kUnvisited) continue;
+    levels[start] = kOnPath;
+    path.emplace_back(start, 0);
+    while (!path.empty()) {
+      const std::uint32_t t = path.back().first;
+      const TypeInfo& type = schema.types[t];
+      const std::uint32_t held = held_by_value(type, path.back().second);
+      if (held != kNoType) {
+        ++path.back().second;
+        if (held >= schema.type_count) continue;  // an unparsed (own) schema's type is trusted
+        if (levels[held] == kOnPath) {
+          culprit = held;
+          return ByValueNesting::ContainsItself;
+        }
+        if (levels[held] == kUnvisited) {
+          levels[held] = kOnPath;
+          path.emplace_back(held, 0);
+        }
+        continue;
+      }
+      std::uint32_t level = 0;
+      for (std::uint32_t i = 0; (held_by_value(type, i)) != kNoType; ++i) {
+        const std::uint32_t h = held_by_value(type, i);
+        if (h < schema.type_count) level = std::max(level, levels[h] + 1);
+      }
+      if (level > static_cast<std::uint32_t>(kMaxValueNesting)) {
+        culprit = t;
+        return ByValueNesting::TooDeep;
+      }
+      levels[t] = level;
+      path.pop_back();
+    }
+  }
+  return ByValueNesting::Ok;
 }
 
 // Paths are rendered only for reports and errors: cold.
@@ -196,7 +270,7 @@ bool PayloadReader::invalid_alternative(std::uint32_t index) {
 }
 bool PayloadReader::shared_outside() { return fail("shared_ptr marked as outside"); }
 bool PayloadReader::too_deep() {
-  return fail("containers or unique_ptrs nest deeper than %d levels", kMaxValueNesting);
+  return fail("values nest deeper than the nesting limit of %d levels", kMaxValueNesting);
 }
 bool PayloadReader::invalid_reference(std::uint32_t i, const char* what, std::uint32_t value) {
   return fail("reference %u %s %u", i, what, value);

@@ -20,9 +20,13 @@
 
 namespace symcr::detail {
 
-// Containers and unique_ptrs nest at most this deep in a value: saving refuses a deeper value
-// and every reader a deeper payload. (By-value nesting is bounded by the schema.)
-constexpr int kMaxValueNesting = 1000;
+// The nesting limit (docs/format.md §3): one budget for every kind of nesting, so that no
+// schema or payload can take a recursive encoder or decoder deeper than this many levels. A
+// type's values hold at most this many levels by value (the schema parser refuses a deeper
+// type), and a value is charged its type's by-value levels plus, for every container element
+// and unique_ptr pointee on the way to it, one level and that element type's by-value levels:
+// saving refuses, and every reader of a payload refuses, a value charged more.
+constexpr int kMaxValueNesting = 2048;
 // Elements that encode to no bytes (empty structs) are not bounded by the payload's size: an
 // array or container of more of them than this is refused.
 constexpr std::uint64_t kMaxEmptyElements = std::uint64_t{1} << 20;
@@ -34,8 +38,20 @@ struct WireSizes {
   static constexpr std::uint64_t kVariable = ~std::uint64_t{0};
   std::vector<std::uint64_t> least;
   std::vector<std::uint64_t> fixed;  // kVariable when value-dependent
+  std::vector<std::uint32_t> levels;  // by_value_levels
 };
+// For a parsed schema (whose types nest by value within the limit).
 WireSizes wire_sizes(const Schema& writer);
+
+// Per type, the levels of values its values hold by value: 0 for a type that holds none, a
+// struct or union one more than its deepest field, an array or optional one more than its
+// element, a variant one more than its deepest alternative. (Containers, unique_ptrs and
+// pointers hold theirs elsewhere; an enum's or string's element is an integer.) Computed
+// without recursion. Fails, naming the type in `culprit`, when a type contains itself by
+// value or holds more than kMaxValueNesting levels.
+enum class ByValueNesting : std::uint8_t { Ok, ContainsItself, TooDeep };
+ByValueNesting by_value_levels(const Schema& schema, std::vector<std::uint32_t>& levels,
+                               std::uint32_t& culprit);
 
 // A Pointer's or SharedPtr's reference code: null, outside the saved state (raw pointers only),
 // or kFirstReference + the index of its target in the reference table.
@@ -150,7 +166,13 @@ class PayloadReader {
     in_.seek(in_.position() + bytes);
     return true;
   }
-  // Entering a container's element or a unique_ptr's pointee: one level deeper.
+  // The nesting charged to a root's or heap object's value of `type`, and to a container's
+  // element or a unique_ptr's pointee of `type` inside a value charged `depth`.
+  int object_depth(std::uint32_t type) const { return static_cast<int>(sizes_.levels[type]); }
+  int element_depth(int depth, std::uint32_t type) const {
+    return depth + 1 + static_cast<int>(sizes_.levels[type]);
+  }
+  // Whether a value charged `depth` is within the nesting limit.
   bool nest(int depth) { return depth <= kMaxValueNesting || too_deep(); }
 
   // The heap section's header and each heap object's (its writer type and ownership flag).
@@ -219,7 +241,7 @@ class PayloadReader {
 //                                                       // string (its characters)
 //   void pointer(const TypeInfo&, const std::uint8_t* code_bytes, std::uint32_t code);
 //   void container(const TypeInfo&, std::uint32_t count);  // before its elements
-// The depth counts containers and unique_ptrs.
+// `depth` is the nesting charged to the value (object_depth for a root or heap object).
 template <typename Sink>
 bool walk_value(PayloadReader& in, std::uint32_t type_index, int depth, Sink& sink) {
   const Schema& writer = in.writer();
@@ -261,16 +283,17 @@ bool walk_value(PayloadReader& in, std::uint32_t type_index, int depth, Sink& si
     }
     case Kind::Container: {
       std::uint32_t count = 0;
-      if (!in.container(type, count) || (count > 0 && !in.nest(depth + 1))) return false;
+      const int element_depth = in.element_depth(depth, type.element);
+      if (!in.container(type, count) || (count > 0 && !in.nest(element_depth))) return false;
       sink.container(type, count);
       for (std::uint32_t i = 0; i < count; ++i) {
         sink.push(PathFrame{PathFrame::Kind::Index, nullptr, i});
-        if (!walk_value(in, type.element, depth + 1, sink)) return false;
+        if (!walk_value(in, type.element, element_depth, sink)) return false;
         sink.pop();
       }
       return true;
     }
-    case Kind::Optional: {  // holds its value by value: bounded by the schema
+    case Kind::Optional: {  // holds its value by value: charged with the object
       bool present = false;
       if (!in.presence(type, present)) return false;
       return !present || walk_value(in, type.element, depth, sink);
@@ -278,7 +301,8 @@ bool walk_value(PayloadReader& in, std::uint32_t type_index, int depth, Sink& si
     case Kind::UniquePtr: {
       bool present = false;
       if (!in.presence(type, present)) return false;
-      return !present || (in.nest(depth + 1) && walk_value(in, type.element, depth + 1, sink));
+      const int pointee_depth = in.element_depth(depth, type.element);
+      return !present || (in.nest(pointee_depth) && walk_value(in, type.element, pointee_depth, sink));
     }
     case Kind::Variant: {
       std::uint32_t index = 0;

@@ -67,7 +67,7 @@ bool Restorer::decode_objects() {
     frames_.push_back({PathFrame::Kind::Name, writer_.roots[wr].name, 0});
     counter_ = root.counter;
     current_object_ = wr;
-    if (!value(root.node, dst, nullptr)) return false;
+    if (!object(root.node, dst)) return false;
     frames_.pop_back();
   }
   std::uint32_t heap_count = 0;
@@ -89,7 +89,7 @@ bool Restorer::decode_objects() {
     counter_ = heap_counter_;
     current_object_ = writer_.root_count + h;
     std::uint8_t* dst = mode_ == Mode::Apply ? static_cast<std::uint8_t*>(heap_live_[h]) : nullptr;
-    if (!value(heap_[h].node, dst, nullptr)) return false;
+    if (!object(heap_[h].node, dst)) return false;
     frames_.pop_back();
   }
   return true;
@@ -100,15 +100,20 @@ bool Restorer::value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* fiel
   return runs_validator(n) ? validated_value(n, dst, field) : plain_value(n, dst, field);
 }
 
-// Only containers and unique_ptrs nest without a bound in the schema (struct nesting is
-// bounded when the schema is parsed); the save side refuses the same depth.
+// Containers and unique_ptrs nest without a bound in the schema: each element or pointee is
+// charged against the nesting limit, as the save side charges it.
 bool Restorer::nested(const PlanNode* n, std::uint8_t* dst) {
-  if (!in_.nest(++depth_)) {
-    --depth_;
-    return false;
-  }
-  const bool ok = value(n, dst, nullptr);
-  --depth_;
+  const int outer = depth_;
+  depth_ = in_.element_depth(outer, n->writer);
+  const bool ok = in_.nest(depth_) && value(n, dst, nullptr);
+  depth_ = outer;
+  return ok;
+}
+
+bool Restorer::object(const PlanNode* n, std::uint8_t* dst) {
+  depth_ = in_.object_depth(n->writer);
+  const bool ok = in_.nest(depth_) && value(n, dst, nullptr);
+  depth_ = 0;
   return ok;
 }
 
@@ -450,7 +455,7 @@ bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* ds
   const TypeInfo& we = writer_.types[wt.element];
   const bool packed = e->action == Action::Scalar && e->identical && !e->validated &&
                       we.kind != Kind::Bool && !(we.kind == Kind::Float && we.size == 16) &&
-                      count > 0 && depth_ < kMaxValueNesting;
+                      count > 0 && in_.element_depth(depth_, wt.element) <= kMaxValueNesting;
   if (packed && (!to_reader || !dst || !writing())) {
     const std::uint8_t* bytes = nullptr;
     return in_.scalar_run(we, count, bytes);

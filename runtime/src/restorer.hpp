@@ -160,8 +160,9 @@ class Restorer {
   // ---- values --------------------------------------------------------------------------
   bool value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);
 
-  // Only containers and unique_ptrs nest without a bound in the schema (struct nesting is
-  // bounded when the schema is parsed); the save side refuses the same depth.
+  // A root's or heap object's value, and a container's element or unique_ptr's pointee: each
+  // charged against the nesting limit (payload_grammar.hpp), as the save side charges it.
+  bool object(const PlanNode* n, std::uint8_t* dst);
   bool nested(const PlanNode* n, std::uint8_t* dst);
 
   bool validated_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);

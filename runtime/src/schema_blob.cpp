@@ -3,6 +3,7 @@
 
 #include "device_format.hpp"
 #include "engine.hpp"
+#include "payload_grammar.hpp"
 #include "schema_facts.hpp"
 #include "wire.hpp"
 
@@ -200,6 +201,7 @@ __attribute__((cold)) SchemaFacts compute_schema_facts(const Schema& schema) {
   facts.flat_count.assign(schema.type_count, 0);
   facts.flat_wire_size.assign(schema.type_count, 0);
   facts.has_pointer_fields.assign(schema.type_count, false);
+  facts.nesting_levels = wire_sizes(schema).levels;
   for (std::uint32_t t = 0; t < schema.type_count; ++t) {
     const TypeInfo& type = schema.types[t];
     if (type.kind != Kind::Struct) continue;

@@ -31,6 +31,7 @@ struct SchemaFacts {
   std::vector<std::uint32_t> flat_wire_size;
   std::vector<FlatRun> flat_runs;
   std::vector<bool> has_pointer_fields;  // per type: a Struct with raw Pointer fields
+  std::vector<std::uint32_t> nesting_levels;  // per type: WireSizes::levels
   // kTypeDynamicType classes by their vtable: how saving learns a heap object's dynamic type.
   struct DynamicType {
     const void* vtable;

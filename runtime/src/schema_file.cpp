@@ -14,9 +14,6 @@
 namespace symcr::detail {
 namespace {
 
-// A schema file is never larger than a record can be.
-constexpr std::uint64_t kMaxSchemaFileSize = 0xFFFFull + 0xFFFFFFFFull;
-
 std::uint64_t now_ns() {
   timespec now{};
   clock_gettime(CLOCK_REALTIME, &now);
@@ -73,7 +70,8 @@ Status parse_schema_file(const std::uint8_t* data, std::size_t size, ParsedSchem
 
 Status read_schema_file(const char* path, ParsedSchema& out, std::uint32_t* program_id) {
   std::vector<std::uint8_t> bytes;
-  Status status = read_regular_file(path, kMaxSchemaFileSize, bytes);
+  std::uint64_t trailing = 0;
+  Status status = read_record_file(path, bytes, trailing);
   if (!status.ok()) return status;
   status = parse_schema_file(bytes.data(), bytes.size(), out, program_id);
   if (!status.ok()) return Status(status.error(), "%s: %s", path, status.message());

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine.hpp"
+#include "payload_grammar.hpp"
 #include "wire.hpp"
 
 namespace symcr::detail {
@@ -39,7 +40,6 @@ namespace {
 
 constexpr std::size_t kNone = ~std::size_t{0};
 constexpr std::uint32_t kMaxTypeSize = 0x7FFFFFFFu;
-constexpr int kMaxNesting = 256;  // by-value nesting depth; real programs stay far below
 
 // Minimum encoded sizes, used to bound counts by the bytes that remain.
 constexpr std::size_t kMinType = 1 + 4 + 4 + 4 + 2 + 1;
@@ -95,7 +95,7 @@ class Parser {
     Status status = check_types();
     if (!status.ok()) return status;
     finish();
-    return Status();
+    return check_nesting();
   }
 
  private:
@@ -279,7 +279,7 @@ class Parser {
     return Status();
   }
 
-  // Checks that need every type: element kinds, and no type containing itself by value.
+  // Checks that need every type: element kinds.
   Status check_types() {
     const std::uint32_t count = static_cast<std::uint32_t>(s_.types.size());
     for (std::uint32_t t = 0; t < count; ++t) {
@@ -299,47 +299,22 @@ class Parser {
         }
       }
     }
-    // Depth-first over by-value edges with colours: grey-on-stack = self-containment.
-    depth_.assign(count, 0);  // 0 unvisited, -1 on the stack, >0 finished depth
-    for (std::uint32_t t = 0; t < count; ++t) {
-      Status status = visit(t, 0);
-      if (!status.ok()) return status;
-    }
     return Status();
   }
 
-  Status visit(std::uint32_t t, int level) {
-    if (depth_[t] > 0) return Status();
-    if (depth_[t] < 0) return corrupt("type %u contains itself by value", t);
-    if (level > kMaxNesting) return corrupt("types nest deeper than %d levels", kMaxNesting);
-    depth_[t] = -1;
-    const TypeInfo& type = s_.types[t];
-    const TypeFixup& fixup = type_fixups_[t];
-    auto child = [&](std::uint32_t c) { return visit(c, level + 1); };
-    Status status;
-    switch (type.kind) {
-      case Kind::Struct:
-      case Kind::Union:
-        for (std::uint32_t f = 0; f < type.field_count && status.ok(); ++f) {
-          status = child(s_.fields[fixup.fields + f].type);
-        }
-        break;
-      case Kind::Array:
-      case Kind::Optional:
-      case Kind::Enum:
-      case Kind::String:
-        status = child(type.element);
-        break;
-      case Kind::Variant:
-        for (std::uint32_t a = 0; a < type.alternative_count && status.ok(); ++a) {
-          status = child(s_.alternatives[fixup.alternatives + a]);
-        }
-        break;
-      default:  // containers and pointers hold their elements elsewhere: recursion is fine
-        break;
+  // After finish(): no type contains itself by value or nests deeper than the nesting limit.
+  Status check_nesting() {
+    std::vector<std::uint32_t> levels;
+    std::uint32_t culprit = kNoType;
+    switch (by_value_levels(s_.schema, levels, culprit)) {
+      case ByValueNesting::Ok:
+        return Status();
+      case ByValueNesting::ContainsItself:
+        return corrupt("type %u contains itself by value", culprit);
+      case ByValueNesting::TooDeep:
+        return corrupt("type %u nests values by value deeper than the nesting limit of %d levels",
+                       culprit, kMaxValueNesting);
     }
-    if (!status.ok()) return status;
-    depth_[t] = 1;
     return Status();
   }
 
@@ -388,7 +363,6 @@ class Parser {
   std::vector<NamedFixup> field_fixups_;
   std::vector<NamedFixup> root_fixups_;
   std::vector<std::size_t> enumerator_names_;
-  std::vector<int> depth_;
 };
 
 }  // namespace

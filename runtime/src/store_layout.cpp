@@ -1,8 +1,12 @@
 // The store file's layout (store_layout.hpp, docs/format.md §4).
 #include "store_layout.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstring>
+#include <numeric>
 
 #include "crc32c.hpp"
 #include "file_io.hpp"
@@ -208,11 +212,23 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
   out = StoreSalvage();
   // Records: every place the record magic starts a record whose checksum holds. The scan
   // resumes after a record found, so a checkpoint held as data inside another is not taken.
+  // The scan ends where the largest store the records found could belong to ends: slots are
+  // one slot size apart, so the slot size divides the distance between any two records found,
+  // and a store has at most kStoreMaxSlots slots. Holes in a sparse file (zeros, no record) are
+  // skipped without reading them.
   std::vector<std::uint8_t> chunk(kSalvageChunk);
   std::vector<std::uint8_t> record;
   RecordView view;
   std::uint64_t position = kStorePageSize;
-  while (position + kRecordHeaderSize <= file_size) {
+  std::uint64_t end = file_size;
+  std::uint64_t spacing = 0;  // the greatest common divisor of the records' distances
+  while (position + kRecordHeaderSize <= end) {
+    const off_t data = ::lseek(fd, static_cast<off_t>(position), SEEK_DATA);
+    if (data < 0 && errno == ENXIO) break;  // only a hole from here on
+    if (data > 0 && static_cast<std::uint64_t>(data) > position) {
+      position = static_cast<std::uint64_t>(data);
+      continue;
+    }
     std::size_t got = 0;
     Status status =
         pread_full(fd, chunk.data(), chunk.size(), static_cast<off_t>(position), got, path);
@@ -239,8 +255,14 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
               view.schema == nullptr;
     }
     if (found) {
+      if (!out.record_offsets.empty()) {
+        spacing = std::gcd(spacing, offset - out.record_offsets.front());
+      }
       out.record_offsets.push_back(offset);
       out.record_sizes.push_back(static_cast<std::uint32_t>(view.record_size));
+      const std::uint64_t slot_size_bound =
+          spacing != 0 ? std::min<std::uint64_t>(spacing, kStoreMaxSlotSize) : kStoreMaxSlotSize;
+      end = std::min(file_size, out.record_offsets.front() + kStoreMaxSlots * slot_size_bound);
       position = offset + view.record_size;
     } else {
       position = offset + 1;

@@ -70,7 +70,8 @@ class Walker {
     for (std::uint32_t r = 0; r < writer_.root_count; ++r) {
       path_.clear();
       push(PathFrame{PathFrame::Kind::Name, writer_.roots[r].name, 0});
-      if (!walk_value(in_, writer_.roots[r].type, 0, *this)) return false;
+      const std::uint32_t type = writer_.roots[r].type;
+      if (!walk_value(in_, type, in_.object_depth(type), *this)) return false;
       pop();
     }
     std::uint32_t heap_count = 0;
@@ -82,7 +83,7 @@ class Walker {
       if (!emit_) heap_types_.push_back(type);
       path_.clear();
       push(PathFrame{PathFrame::Kind::Heap, writer_.types[type].name, h});
-      if (!walk_value(in_, type, 0, *this)) return false;
+      if (!walk_value(in_, type, in_.object_depth(type), *this)) return false;
       pop();
     }
     return true;

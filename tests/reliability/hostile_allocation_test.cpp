@@ -7,11 +7,15 @@
 // Restore now refuses such a checkpoint cleanly in its check pass (state untouched).
 //
 // The restore runs in a child process so that the crash fails this test only.
+#include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -84,6 +88,94 @@ TEST(HostileAllocation, EmptyElementsIntoALargeReaderElementAreRefusedNotAllocat
                                  << ") on a " << buffer.size() << "-byte checkpoint";
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0)
       << "restore accepted 2^20 elements of 64 KiB from a 4-byte count";
+}
+
+
+// A child process's verdict: exited 0 (the checks it ran held), not killed.
+void expect_child_passed(pid_t child) {
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFEXITED(status)) << "the child died of signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+}
+
+// Sanitizers reserve terabytes of address space: an address-space limit only works without.
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+constexpr bool kCanLimitAddressSpace = false;
+#else
+constexpr bool kCanLimitAddressSpace = true;
+#endif
+
+std::string scratch_path(const char* name) {
+  return std::string(::testing::TempDir()) + "symcr_hostile_" + std::to_string(::getpid()) + "_" +
+         name;
+}
+
+TEST(HostileAllocation, SparseMultiGigabyteCheckpointFileIsRefusedWithoutReadingIt) {
+  chain = Chain{7, {}};
+  const std::string path = scratch_path("sparse.ckpt");
+  ASSERT_TRUE(symcr::checkpoint(chain_schema(), path.c_str()).ok());
+  // A valid checkpoint followed by 3 GiB of hole: a few KB on disk.
+  ASSERT_EQ(::truncate(path.c_str(), std::int64_t{3} << 30), 0) << std::strerror(errno);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    if (kCanLimitAddressSpace) {
+      const rlimit one_gigabyte{std::uint64_t{1} << 30, std::uint64_t{1} << 30};
+      if (::setrlimit(RLIMIT_AS, &one_gigabyte) != 0) ::_exit(3);
+    }
+    chain.value = 55;
+    bool refused = false;
+    std::thread([&] {
+      const symcr::Report report = symcr::restore(chain_schema(), path.c_str());
+      refused = report.status().error() == symcr::Error::Corrupt &&
+                std::strstr(report.status().message(), "unexpected bytes after the") != nullptr;
+    }).join();
+    ::_exit(refused && chain.value == 55 ? 0 : 1);
+  }
+  expect_child_passed(child);
+  ::unlink(path.c_str());
+  chain = Chain{};
+}
+
+TEST(HostileAllocation, DamagedStoreHeaderInATerabyteSparseFileIsSalvagedWithoutScanningIt) {
+  const std::string path = scratch_path("sparse.store");
+  {
+    symcr::Store store;
+    symcr::StoreOptions options;
+    options.slots = 4;
+    options.slot_size = 4096;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), chain_schema(), options, store).ok());
+    for (std::int32_t value = 1; value <= 6; ++value) {
+      chain.value = value;
+      ASSERT_TRUE(store.save().ok());
+    }
+  }
+  const int fd = ::open(path.c_str(), O_WRONLY);
+  ASSERT_GE(fd, 0);
+  const std::uint8_t zeros[40] = {};
+  ASSERT_EQ(::pwrite(fd, zeros, sizeof zeros, 0), static_cast<ssize_t>(sizeof zeros));
+  ::close(fd);
+  // The file system may not hold a file this large: then there is nothing to scan.
+  if (::truncate(path.c_str(), std::int64_t{1} << 40) != 0) {
+    ::unlink(path.c_str());
+    GTEST_SKIP() << "no sparse 1 TiB file here: " << std::strerror(errno);
+  }
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    // Reading a terabyte of hole takes many minutes of CPU; finding the six records, none.
+    const rlimit one_minute{60, 60};
+    if (::setrlimit(RLIMIT_CPU, &one_minute) != 0) ::_exit(3);
+    chain.value = 0;
+    symcr::Store store;
+    const symcr::Status opened = symcr::Store::open_readonly(path.c_str(), chain_schema(), store);
+    const symcr::Report report = opened.ok() ? store.restore_latest() : symcr::Report();
+    ::_exit(opened.ok() && report.ok() && chain.value == 6 ? 0 : 1);
+  }
+  expect_child_passed(child);
+  ::unlink(path.c_str());
+  chain = Chain{};
 }
 
 }  // namespace

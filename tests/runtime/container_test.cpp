@@ -244,7 +244,7 @@ TEST(WorldT, DeepNestingWithinTheLimitRoundTripsBeyondItIsRefused) {
   std::vector<std::uint8_t> payload;
   const symcr::Status status = symcr::detail::encode_payload(t0::schema(), payload);
   EXPECT_EQ(status.error(), symcr::Error::Unsupported);
-  EXPECT_NE(std::string(status.message()).find("nesting deeper than 1000"), std::string::npos)
+  EXPECT_NE(std::string(status.message()).find("nesting limit"), std::string::npos)
       << status.message();
   t0::tree = t0::Tree{};
   t1::tree = t1::Tree{};
