@@ -30,7 +30,7 @@ class FdGuard {
   FdGuard& operator=(const FdGuard&) = delete;
   int get() const { return fd_; }
   void reset(int fd) {
-    if (fd_ >= 0) ::close(fd_);
+    if (fd_ >= 0) file_system().close(fd_);
     fd_ = fd;
   }
   int release() {

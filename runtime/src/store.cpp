@@ -41,6 +41,16 @@ bool all_zero(const std::uint8_t* p, std::size_t n) {
   return std::all_of(p, p + n, [](std::uint8_t b) { return b == 0; });
 }
 
+// True when the first `size` bytes of a file are what an initialisation cut short leaves: all
+// zero, or the start of a store header (its magic, or a prefix of it, then zeros or the rest).
+// Such a file with no record in it is initialised again rather than refused forever.
+bool interrupted_initialisation(const std::uint8_t* header, std::size_t size) {
+  const std::size_t magic = std::min(size, sizeof detail::kStoreFileMagic);
+  std::size_t matched = 0;
+  while (matched < magic && header[matched] == detail::kStoreFileMagic[matched]) ++matched;
+  return matched == sizeof detail::kStoreFileMagic || all_zero(header + matched, size - matched);
+}
+
 bool same_dimensions(const StoreGeometry& a, const StoreGeometry& b) {
   return a.slot_count == b.slot_count && a.slot_size == b.slot_size;
 }
@@ -382,10 +392,18 @@ struct Store::Impl {
     return Status();
   }
 
-  // Adopts `g` for a file just initialised with nothing in it.
+  // Adds the journal the file holds to `copies` (encoded into `buffer`, kRestoreJournalSize
+  // bytes): the crash-loop fallback's memory, and the sequences it names, move with the store.
+  void add_journal_copy(std::vector<Copy>& copies, std::uint8_t* buffer) const {
+    if (recorded.empty()) return;
+    detail::encode_restore_journal(recorded, buffer);
+    copies.push_back({detail::kRestoreJournalOffsets[recorded.generation % 2], buffer,
+                      detail::kRestoreJournalSize});
+  }
+
+  // Adopts `g` for a file just initialised with nothing in it but the journal.
   void become_empty(const StoreGeometry& g) {
     geometry = g;
-    adopt_journal(nullptr, 0);
     for (StoreSchemaArea& area : areas) area = StoreSchemaArea();
     own_area = -1;
     lay_out_slots();
@@ -464,11 +482,7 @@ struct Store::Impl {
       copies.push_back({target.slot_offset(slot), kept[next].data(), kept[next].size()});
     }
     std::uint8_t journal_copy[detail::kRestoreJournalSize];
-    if (!recorded.empty()) {  // the crash-loop fallback's memory moves with the checkpoints
-      detail::encode_restore_journal(recorded, journal_copy);
-      copies.push_back({detail::kRestoreJournalOffsets[recorded.generation % 2], journal_copy,
-                        sizeof journal_copy});
-    }
+    add_journal_copy(copies, journal_copy);
 
     char temp[PATH_MAX];
     int new_fd = -1;
@@ -754,8 +768,8 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
     bool rebuilt = false;
     status = impl.recover(fd, file_size, header_status, can_write ? &options : nullptr, rebuilt);
     if (!status.ok()) {
-      // Nothing to restore in it. Only a blank file (an interrupted creation) is reused.
-      if (!(can_write && all_zero(header, got))) return status;
+      // Nothing to restore in it. Only a file an interrupted initialisation left is reused.
+      if (!(can_write && interrupted_initialisation(header, got))) return status;
       needs_initialising = true;
     } else if (rebuilt) {
       header_status = Status();
@@ -766,7 +780,10 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
 
   if (needs_initialising) {
     if (!can_write) return Status(Error::NoValidSlot, "%s holds no store", path);
-    status = impl.initialise(fd, path, wanted, {});
+    std::vector<Impl::Copy> copies;
+    std::uint8_t journal_copy[detail::kRestoreJournalSize];
+    impl.add_journal_copy(copies, journal_copy);
+    status = impl.initialise(fd, path, wanted, copies);
     if (status.ok() && created) status = detail::sync_parent_directory(path);
     if (!status.ok()) return creation_failed(status);
     impl.become_empty(wanted);
@@ -781,15 +798,10 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
       if (rc != 0) return detail::io_error("cannot extend the truncated store", path, rc);
     }
     if (can_write && !same_dimensions(impl.geometry, wanted)) {
-      if (impl.newest_valid_slot() >= 0) {
-        // Another geometry with checkpoints: read with the file's, rewrite at the first save.
-        impl.geometry_pending = true;
-        impl.requested = wanted;
-      } else {
-        status = impl.initialise(fd, path, wanted, {});
-        if (!status.ok()) return status;
-        impl.become_empty(wanted);
-      }
+      // Another geometry: read with the file's, rewrite (a new file renamed over this one) at
+      // the first save, so that a crash never leaves less than the old store.
+      impl.geometry_pending = true;
+      impl.requested = wanted;
     }
   } else {
     status = impl.scan_slots(fd);  // restore-only: a salvaged store

@@ -705,7 +705,7 @@ TEST_F(StoreTest, OpenReadonlyNeverCreatesAFile) {
   EXPECT_NE(::stat(path.c_str(), &info), 0);
 }
 
-TEST_F(StoreTest, DifferentGeometryWithoutCheckpointsIsReinitialised) {
+TEST_F(StoreTest, DifferentGeometryWithoutCheckpointsIsRewrittenAtTheFirstSave) {
   {
     symcr::Store store;
     open(store);
@@ -714,6 +714,9 @@ TEST_F(StoreTest, DifferentGeometryWithoutCheckpointsIsReinitialised) {
   options.slot_size = 8192;
   symcr::Store store;
   open(store);
+  EXPECT_EQ(StoreFile(path).slot_count(), 4u) << "open() rewrote the store";
+  fill_a(1);
+  ASSERT_TRUE(store.save().ok());
   const StoreFile file(path);
   EXPECT_EQ(file.slot_count(), 3u);
   EXPECT_EQ(file.slot_size(), 8192u);
