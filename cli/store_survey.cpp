@@ -156,7 +156,8 @@ std::string exclusions_text(const detail::RestoreJournal& journal) {
   const auto add = [&text](const std::string& part) { text += (text.empty() ? "" : "; ") + part; };
   if (journal.suspect_high != 0) {
     add("suspect " + range_text(journal.suspect_low, journal.suspect_high) + " (" +
-        std::to_string(journal.fallbacks) + (journal.fallbacks == 1 ? " fallback)" : " fallbacks)"));
+        std::to_string(journal.fallbacks) +
+        (journal.fallbacks == 1 ? " fallback)" : " fallbacks)"));
   }
   if (journal.crashed_high != 0) {
     add("crashed " + range_text(journal.crashed_low, journal.crashed_high));
