@@ -13,6 +13,7 @@
 #include "file_io.hpp"
 #include "header_fields.hpp"
 #include "schema_file.hpp"
+#include "store_survey.hpp"
 #include "values.hpp"
 
 namespace symcr::cli {
@@ -127,33 +128,47 @@ Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slo
   out.store.reset(new detail::StoreReader());
   status = out.store->open(resolve_links(path).c_str());
   if (!status.ok()) return status;
-  std::vector<std::uint32_t> candidates;
+  std::uint32_t index = 0;
   if (slot) {
-    candidates.push_back(*slot);
+    index = *slot;
   } else {
-    candidates = out.store->valid_slots_newest_first();
-  }
-  Status last_failure(Error::NoValidSlot, "%s: no slot holds a valid checkpoint", path.c_str());
-  for (const std::uint32_t index : candidates) {
-    int area_index = -1;
-    status = out.store->read_record(index, out.bytes, out.record, area_index);
-    if (status.ok()) {
-      const detail::StoreSchemaArea& area = out.store->area(area_index);
-      out.writer = &area.schema();
-      out.writer_hash = area.hash;
-      out.slot = index;
-      status = check_payload(*out.writer, out.record.payload, out.record.payload_size);
-      if (status.ok()) return Status();
+    const StoreSurvey survey = survey_store(*out.store);
+    out.skipped = survey.skipped;
+    if (!survey.restore_latest_slot) {
+      out.restores_nothing = survey.restores_nothing_by_choice;
+      return Status(Error::NoValidSlot, "%s: %s", path.c_str(), survey.nothing_restored.c_str());
     }
-    if (slot) {
-      return Status(status.error(), "%s: slot %u: %s", path.c_str(), index, status.message());
-    }
-    last_failure = Status(Error::NoValidSlot,
-                          "%s: no slot holds a restorable checkpoint (last tried slot %u: %s)",
-                          path.c_str(), index, status.message());
+    index = *survey.restore_latest_slot;
   }
-  out.writer = nullptr;
-  return last_failure;
+  int area_index = -1;
+  status = out.store->read_record(index, out.bytes, out.record, area_index);
+  if (status.ok()) {
+    const detail::StoreSchemaArea& area = out.store->area(area_index);
+    out.writer = &area.schema();
+    out.writer_hash = area.hash;
+    out.slot = index;
+    status = check_payload(*out.writer, out.record.payload, out.record.payload_size);
+  }
+  if (!status.ok()) {
+    out.writer = nullptr;
+    return Status(status.error(), "%s: slot %u: %s", path.c_str(), index, status.message());
+  }
+  return Status();
+}
+
+Status use_key_files(const std::vector<KeyFile>& keys) {
+  if (keys.empty()) return Status();
+  std::vector<std::vector<std::uint8_t>> bytes(keys.size());
+  std::vector<CheckpointKey> ring;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const Status read =
+        detail::read_regular_file(resolve_links(keys[i].path).c_str(), 1 << 16, bytes[i]);
+    if (!read.ok()) return Status(read.error(), "--key-file: %s", read.message());
+    ring.push_back(CheckpointKey{keys[i].id, bytes[i].data(), bytes[i].size()});
+  }
+  const Status set = set_checkpoint_keys(ring.data(), ring.size());
+  if (!set.ok()) return Status(set.error(), "--key-file: %s", set.message());
+  return Status();
 }
 
 std::string describe_checkpoint(const LoadedCheckpoint& c) {

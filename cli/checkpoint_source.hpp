@@ -1,5 +1,6 @@
 // Finding the checkpoint a command works on: a single-file checkpoint, or one slot of a store
-// (the one restore_latest() would take, or a chosen one), with its writer schema.
+// (the one the program's next start would restore, or a chosen one), with its writer schema;
+// and the keys the program authenticates checkpoints with.
 #ifndef SYMCR_CLI_CHECKPOINT_SOURCE_HPP
 #define SYMCR_CLI_CHECKPOINT_SOURCE_HPP
 
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "commands.hpp"
 #include "engine.hpp"
 #include "record.hpp"
 #include "store_reader.hpp"
@@ -39,10 +41,22 @@ struct LoadedCheckpoint {
   std::unique_ptr<detail::StoreReader> store;  // from_store: owns the area's schema
   const Schema* writer = nullptr;
   std::uint64_t writer_hash = 0;
+  // from_store, no slot chosen: the slots the next start passes over on the way to this one
+  // (or to none), then the unusable ones, as restore_latest()'s Report::skipped().
+  std::vector<SkippedCheckpoint> skipped;
+  // from_store: nothing would be restored although the store holds sound checkpoints (the
+  // crash-loop fallback or the keys exclude them all); load_checkpoint fails with NoValidSlot.
+  bool restores_nothing = false;
 };
 
-// A single-file checkpoint, or from a store the chosen slot or else the newest valid slot
-// whose payload decodes (as restore_latest() falls back past corrupt ones). The record, its
+// Reads each key file (its bytes are the key, as the program gives them to
+// set_checkpoint_keys) and sets the keys: checkpoints are then authenticated as by a program
+// that holds them. No keys: nothing is set.
+Status use_key_files(const std::vector<KeyFile>& keys);
+
+// A single-file checkpoint, or from a store the chosen slot or else the one the program's next
+// start would restore (store_survey.hpp: the journal applied, the keys set checked, corrupt
+// payloads passed over). The record, its
 // schema and (for a store slot) its payload are fully checked; a schema file is refused. A
 // single-file record that names its schema by hash only (a device's) is read with the schema
 // file `writer_schema`, whose hash must be the one it names.

@@ -10,19 +10,25 @@
 
 namespace symcr::cli {
 
+// A key the program authenticates checkpoints with: its id and the file holding its bytes.
+struct KeyFile {
+  std::uint32_t id = 0;
+  std::string path;
+};
+
 struct InspectArgs {
   std::string path;                    // a checkpoint, a store or a schema file
-  std::optional<std::uint32_t> slot;   // store: this slot instead of the newest valid one
+  std::optional<std::uint32_t> slot;   // store: this slot instead of the one a start restores
   bool json = false;
   std::string writer_schema;           // for a record that names its schema by hash only
+  std::vector<KeyFile> keys;           // the program's keys (none: MACs are not checked)
 };
 int run_inspect(const InspectArgs& args);
 
 struct VerifyArgs {
   std::string path;
   bool json = false;
-  std::string key_file;     // the key checkpoints are authenticated with ("": none)
-  std::uint32_t key_id = 0;  // its id
+  std::vector<KeyFile> keys;  // the program's keys (none: MACs are not checked)
 };
 int run_verify(const VerifyArgs& args);
 
@@ -41,6 +47,7 @@ struct PlanArgs {
   bool json = false;
   bool accept_other_program = false;  // plan a checkpoint of another program all the same
   std::string writer_schema;           // for a record that names its schema by hash only
+  std::vector<KeyFile> keys;           // the program's keys (none: MACs are not checked)
 };
 int run_plan(const PlanArgs& args);
 

@@ -121,7 +121,7 @@ int inspect_store(const InspectArgs& args) {
   std::vector<Value> values;
   std::vector<HeaderField> fields;
   if (!selected) {
-    failure = args.path + ": no slot holds a restorable checkpoint";
+    failure = args.path + ": " + survey.nothing_restored;
   } else if (*selected >= survey.slots.size()) {
     failure = args.path + " has " + std::to_string(survey.slots.size()) +
               " slots; there is no slot " + std::to_string(*selected);
@@ -182,8 +182,13 @@ int inspect_store(const InspectArgs& args) {
 }  // namespace
 
 int run_inspect(const InspectArgs& args) {
+  Status status = use_key_files(args.keys);
+  if (!status.ok()) {
+    print_error(status.message());
+    return kExitError;
+  }
   FileKind kind;
-  const Status status = detect_file_kind(args.path, kind);
+  status = detect_file_kind(args.path, kind);
   if (!status.ok()) {
     print_error(status.message());
     return kExitError;

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
@@ -21,10 +22,11 @@ cl::OptionCategory symcr_category("symcr options");
 
 cl::SubCommand inspect_command(
     "inspect", "Show a checkpoint's header and its values by source names. For a store: every "
-               "slot, and the values of the newest valid one (or --slot N).");
+               "slot, and the values of the one the program's next start would restore (or "
+               "--slot N).");
 cl::SubCommand verify_command(
     "verify", "Check a checkpoint or store: checksum, structure, full payload decode; for a "
-              "store, the slot restore_latest() would take. Exit 1 if invalid.");
+              "store, the slot the program's next start would restore. Exit 1 if invalid.");
 cl::SubCommand diff_command(
     "diff", "List the values that differ between two checkpoints, by path (added and removed "
             "paths too). Exit 1 if any differ.");
@@ -46,15 +48,20 @@ cl::opt<std::string> inspect_path(cl::Positional, cl::Required,
 cl::opt<std::string> verify_path(cl::Positional, cl::Required,
                                  cl::desc("<checkpoint | store | schema file>"),
                                  cl::sub(verify_command), cl::cat(symcr_category));
-cl::opt<std::string> verify_key_file(
+cl::list<std::string> key_files(
     "key-file",
-    cl::desc("Verify authenticated checkpoints with the key in this file (its bytes, as the "
-             "program gives them to symcr::set_checkpoint_keys); a checkpoint without a MAC, "
-             "or whose MAC does not verify, is invalid"),
-    cl::value_desc("file"), cl::sub(verify_command), cl::cat(symcr_category));
-cl::opt<unsigned> verify_key_id("key-id", cl::desc("The id of the --key-file key (default 0)"),
-                                cl::init(0), cl::value_desc("N"), cl::sub(verify_command),
-                                cl::cat(symcr_category));
+    cl::desc("A key the program authenticates checkpoints with: its bytes, as the program gives "
+             "them to symcr::set_checkpoint_keys. Repeat for each key the program holds (a key "
+             "rotation); a checkpoint without a MAC, or whose MAC verifies with none of them, "
+             "is one the program refuses"),
+    cl::value_desc("file"), cl::sub(inspect_command), cl::sub(verify_command),
+    cl::sub(plan_command), cl::cat(symcr_category));
+cl::list<unsigned> key_ids(
+    "key-id",
+    cl::desc("The id of a --key-file key: the first --key-id is the first --key-file's, and so "
+             "on (default 0 for a single key)"),
+    cl::value_desc("N"), cl::sub(inspect_command), cl::sub(verify_command),
+    cl::sub(plan_command), cl::cat(symcr_category));
 cl::opt<std::string> diff_a(cl::Positional, cl::Required, cl::desc("<checkpoint a>"),
                             cl::sub(diff_command), cl::cat(symcr_category));
 cl::opt<std::string> diff_b(cl::Positional, cl::Required, cl::desc("<checkpoint b>"),
@@ -89,12 +96,16 @@ cl::opt<bool> convert_inline_schema(
 cl::opt<bool> json_output("json", cl::desc("Write JSON instead of text"),
                           cl::sub(inspect_command), cl::sub(verify_command),
                           cl::sub(diff_command), cl::sub(plan_command), cl::cat(symcr_category));
-cl::opt<unsigned> slot("slot", cl::desc("Use this slot of a store instead of the newest valid one"),
+cl::opt<unsigned> slot("slot",
+                       cl::desc("Use this slot of a store instead of the one the program's next "
+                                "start would restore"),
                        cl::value_desc("N"), cl::sub(inspect_command), cl::sub(plan_command),
                        cl::sub(convert_command), cl::cat(symcr_category));
-cl::opt<unsigned> slot_a("slot-a", cl::desc("Slot of store <a> (default: newest valid)"),
+cl::opt<unsigned> slot_a("slot-a",
+                         cl::desc("Slot of store <a> (default: the one its next start restores)"),
                          cl::value_desc("N"), cl::sub(diff_command), cl::cat(symcr_category));
-cl::opt<unsigned> slot_b("slot-b", cl::desc("Slot of store <b> (default: newest valid)"),
+cl::opt<unsigned> slot_b("slot-b",
+                         cl::desc("Slot of store <b> (default: the one its next start restores)"),
                          cl::value_desc("N"), cl::sub(diff_command), cl::cat(symcr_category));
 cl::opt<std::string> plan_schema("schema", cl::Required,
                                  cl::desc("Schema file of the build to restore into"),
@@ -117,22 +128,37 @@ std::optional<std::uint32_t> given(const cl::opt<unsigned>& option) {
   return static_cast<std::uint32_t>(option);
 }
 
+// Pairs the --key-file and --key-id options in order; false (after saying why) when they do not
+// pair up.
+bool given_keys(std::vector<symcr::cli::KeyFile>& keys) {
+  if (key_ids.size() != key_files.size() && !(key_ids.empty() && key_files.size() == 1)) {
+    llvm::errs() << "symcr: error: " << key_files.size() << " --key-file and " << key_ids.size()
+                 << " --key-id: give each key file its id (the first --key-id is the first "
+                    "--key-file's), or one --key-file alone (id 0)\n";
+    return false;
+  }
+  for (std::size_t i = 0; i < key_files.size(); ++i) {
+    keys.push_back({key_ids.empty() ? 0u : static_cast<std::uint32_t>(key_ids[i]), key_files[i]});
+  }
+  return true;
+}
+
 void print_version(llvm::raw_ostream& out) { out << "symcr " SYMCR_VERSION "\n"; }
 
 int run_subcommand() {
+  std::vector<symcr::cli::KeyFile> keys;
+  if (!given_keys(keys)) return symcr::cli::kExitError;
   if (inspect_command) {
-    return symcr::cli::run_inspect({inspect_path, given(slot), json_output, writer_schema});
+    return symcr::cli::run_inspect({inspect_path, given(slot), json_output, writer_schema, keys});
   }
-  if (verify_command) {
-    return symcr::cli::run_verify({verify_path, json_output, verify_key_file, verify_key_id});
-  }
+  if (verify_command) return symcr::cli::run_verify({verify_path, json_output, keys});
   if (diff_command) {
     return symcr::cli::run_diff({diff_a, diff_b, given(slot_a), given(slot_b), json_output});
   }
   if (plan_command) {
     return symcr::cli::run_plan({{plan_checkpoints.begin(), plan_checkpoints.end()}, given(slot),
                                  plan_schema, plan_strict, json_output, plan_accept_other_program,
-                                 writer_schema});
+                                 writer_schema, keys});
   }
   if (convert_command) {
     return symcr::cli::run_convert({convert_checkpoint, given(slot), plan_schema, convert_output,

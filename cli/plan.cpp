@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "authentication.hpp"
 #include "checkpoint_source.hpp"
 #include "commands.hpp"
 #include "dry_run.hpp"
@@ -36,6 +37,9 @@ struct PlannedCheckpoint {
   Status loaded;  // !ok: the checkpoint could not be read (nothing else is set)
   LoadedCheckpoint checkpoint;
   Report report;
+  // A store whose journal or keys exclude every checkpoint: loaded, but no checkpoint is set;
+  // the report says why nothing would be restored.
+  bool restores_nothing = false;
   std::size_t rejected = 0;
   std::size_t lossy = 0;
   bool would_restore = false;
@@ -45,19 +49,52 @@ struct PlannedCheckpoint {
 
 void plan_one(const PlanArgs& args, const Build& build, PlannedCheckpoint& out) {
   out.loaded = load_checkpoint(out.path, args.slot, out.checkpoint, args.writer_schema);
+  if (!out.loaded.ok() && out.checkpoint.restores_nothing) {
+    // The program's next start would restore nothing: a restore that fails, not a file that
+    // cannot be read.
+    detail::ReportAccess::set_status(out.report, out.loaded);
+    detail::ReportAccess::skipped(out.report) = out.checkpoint.skipped;
+    out.loaded = Status();
+    out.restores_nothing = true;
+    return;
+  }
   if (!out.loaded.ok()) return;
-  const Status program =
-      detail::check_program(out.checkpoint.record.header.program_id, build.program_id,
-                            "the build of the schema file", args.accept_other_program);
-  if (program.ok()) {
+  const detail::RecordHeader& header = out.checkpoint.record.header;
+  // With keys, a restore refuses a checkpoint whose MAC does not verify, before anything else.
+  Status refused = detail::check_authentication(out.checkpoint.bytes.data(), out.checkpoint.record);
+  if (refused.ok()) {
+    refused = detail::check_program(header.program_id, build.program_id,
+                                    "the build of the schema file", args.accept_other_program);
+  }
+  if (refused.ok()) {
     out.report = dry_run_restore(out.checkpoint, build.schema.schema(), args.strict);
   } else {
-    detail::ReportAccess::set_status(out.report, program);
-    detail::ReportAccess::set_sequence(out.report, out.checkpoint.record.header.sequence);
+    detail::ReportAccess::set_status(out.report, refused);
+    detail::ReportAccess::set_sequence(out.report, header.sequence);
   }
+  detail::ReportAccess::skipped(out.report) = out.checkpoint.skipped;
   out.rejected = out.report.count(Decision::Rejected);
   out.lossy = lossy_count(out.report);
   out.would_restore = out.report.ok();
+}
+
+// The heading naming what is planned.
+std::string planned_text(const PlannedCheckpoint& plan) {
+  return plan.restores_nothing ? plan.path + " (no checkpoint: the program's next start would "
+                                             "restore none)"
+                               : describe_checkpoint(plan.checkpoint);
+}
+
+// The slots the program's next start passes over (as its restore report lists them), then the
+// report's table (none when nothing would be restored).
+void print_plan_body(const PlannedCheckpoint& plan) {
+  for (const SkippedCheckpoint& skipped : plan.report.skipped()) {
+    print("passed over slot " + std::to_string(skipped.slot) +
+          (skipped.sequence != 0 ? " (sequence " + std::to_string(skipped.sequence) + ")" : "") +
+          ": " + skipped.reason + "\n");
+  }
+  if (!plan.report.skipped().empty()) print("\n");
+  if (!plan.restores_nothing) print_report_table(plan.report);
 }
 
 // The arguments, a directory standing for the files in it (by name; its subdirectories are
@@ -102,6 +139,17 @@ void write_report_json(JsonWriter& json, const Report& report) {
   }
   json.array_end();
   json.key_end();
+  json.key_begin("skipped");
+  json.array_begin();
+  for (const SkippedCheckpoint& skipped : report.skipped()) {
+    json.object_begin();
+    json.field("slot", skipped.slot);
+    json.field("sequence", skipped.sequence);
+    json.field("reason", skipped.reason);
+    json.object_end();
+  }
+  json.array_end();
+  json.key_end();
   json.object_end();
 }
 
@@ -115,8 +163,12 @@ void write_plan_json(JsonWriter& json, const PlanArgs& args, const Build& build,
     json.object_end();
     return;
   }
-  if (plan.checkpoint.from_store) json.field("slot", plan.checkpoint.slot);
-  json.field("checkpoint_schema", hex64(plan.checkpoint.writer_hash));
+  if (plan.restores_nothing) {
+    json.field("slot", JsonScalar::null());
+  } else {
+    if (plan.checkpoint.from_store) json.field("slot", plan.checkpoint.slot);
+    json.field("checkpoint_schema", hex64(plan.checkpoint.writer_hash));
+  }
   if (with_build) {
     json.field("build_schema_file", args.schema);
     json.field("build_schema", hex64(build.schema.hash()));
@@ -175,9 +227,10 @@ int print_matrix(const PlanArgs& args, const std::string& build_text,
   unsigned clean = 0, findings = 0, unreadable = 0;
   for (const auto& plan : plans) {
     const bool loaded = plan->loaded.ok();
+    const bool chosen = loaded && !plan->restores_nothing;
     const std::string slot =
-        loaded && plan->checkpoint.from_store ? std::to_string(plan->checkpoint.slot) : "-";
-    const std::string schema = loaded ? hex64(plan->checkpoint.writer_hash) : "-";
+        chosen && plan->checkpoint.from_store ? std::to_string(plan->checkpoint.slot) : "-";
+    const std::string schema = chosen ? hex64(plan->checkpoint.writer_hash) : "-";
     const bool finding = loaded && plan->finding(args.strict);
     const Colour colour = !loaded || finding ? Colour::Red : Colour::Green;
     print(cell(plan->path, width) + "  " + cell(slot, 4) + "  " + cell(schema, 16) + "  " +
@@ -191,8 +244,8 @@ int print_matrix(const PlanArgs& args, const std::string& build_text,
         " would not, " + std::to_string(unreadable) + " unreadable\n");
   for (const auto& plan : plans) {
     if (!plan->loaded.ok() || !plan->finding(args.strict)) continue;
-    print("\ncheckpoint  " + describe_checkpoint(plan->checkpoint) + "\n\n");
-    print_report_table(plan->report);
+    print("\ncheckpoint  " + planned_text(*plan) + "\n\n");
+    print_plan_body(*plan);
     print_verdict(terminal, *plan);
   }
   return unreadable ? kExitError : findings ? kExitFinding : kExitOk;
@@ -201,6 +254,11 @@ int print_matrix(const PlanArgs& args, const std::string& build_text,
 }  // namespace
 
 int run_plan(const PlanArgs& args) {
+  const Status keys = use_key_files(args.keys);
+  if (!keys.ok()) {
+    print_error(keys.message());
+    return kExitError;
+  }
   bool any_directory = false;
   const std::vector<std::string> paths = checkpoint_paths(args.checkpoints, any_directory);
   Build build;
@@ -233,9 +291,9 @@ int run_plan(const PlanArgs& args) {
       write_plan_json(json, args, build, plan, /*with_build=*/true);
       return exit_code;
     }
-    print("checkpoint  " + describe_checkpoint(plan.checkpoint) + "\nbuild       " + build_text +
+    print("checkpoint  " + planned_text(plan) + "\nbuild       " + build_text +
           "\nmode        " + (args.strict ? "strict" : "default") + "\n\n");
-    print_report_table(plan.report);
+    print_plan_body(plan);
     print_verdict(Terminal::for_stdout(), plan);
     return exit_code;
   }

@@ -9,8 +9,72 @@
 
 namespace symcr::cli {
 
+namespace {
+
+// Why the next start passes over a restorable slot that `journal` (as it applies it) excludes;
+// `pending` is the restore the store's journal records as unconfirmed.
+std::string exclusion_reason(const detail::RestoreJournal& journal, std::uint64_t pending,
+                             std::uint64_t sequence) {
+  if (journal.gave_up_on(sequence)) {
+    return "crash-loop fallback: given up on (restores never confirmed down to the fallback "
+           "depth, or no older checkpoint left)";
+  }
+  if (journal.crashed(sequence)) {
+    return "crash-loop fallback: crashed the program, or was saved after a restore that did";
+  }
+  if (sequence == pending) {
+    return "crash-loop fallback: suspect, the last start restored it and never confirmed (a "
+           "crash, counted at the next start)";
+  }
+  return "crash-loop fallback: suspect, restored or saved after a restore that was never "
+         "confirmed";
+}
+
+std::string count_text(std::size_t count, const char* what) {
+  return std::to_string(count) + (count == 1 ? " checkpoint " : " checkpoints ") + what;
+}
+
+std::string nothing_restored_text(const StoreSurvey& survey, std::uint64_t pending,
+                                  std::uint32_t depth) {
+  std::size_t passed_over = 0, unauthenticated = 0, unusable = 0;
+  for (const SlotSurvey& slot : survey.slots) {
+    if (slot.passed_over) {
+      ++passed_over;
+    } else if (slot.unauthenticated) {
+      ++unauthenticated;
+    } else if (slot.written && !slot.restorable) {
+      ++unusable;
+    }
+  }
+  std::string text = "nothing would be restored: ";
+  if (passed_over == 0 && unauthenticated == 0) {
+    return text + "no slot holds a restorable checkpoint";
+  }
+  if (survey.gives_up) {
+    text += "the next start counts the restore of #" + std::to_string(pending) +
+            ", never confirmed, as a crash past the fallback depth " + std::to_string(depth) +
+            " and gives up on every checkpoint through #" +
+            std::to_string(survey.next_start_journal.given_up_through) + "; ";
+  }
+  std::string counts;
+  if (passed_over) counts += count_text(passed_over, "passed over by the crash-loop fallback");
+  if (unauthenticated) {
+    counts += (counts.empty() ? "" : ", ") +
+              count_text(unauthenticated, "unauthenticated with the keys given");
+  }
+  if (unusable) counts += (counts.empty() ? "" : ", ") + count_text(unusable, "unusable");
+  return text + counts;
+}
+
+}  // namespace
+
 StoreSurvey survey_store(const detail::StoreReader& store) {
   StoreSurvey survey;
+  survey.next_start_journal = store.journal_at_next_start(&survey.counts_crash);
+  const detail::RestoreJournal& journal = survey.next_start_journal;
+  // count_crash() leaves fallbacks at 0 only when it gave up.
+  survey.gives_up = survey.counts_crash && journal.fallbacks == 0;
+  const std::uint64_t pending = store.journal().unconfirmed;
   const std::vector<detail::StoreSlot>& slots = store.slots();
   std::vector<std::uint8_t> bytes;
   for (std::uint32_t i = 0; i < slots.size(); ++i) {
@@ -18,6 +82,7 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
     SlotSurvey s;
     s.index = i;
     s.state = detail::store_slot_state_name(slot.state);
+    s.written = slot.state != detail::StoreSlotState::Empty;
     s.has_header = slot.state == detail::StoreSlotState::Valid ||
                    slot.state == detail::StoreSlotState::UnknownSchema;
     s.header = slot.header;
@@ -30,24 +95,22 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
       detail::RecordView view;
       int area = -1;
       Status status = store.read_record(i, bytes, view, area);
-      // With --key-file every slot's MAC is checked, as a restore would check the one it takes.
+      // Every slot's MAC is checked with the keys given, as a restore checks the one it takes.
       const Status authentic =
           status.ok() ? detail::check_authentication(bytes.data(), view) : Status();
       if (status.ok() && authentic.ok()) {
         status = check_payload(store.area(area).schema(), view.payload, view.payload_size);
       }
       s.restorable = status.ok() && authentic.ok();
-      const detail::RestoreJournal& journal = store.journal();
       if (s.restorable && journal.excludes(slot.header.sequence)) {
         s.passed_over = true;
-        s.problem = journal.gave_up_on(slot.header.sequence)
-                        ? "crash-loop fallback: given up on"
-                        : "crash-loop fallback: suspect (a restore never confirmed)";
+        s.problem = exclusion_reason(journal, pending, slot.header.sequence);
       }
       if (!authentic.ok()) {
         s.state = detail::store_slot_state_name(detail::StoreSlotState::Unauthenticated);
         s.problem = authentic.message();
         s.damaged = true;
+        s.unauthenticated = true;
       } else if (!status.ok()) {
         s.state = "corrupt-payload";
         s.problem = status.message();
@@ -57,30 +120,88 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
     survey.slots.push_back(std::move(s));
   }
   for (const std::uint32_t i : store.valid_slots_newest_first()) {
-    if (survey.slots[i].restorable && !survey.slots[i].passed_over) {
+    const SlotSurvey& s = survey.slots[i];
+    if (s.restorable && !s.passed_over) {
       survey.restore_latest_slot = i;
       break;
     }
+    survey.skipped.push_back(SkippedCheckpoint{i, s.header.sequence, s.problem});
+  }
+  for (std::uint32_t i = 0; i < slots.size(); ++i) {
+    if (slots[i].state != detail::StoreSlotState::Valid && survey.slots[i].written) {
+      const SlotSurvey& s = survey.slots[i];
+      survey.skipped.push_back(
+          SkippedCheckpoint{i, s.has_header ? s.header.sequence : 0, s.problem});
+    }
+  }
+  if (!survey.restore_latest_slot) {
+    for (const SlotSurvey& s : survey.slots) {
+      survey.restores_nothing_by_choice |= s.passed_over || s.unauthenticated;
+    }
+    survey.nothing_restored = nothing_restored_text(survey, pending, store.journal().depth);
   }
   return survey;
 }
 
 namespace {
 
+std::string range_text(std::uint64_t low, std::uint64_t high) {
+  return low == high ? "#" + std::to_string(low)
+                     : "#" + std::to_string(low) + " to #" + std::to_string(high);
+}
+
+// The exclusions a journal records (without its unconfirmed restore).
+std::string exclusions_text(const detail::RestoreJournal& journal) {
+  std::string text;
+  const auto add = [&text](const std::string& part) { text += (text.empty() ? "" : "; ") + part; };
+  if (journal.suspect_high != 0) {
+    add("suspect " + range_text(journal.suspect_low, journal.suspect_high) + " (" +
+        std::to_string(journal.fallbacks) +
+        (journal.fallbacks == 1 ? " fallback)" : " fallbacks)"));
+  }
+  if (journal.crashed_high != 0) {
+    add("crashed " + range_text(journal.crashed_low, journal.crashed_high));
+  }
+  if (journal.given_up_through != 0) {
+    add("given up through #" + std::to_string(journal.given_up_through));
+  }
+  return text;
+}
+
 std::string journal_text(const detail::RestoreJournal& journal) {
   if (journal.empty()) return "empty";
   std::string text = journal.unconfirmed != 0
                          ? "restore of #" + std::to_string(journal.unconfirmed) + " unconfirmed"
                          : "nothing unconfirmed";
-  if (journal.suspect_high != 0) {
-    text += "; suspect #" + std::to_string(journal.suspect_low) + " to #" +
-            std::to_string(journal.suspect_high) + " (" + std::to_string(journal.fallbacks) +
-            (journal.fallbacks == 1 ? " fallback)" : " fallbacks)");
-  }
-  if (journal.given_up_through != 0) {
-    text += "; given up through #" + std::to_string(journal.given_up_through);
-  }
+  const std::string exclusions = exclusions_text(journal);
+  if (!exclusions.empty()) text += "; " + exclusions;
+  if (journal.depth != 0) text += "; fallback depth " + std::to_string(journal.depth);
   return text;
+}
+
+// What the next start does with the journal before it chooses a slot.
+std::string next_start_text(const detail::StoreReader& store, const StoreSurvey& survey) {
+  if (!survey.counts_crash) return "applies the journal as it is";
+  const std::string crash = "counts the unconfirmed restore of #" +
+                            std::to_string(store.journal().unconfirmed) + " as a crash";
+  if (survey.gives_up) {
+    return crash + ", past the fallback depth: gives up on every checkpoint through #" +
+           std::to_string(survey.next_start_journal.given_up_through);
+  }
+  return crash + ": " + exclusions_text(survey.next_start_journal);
+}
+
+void write_journal_json(JsonWriter& json, const detail::RestoreJournal& journal) {
+  json.object_begin();
+  json.field("unconfirmed", journal.unconfirmed);
+  json.field("suspect_low", journal.suspect_low);
+  json.field("suspect_high", journal.suspect_high);
+  json.field("crashed_low", journal.crashed_low);
+  json.field("crashed_high", journal.crashed_high);
+  json.field("given_up_through", journal.given_up_through);
+  json.field("fallbacks", journal.fallbacks);
+  json.field("depth", journal.depth);
+  json.object_end();
 }
 
 std::string area_text(const detail::StoreSchemaArea& area) {
@@ -112,7 +233,8 @@ void print_store_overview(const std::string& path, const detail::StoreReader& st
     header.add({{"schema_area " + std::to_string(i)}, {area_text(store.area(i))}});
   }
   header.add({{"restore_journal"}, {journal_text(store.journal())}});
-  std::string restore_text = "none (no restorable slot)";
+  if (!store.journal().empty()) header.add({{"next_start"}, {next_start_text(store, survey)}});
+  std::string restore_text = "none (" + survey.nothing_restored + ")";
   if (survey.restore_latest_slot) {
     const SlotSurvey& s = survey.slots[*survey.restore_latest_slot];
     restore_text =
@@ -175,14 +297,17 @@ void write_store_json(JsonWriter& json, const detail::StoreReader& store,
   json.array_end();
   json.key_end();
 
-  const detail::RestoreJournal& journal = store.journal();
   json.key_begin("restore_journal");
+  write_journal_json(json, store.journal());
+  json.key_end();
+  // The journal as the next start applies it, before it chooses a slot.
+  json.key_begin("next_start");
   json.object_begin();
-  json.field("unconfirmed", journal.unconfirmed);
-  json.field("suspect_low", journal.suspect_low);
-  json.field("suspect_high", journal.suspect_high);
-  json.field("given_up_through", journal.given_up_through);
-  json.field("fallbacks", journal.fallbacks);
+  json.field("counts_crash", survey.counts_crash);
+  json.field("gives_up", survey.gives_up);
+  json.key_begin("journal");
+  write_journal_json(json, survey.next_start_journal);
+  json.key_end();
   json.object_end();
   json.key_end();
 
@@ -210,6 +335,7 @@ void write_store_json(JsonWriter& json, const detail::StoreReader& store,
   json.field("restore_latest_slot", survey.restore_latest_slot
                                         ? JsonScalar::of_uint(*survey.restore_latest_slot)
                                         : JsonScalar::null());
+  if (!survey.restore_latest_slot) json.field("nothing_restored", survey.nothing_restored);
 }
 
 }  // namespace symcr::cli

@@ -176,7 +176,7 @@ int verify_store(const VerifyArgs& args) {
     std::string verdict = terminal.paint(valid ? Colour::Green : Colour::Red,
                                          valid ? "valid" : "invalid");
     if (damaged) verdict += ": " + std::to_string(damaged) + " damaged slot(s)";
-    if (!survey.restore_latest_slot) verdict += damaged ? "; no restorable slot" : ": no restorable slot";
+    if (!survey.restore_latest_slot) verdict += (damaged ? "; " : ": ") + survey.nothing_restored;
     print("\n" + verdict + "\n");
   }
   return valid ? kExitOk : kExitFinding;
@@ -185,15 +185,10 @@ int verify_store(const VerifyArgs& args) {
 }  // namespace
 
 int run_verify(const VerifyArgs& args) {
-  if (!args.key_file.empty()) {
-    std::vector<std::uint8_t> key;
-    Status read = detail::read_regular_file(resolve_links(args.key_file).c_str(), 1 << 16, key);
-    const CheckpointKey checkpoint_key{args.key_id, key.data(), key.size()};
-    if (read.ok()) read = set_checkpoint_keys(&checkpoint_key, 1);
-    if (!read.ok()) {
-      print_error(std::string("--key-file: ") + read.message());
-      return kExitError;
-    }
+  const Status keys = use_key_files(args.keys);
+  if (!keys.ok()) {
+    print_error(keys.message());
+    return kExitError;
   }
   FileKind kind;
   const Status status = detect_file_kind(args.path, kind);

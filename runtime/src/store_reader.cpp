@@ -80,6 +80,26 @@ std::vector<std::uint32_t> StoreReader::valid_slots_newest_first() const {
   return valid;
 }
 
+std::uint64_t StoreReader::highest_known_sequence() const {
+  std::uint64_t highest = journal_.highest_sequence();
+  for (const StoreSlot& slot : slots_) {
+    if (slot.state == StoreSlotState::Valid || slot.state == StoreSlotState::UnknownSchema) {
+      highest = std::max(highest, slot.header.sequence);
+    }
+  }
+  return highest;
+}
+
+RestoreJournal StoreReader::journal_at_next_start(bool* counts_crash) const {
+  RestoreJournal journal = journal_;
+  // A journal of an earlier version records no depth: its program's fallback is taken to go
+  // one level deeper, not to give up.
+  const std::uint32_t depth = journal.depth != 0 ? journal.depth : journal.fallbacks + 1;
+  const bool counted = journal.count_crash(highest_known_sequence(), depth);
+  if (counts_crash != nullptr) *counts_crash = counted;
+  return journal;
+}
+
 Status StoreReader::read_record(std::uint32_t index, std::vector<std::uint8_t>& bytes,
                                 RecordView& view, int& area) const {
   area = -1;

@@ -39,8 +39,16 @@ class StoreReader {
   const StoreGeometry& geometry() const { return geometry_; }
   const StoreSchemaArea& area(int index) const { return areas_[index]; }
   const std::vector<StoreSlot>& slots() const { return slots_; }
-  // The crash-loop fallback's journal (empty when the store has none).
+  // The crash-loop fallback's journal as the store holds it (empty when it has none).
   const RestoreJournal& journal() const { return journal_; }
+  // The highest sequence an intact record (restorable or not) holds or the journal names: what
+  // a start that opens the store takes as its newest sequence.
+  std::uint64_t highest_known_sequence() const;
+  // The journal as the program's next start applies it before it chooses a slot: a restore
+  // still unconfirmed (the program crashed, or stopped, or has not confirmed yet) counts as a
+  // crash (RestoreJournal::count_crash) at the fallback depth the journal records, which may
+  // give up on every checkpoint. `counts_crash`: whether a crash is counted.
+  RestoreJournal journal_at_next_start(bool* counts_crash = nullptr) const;
 
   // Valid slots, highest sequence first: the order restore_latest() tries them in.
   std::vector<std::uint32_t> valid_slots_newest_first() const;

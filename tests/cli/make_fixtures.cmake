@@ -30,6 +30,17 @@ run(${V0} store ${DIR}/empty.store 0)
 # Two starts that restored and crashed: the second passed over 6 and restored 5, unconfirmed.
 run(${V0} store ${DIR}/crashed.store 6)
 run(${V0} restore-unconfirmed ${DIR}/crashed.store 2)
+# One start that restored 6 and stopped before confirm(): the next start passes over 6.
+run(${V0} store ${DIR}/unconfirmed.store 6)
+run(${V0} restore-unconfirmed ${DIR}/unconfirmed.store 1)
+# Four such starts (depth 3): 6, 5, 4 suspect, 3 unconfirmed; the next start gives up.
+run(${V0} store ${DIR}/exhausted.store 6)
+run(${V0} restore-unconfirmed ${DIR}/exhausted.store 4)
+# Five: the fifth gave up on every checkpoint; none is restored again.
+run(${V0} store ${DIR}/gave-up.store 6)
+run(${V0} restore-unconfirmed ${DIR}/gave-up.store 5)
+# Sequences 1-2 signed with key id 7, 3-4 with id 8 (keys: fixture.key, other.key).
+run(${V0} rotated-store ${DIR}/rotated.store)
 # A store across a patch: v0 saved sequences 1-3 (schema area 0), then v1 saved 4 (area 1).
 run(${V0} store ${DIR}/patched.store 3)
 run(${V1} store-more ${DIR}/patched.store 1)

@@ -31,6 +31,7 @@ class StoreReaderTest : public ::testing::Test {
     symcr::StoreOptions options;
     options.slots = 4;
     options.slot_size = 4096;
+    options.fallback_depth = kDepth;
     ASSERT_TRUE(symcr::Store::open(path_.c_str(), cli_fixture::schema(), options, store).ok());
     for (int seed = 1; seed <= saves; ++seed) {
       cli_fixture::fill_state(seed);
@@ -48,6 +49,18 @@ class StoreReaderTest : public ::testing::Test {
     std::fclose(file);
   }
 
+  // `starts` starts that restore with the crash-loop fallback and never confirm.
+  void restore_unconfirmed(int starts) {
+    for (int start = 0; start < starts; ++start) {
+      symcr::Store store;
+      symcr::StoreOptions options;
+      options.fallback_depth = kDepth;
+      ASSERT_TRUE(symcr::Store::open(path_.c_str(), cli_fixture::schema(), options, store).ok());
+      store.restore_latest();
+    }
+  }
+
+  static constexpr std::uint32_t kDepth = 2;
   std::string path_;
 };
 
@@ -113,6 +126,75 @@ TEST_F(StoreReaderTest, RefusesDamagedStoreFiles) {
   flip_byte(0);
   StoreReader not_a_store;
   EXPECT_EQ(not_a_store.open(path_.c_str()).error(), symcr::Error::NotACheckpoint);
+}
+
+TEST_F(StoreReaderTest, NextStartCountsAnUnconfirmedRestoreAsACrash) {
+  {
+    symcr::Store store;
+    save(store, 6);  // sequences by slot: 5, 6, 3, 4
+  }
+  restore_unconfirmed(1);  // restored 6, never confirmed
+  StoreReader reader;
+  ASSERT_TRUE(reader.open(path_.c_str()).ok());
+  EXPECT_EQ(reader.journal().unconfirmed, 6u);
+  EXPECT_EQ(reader.journal().depth, kDepth);
+  EXPECT_FALSE(reader.journal().excludes(6));
+  EXPECT_EQ(reader.highest_known_sequence(), 6u);
+  bool counts_crash = false;
+  const symcr::detail::RestoreJournal next = reader.journal_at_next_start(&counts_crash);
+  EXPECT_TRUE(counts_crash);
+  EXPECT_EQ(next.unconfirmed, 0u);
+  EXPECT_EQ(next.suspect_low, 6u);
+  EXPECT_EQ(next.suspect_high, 6u);
+  EXPECT_EQ(next.fallbacks, 1u);
+  EXPECT_TRUE(next.excludes(6));
+  EXPECT_FALSE(next.excludes(5));
+}
+
+TEST_F(StoreReaderTest, NextStartGivesUpPastTheRecordedDepth) {
+  {
+    symcr::Store store;
+    save(store, 6);
+  }
+  restore_unconfirmed(3);  // 6, 5, 4 restored in turn; the next start counts a third crash
+  StoreReader reader;
+  ASSERT_TRUE(reader.open(path_.c_str()).ok());
+  EXPECT_EQ(reader.journal().unconfirmed, 4u);
+  EXPECT_FALSE(reader.journal().excludes(3));
+  bool counts_crash = false;
+  const symcr::detail::RestoreJournal next = reader.journal_at_next_start(&counts_crash);
+  EXPECT_TRUE(counts_crash);
+  EXPECT_EQ(next.given_up_through, 6u);
+  EXPECT_EQ(next.fallbacks, 0u);
+  for (std::uint64_t sequence = 3; sequence <= 6; ++sequence) EXPECT_TRUE(next.excludes(sequence));
+}
+
+TEST_F(StoreReaderTest, NextStartOfAJournalWithoutADepthGoesOneLevelDeeper) {
+  {
+    symcr::Store store;
+    save(store, 6);
+  }
+  // A journal as an earlier version wrote it: a restore unconfirmed, no depth recorded.
+  symcr::detail::RestoreJournal journal;
+  journal.generation = 1;
+  journal.unconfirmed = 6;
+  std::uint8_t copy[symcr::detail::kRestoreJournalSize];
+  symcr::detail::encode_restore_journal(journal, copy);
+  std::FILE* file = std::fopen(path_.c_str(), "r+b");
+  ASSERT_NE(file, nullptr);
+  std::fseek(file, static_cast<long>(symcr::detail::kRestoreJournalOffsets[1]), SEEK_SET);
+  ASSERT_EQ(std::fwrite(copy, 1, sizeof copy, file), sizeof copy);
+  std::fclose(file);
+
+  StoreReader reader;
+  ASSERT_TRUE(reader.open(path_.c_str()).ok());
+  ASSERT_EQ(reader.journal().unconfirmed, 6u);
+  bool counts_crash = false;
+  const symcr::detail::RestoreJournal next = reader.journal_at_next_start(&counts_crash);
+  EXPECT_TRUE(counts_crash);
+  EXPECT_EQ(next.given_up_through, 0u);
+  EXPECT_EQ(next.suspect_high, 6u);
+  EXPECT_FALSE(next.excludes(5));
 }
 
 }  // namespace

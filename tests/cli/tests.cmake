@@ -1,4 +1,5 @@
 # The CLI's tests, by subcommand. Files come from make_fixtures.cmake (v0 seed 1 unless named).
+# A regex matches a ';' of the output with '.': ';' separates the items of a CMake list.
 string(ASCII 27 esc)  # the start of a terminal colour sequence
 
 # ---- usage and help -------------------------------------------------------------------------
@@ -8,9 +9,9 @@ symcr_cli_test(unknown_option EXIT 2 ARGS inspect --bogus ${files}/v0.ckpt
 symcr_cli_test(missing_argument EXIT 2 ARGS inspect EXPECT "Not enough positional")
 symcr_cli_test(help EXIT 0 ARGS --help EXPECT "inspect" "verify" "diff" "plan" "convert"
                "Exit codes")
-symcr_cli_test(inspect_help EXIT 0 ARGS inspect --help EXPECT "--json" "--slot"
+symcr_cli_test(inspect_help EXIT 0 ARGS inspect --help EXPECT "--json" "--slot" "--key-file" "--key-id"
                REJECT "--schema" "--strict")
-symcr_cli_test(plan_help EXIT 0 ARGS plan --help EXPECT "--schema" "--strict" "--json")
+symcr_cli_test(plan_help EXIT 0 ARGS plan --help EXPECT "--schema" "--strict" "--json" "--key-file")
 symcr_cli_test(convert_help EXIT 0 ARGS convert --help
                EXPECT "--schema" "--initial" "--writer-schema" "--inline-schema" "--strict")
 
@@ -62,16 +63,24 @@ symcr_cli_test(inspect_torn_store EXIT 0 ARGS inspect ${files}/torn.store
          "copter.ticks += 1005\n")
 symcr_cli_test(inspect_torn_slot EXIT 2 ARGS inspect --slot 1 ${files}/torn.store
   EXPECT "slot 1 is corrupt: checksum mismatch")
+# crashed.store: a start restored 6, the next passed over 6 and restored 5, neither confirmed.
+# The next start counts that as a crash too: it passes over 5 and 6 and restores 4.
 symcr_cli_test(inspect_crash_loop_store EXIT 0 ARGS inspect ${files}/crashed.store
-  EXPECT "restore_journal +restore of #5 unconfirmed; suspect #6 to #6 \\(1 fallback\\)"
-         "restore_latest +slot 0 \\(sequence 5\\)"
-         "\n1 +valid +6 .*crash-loop fallback: suspect")
+  EXPECT "restore_journal +restore of #5 unconfirmed. suspect #6 \\(1 fallback\\). fallback depth 3\n"
+         "next_start +counts the unconfirmed restore of #5 as a crash: suspect #5 to #6 \\(2 fallbacks\\)\n"
+         "restore_latest +slot 3 \\(sequence 4\\)"
+         "\n0 +valid +5 .*crash-loop fallback: suspect, the last start restored it"
+         "\n1 +valid +6 .*crash-loop fallback: suspect"
+         "\n3 +valid +4 .*<- shown"
+         "copter.ticks += 1004\n")
 symcr_cli_test(inspect_crash_loop_store_json EXIT 0 JSON ARGS inspect --json ${files}/crashed.store
   EXPECT "\"unconfirmed\": 5" "\"suspect_high\": 6" "\"passed_over\": true"
-         "\"restore_latest_slot\": 0")
+         "\"next_start\": {[ \n]*\"counts_crash\": true,[ \n]*\"gives_up\": false"
+         "\"journal\": {[ \n]*\"unconfirmed\": 0,[ \n]*\"suspect_low\": 5,[ \n]*\"suspect_high\": 6"
+         "\"restore_latest_slot\": 3" "\"selected_slot\": 3")
 symcr_cli_test(inspect_empty_store EXIT 2 ARGS inspect ${files}/empty.store
-  EXPECT "restore_latest +none \\(no restorable slot\\)" "\n0 +empty +- "
-         "no slot holds a restorable checkpoint")
+  EXPECT "restore_latest +none \\(nothing would be restored: no slot holds a restorable checkpoint\\)"
+         "\n0 +empty +- " "error: .*empty.store: nothing would be restored")
 symcr_cli_test(inspect_patched_store EXIT 0 ARGS inspect ${files}/patched.store
   EXPECT "schema_area 0 +hash [0-9a-f]+, [0-9]+ bytes, 18 types"
          "schema_area 1 +hash [0-9a-f]+, [0-9]+ bytes, 17 types"
@@ -111,7 +120,7 @@ symcr_cli_test(verify_not_a_checkpoint EXIT 1 ARGS verify ${files}/not-a-checkpo
   EXPECT "invalid: .*bad magic")
 symcr_cli_test(verify_missing EXIT 2 ARGS verify ${files}/no-such-file EXPECT "cannot open")
 symcr_cli_test(verify_empty_store EXIT 1 ARGS verify ${files}/empty.store
-  EXPECT "\ninvalid: no restorable slot\n")
+  EXPECT "\ninvalid: nothing would be restored: no slot holds a restorable checkpoint\n")
 symcr_cli_test(verify_json EXIT 1 JSON ARGS verify --json ${files}/corrupt.ckpt
   EXPECT "\"valid\": false" "\"check\": \"record\",[ \n]*\"ok\": false")
 symcr_cli_test(verify_store EXIT 0 ARGS verify ${files}/v0.store
@@ -196,7 +205,7 @@ symcr_cli_test(plan_json EXIT 0 JSON ARGS plan --json ${files}/v0.ckpt --schema 
 symcr_cli_test(plan_from_store EXIT 0 ARGS plan ${files}/torn.store --schema ${files}/v1.schema
   EXPECT "torn.store slot 0 \\(sequence 5" "restore would succeed")
 symcr_cli_test(plan_empty_store EXIT 2 ARGS plan ${files}/empty.store --schema ${files}/v1.schema
-  EXPECT "no slot holds a valid checkpoint")
+  EXPECT "nothing would be restored: no slot holds a restorable checkpoint")
 symcr_cli_test(plan_checkpoint_as_schema EXIT 2 ARGS plan ${files}/v0.ckpt --schema ${files}/v1.ckpt
   EXPECT "a checkpoint, not a schema file")
 symcr_cli_test(plan_corrupt EXIT 2 ARGS plan ${files}/corrupt.ckpt --schema ${files}/v1.schema
@@ -252,3 +261,99 @@ symcr_cli_test(verify_unsigned_with_key EXIT 1
                EXPECT "carries no MAC")
 symcr_cli_test(inspect_signed EXIT 0 ARGS inspect ${files}/signed.ckpt
                EXPECT "authenticated +HMAC-SHA-256, key id 7")
+
+# ---- the store's journal and keys: plan, inspect and verify pick the slot the program's next
+# start restores (the journal applied as that start applies it, the keys' MACs checked) --------
+# unconfirmed.store: a start restored 6 and stopped before confirm(): the next start restores 5.
+symcr_cli_test(inspect_unconfirmed_store EXIT 0 ARGS inspect ${files}/unconfirmed.store
+  EXPECT "restore_journal +restore of #6 unconfirmed. fallback depth 3\n"
+         "next_start +counts the unconfirmed restore of #6 as a crash: suspect #6 \\(1 fallback\\)"
+         "restore_latest +slot 0 \\(sequence 5\\)"
+         "\n1 +valid +6 .*the last start restored it and never confirmed"
+         "\n0 +valid +5 .*<- shown" "copter.ticks += 1005\n")
+symcr_cli_test(verify_unconfirmed_store EXIT 0 ARGS verify ${files}/unconfirmed.store
+  EXPECT "restore_latest +slot 0 \\(sequence 5\\)" "\nvalid\n")
+symcr_cli_test(plan_unconfirmed_store EXIT 0
+  ARGS plan ${files}/unconfirmed.store --schema ${files}/v1.schema
+  EXPECT "checkpoint +.*unconfirmed.store slot 0 \\(sequence 5,"
+         "\npassed over slot 1 \\(sequence 6\\): crash-loop fallback: suspect"
+         "restore would succeed")
+symcr_cli_test(plan_unconfirmed_store_json EXIT 0 JSON
+  ARGS plan --json ${files}/unconfirmed.store --schema ${files}/v1.schema
+  EXPECT "\"slot\": 0" "\"sequence\": 5"
+         "\"skipped\": \\[[ \n]*{[ \n]*\"slot\": 1,[ \n]*\"sequence\": 6,[ \n]*\"reason\": \"crash-loop")
+# exhausted.store: four unconfirmed starts at depth 3 (6, 5, 4 suspect; 3 unconfirmed): the next
+# start counts a fourth crash and gives up on every checkpoint.
+symcr_cli_test(plan_exhausted_store EXIT 1
+  ARGS plan ${files}/exhausted.store --schema ${files}/v0.schema
+  EXPECT "checkpoint +.*exhausted.store \\(no checkpoint: the program's next start would restore none\\)"
+         "\npassed over slot 1 \\(sequence 6\\): crash-loop fallback: given up on"
+         "\npassed over slot 2 \\(sequence 3\\): crash-loop fallback: given up on"
+         "restore would fail: NoValidSlot: .*nothing would be restored: the next start counts the restore of #3, never confirmed, as a crash past the fallback depth 3 and gives up on every checkpoint through #6"
+  REJECT "restore would succeed" "\ncopter +restored")
+symcr_cli_test(plan_exhausted_store_json EXIT 1 JSON
+  ARGS plan --json ${files}/exhausted.store --schema ${files}/v0.schema
+  EXPECT "\"slot\": null" "\"would_restore\": false" "\"error\": \"NoValidSlot\""
+         "\"skipped\": \\[[ \n]*{[ \n]*\"slot\": 1,[ \n]*\"sequence\": 6")
+symcr_cli_test(inspect_exhausted_store EXIT 2 ARGS inspect ${files}/exhausted.store
+  EXPECT "restore_journal +restore of #3 unconfirmed. suspect #4 to #6 \\(3 fallbacks\\). fallback depth 3"
+         "next_start +counts the unconfirmed restore of #3 as a crash, past the fallback depth: gives up on every checkpoint through #6"
+         "restore_latest +none \\(nothing would be restored: "
+         "error: .*exhausted.store: nothing would be restored"
+  REJECT "<- shown")
+symcr_cli_test(verify_exhausted_store EXIT 1 ARGS verify ${files}/exhausted.store
+  EXPECT "\ninvalid: nothing would be restored: ")
+# gave-up.store: the fifth such start gave up; no checkpoint saved before it is restored again.
+symcr_cli_test(plan_gave_up_store EXIT 1 ARGS plan ${files}/gave-up.store --schema ${files}/v0.schema
+  EXPECT "restore would fail: NoValidSlot: .*nothing would be restored: 4 checkpoints passed over by the crash-loop fallback"
+  REJECT "restore would succeed")
+symcr_cli_test(plan_matrix_gave_up_store EXIT 1
+  ARGS plan ${files}/gave-up.store ${files}/v0.ckpt --schema ${files}/v0.schema
+  EXPECT "gave-up.store +- +- +fails: NoValidSlot\n"
+         "1 of 2 would restore. 1 would not, 0 unreadable"
+         "\ncheckpoint +.*gave-up.store \\(no checkpoint: ")
+symcr_cli_test(inspect_gave_up_store EXIT 2 ARGS inspect ${files}/gave-up.store
+  EXPECT "restore_journal +nothing unconfirmed. given up through #6. fallback depth 3\n"
+         "next_start +applies the journal as it is\n"
+         "\n1 +valid +6 .*crash-loop fallback: given up on")
+# rotated.store: sequences 1-2 signed with key id 7 (fixture.key), 3-4 with id 8 (other.key).
+symcr_cli_test(verify_rotated_store_both_keys EXIT 0
+  ARGS verify ${files}/rotated.store --key-file ${files}/fixture.key --key-id 7
+       --key-file ${files}/other.key --key-id 8
+  EXPECT "restore_latest +slot 3 \\(sequence 4\\)" "\nvalid\n" REJECT "unauthenticated")
+symcr_cli_test(verify_rotated_store_old_key EXIT 1
+  ARGS verify ${files}/rotated.store --key-file ${files}/fixture.key --key-id 7
+  EXPECT "restore_latest +slot 1 \\(sequence 2\\)"
+         "\n3 +unauthenticated +4 .*key id 8, which this program does not hold"
+         "\ninvalid: 2 damaged slot")
+symcr_cli_test(inspect_rotated_store_new_key EXIT 0
+  ARGS inspect ${files}/rotated.store --key-id 8 --key-file ${files}/other.key
+  EXPECT "restore_latest +slot 3 \\(sequence 4\\)" "\n0 +unauthenticated +1 .*key id 7"
+         "copter.ticks += 1002\n")
+symcr_cli_test(plan_rotated_store_old_key EXIT 0
+  ARGS plan ${files}/rotated.store --schema ${files}/v0.schema --key-file ${files}/fixture.key
+       --key-id 7
+  EXPECT "rotated.store slot 1 \\(sequence 2,"
+         "\npassed over slot 3 \\(sequence 4\\): .*key id 8, which this program does not hold"
+         "restore would succeed")
+symcr_cli_test(plan_rotated_store_no_keys EXIT 0
+  ARGS plan ${files}/rotated.store --schema ${files}/v0.schema
+  EXPECT "rotated.store slot 3 \\(sequence 4," "restore would succeed" REJECT "passed over")
+symcr_cli_test(plan_rotated_store_wrong_key EXIT 1
+  ARGS plan ${files}/rotated.store --schema ${files}/v0.schema --key-file ${files}/other.key
+       --key-id 7
+  EXPECT "restore would fail: NoValidSlot: .*nothing would be restored: 4 checkpoints unauthenticated with the keys given")
+symcr_cli_test(plan_unsigned_with_key EXIT 1
+  ARGS plan ${files}/v0.ckpt --schema ${files}/v0.schema --key-file ${files}/fixture.key --key-id 7
+  EXPECT "restore would fail: Unauthenticated: the checkpoint carries no MAC")
+symcr_cli_test(key_ids_do_not_pair EXIT 2
+  ARGS verify ${files}/rotated.store --key-file ${files}/fixture.key --key-file ${files}/other.key
+       --key-id 7
+  EXPECT "2 --key-file and 1 --key-id: give each key file its id")
+symcr_cli_test(key_file_missing EXIT 2
+  ARGS plan ${files}/rotated.store --schema ${files}/v0.schema --key-file ${files}/no-such.key
+  EXPECT "--key-file: cannot open .*no-such.key")
+symcr_cli_test(key_ids_repeated EXIT 2
+  ARGS inspect ${files}/rotated.store --key-file ${files}/fixture.key --key-id 7
+       --key-file ${files}/other.key --key-id 7
+  EXPECT "--key-file: two checkpoint keys have id 7")
