@@ -83,13 +83,16 @@ bool Restorer::decode_objects() {
                        writer_.types[type].name)
             .ok();
       }
-      heap_.push_back(HeapRecord{type, owner, plan_.heap_nodes[type]});
+      heap_.push_back(HeapRecord{type, owner, plan_.heap_nodes[type], false});
     }
     frames_.push_back({PathFrame::Kind::Heap, writer_.types[type].name, h});
     counter_ = heap_counter_;
     current_object_ = writer_.root_count + h;
     std::uint8_t* dst = mode_ == Mode::Apply ? static_cast<std::uint8_t*>(heap_live_[h]) : nullptr;
+    const std::uint32_t refusals = refusals_;
     if (!value(heap_[h].node, dst, nullptr)) return false;
+    // Created, it would hold value-initialised stand-ins where its refused values were.
+    if (mode_ == Mode::Check && refusals_ != refusals) heap_[h].refused = true;
     frames_.pop_back();
   }
   return true;

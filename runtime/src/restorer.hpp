@@ -92,6 +92,7 @@ struct HeapRecord {
   std::uint32_t type;
   std::uint8_t owner;
   const PlanNode* node;
+  bool refused;  // a validator refused a value in it: not created, pointers keep their values
 };
 
 struct MappedStep {

@@ -59,6 +59,8 @@ struct Zones {
   std::optional<Zone> maybe;
   std::unique_ptr<Zone> owned;
   ZoneOrId either = std::int32_t{0};
+  Zone* pinned = nullptr;  // a heap object
+  Zone* spare = nullptr;   // another
 };
 Zones zones;
 
@@ -121,7 +123,8 @@ Zones zones;
                &symcr::ops::unique_ptr<decltype(zones.owned)>::table), /* 19 */                  \
         variant_of("std::variant<int32,Zone>", sizeof(ZoneOrId), alignof(ZoneOrId),             \
                    alternatives, 2, &symcr::ops::variant<ZoneOrId>::table), /* 20 */             \
-        record("Zones", sizeof(Zones), alignof(Zones), zones_fields, 13), /* 21 */               \
+        record("Zones", sizeof(Zones), alignof(Zones), zones_fields, 15), /* 21 */               \
+        holder("Zone*", Kind::Pointer, sizeof(Zone*), alignof(Zone*), 2, nullptr), /* 22 */     \
   }
 
 const FieldInfo zone_fields[] = {field("radius_m", 0, offsetof(Zone, radius_m)),
@@ -148,9 +151,11 @@ const FieldInfo zones_fields[] = {
     field("fixed", 17, offset_of(&Zones::fixed)),
     field("maybe", 18, offset_of(&Zones::maybe)),
     field("owned", 19, offset_of(&Zones::owned)),
-    field("either", 20, offset_of(&Zones::either))};
+    field("either", 20, offset_of(&Zones::either)),
+    field("pinned", 22, offset_of(&Zones::pinned)),
+    field("spare", 22, offset_of(&Zones::spare))};
 const RootInfo roots[] = {{"zones", 21, &zones, 0, nullptr}};
-constexpr std::uint32_t kTypeCount = 22;
+constexpr std::uint32_t kTypeCount = 23;
 
 const Schema& writer_schema() {
   static const TypeInfo types[] = ZONE_TYPES(nullptr);
@@ -188,11 +193,17 @@ void fill_writer() {
   zones.maybe = kBad;
   zones.owned.reset(new Zone(kBad));
   zones.either = kBad;
+  delete zones.pinned;
+  delete zones.spare;
+  zones.pinned = new Zone(kBad);
+  zones.spare = new Zone(kOther);
 }
 
 // The reader's own state before the restore: what a refused value leaves in place.
 const Zone kReaders{1.0f, 99};
 void fill_reader() {
+  delete zones.pinned;
+  delete zones.spare;
   zones = Zones();
   zones.by_id = {{99, kReaders}};
   zones.fixed[1] = kReaders;
@@ -305,6 +316,14 @@ TEST_F(ValidatedParts, OptionalUniquePtrAndVariantHoldingARefusedValueKeepThisBu
   EXPECT_EQ(std::get<std::int32_t>(zones.either), 42);
   EXPECT_TRUE(has_entry(report_, "zones.maybe", "symcr_validate")) << report_.to_text();
   EXPECT_TRUE(has_entry(report_, "zones.owned", "symcr_validate")) << report_.to_text();
+}
+
+TEST_F(ValidatedParts, HeapObjectRefusedIsNotCreatedItsPointerKeepsThisBuildsValue) {
+  EXPECT_EQ(zones.pinned, nullptr) << report_.to_text();
+  ASSERT_NE(zones.spare, nullptr);
+  EXPECT_EQ(zones.spare->id, kOther.id);
+  EXPECT_TRUE(has_entry(report_, "zones.pinned", "holds a value its symcr_validate refused"))
+      << report_.to_text();
 }
 
 TEST_F(ValidatedParts, StrictModeRefusesAndWritesNothing) {
