@@ -179,7 +179,7 @@ void Restorer::map_reference(RefRecord& ref) {
     const std::uint32_t h = ref.a - writer_.root_count;
     if (!materialisable_[h]) {
       ref.why = std::string("heap object of type ") + writer_.types[heap_[h].type].name +
-                (heap_[h].refused        ? " holds a value its symcr_validate refused"
+                (heap_[h].refused      ? " holds a value its symcr_validate refused"
                  : heap_[h].owner == 1 ? " has no shared_ptr owner restored in this build"
                                        : " cannot be created in this build or is not "
                                          "reached from a restored root");
