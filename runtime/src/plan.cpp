@@ -52,6 +52,7 @@ void Planner::run() {
     }
   }
   decide_migrations();
+  mark_validated_parts(plan_.nodes);
   for (PlanNode& n : plan_.nodes) compute_copy(n);
   compute_copy_only_payload();
   if (too_deep_) {
@@ -171,6 +172,40 @@ bool decode_embedded_plan(std::uint64_t writer_hash, const Schema& reader, Plan&
 }
 
 }  // namespace
+
+void mark_validated_parts(std::deque<PlanNode>& nodes) {
+  const auto holds = [](const PlanNode* part) { return part && part->holds_validated; };
+  for (PlanNode& n : nodes) n.holds_validated = n.validated;
+  // A least fixed point: a recursive type's answer depends on itself.
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (auto it = nodes.rbegin(); it != nodes.rend(); ++it) {
+      PlanNode& n = *it;
+      if (n.holds_validated) continue;
+      bool any = false;
+      switch (n.action) {
+        case Action::Struct:
+          for (const FieldPlan& field : n.fields) any = any || holds(field.node);
+          break;
+        case Action::Array:
+        case Action::Container:
+        case Action::Optional:
+        case Action::UniquePtr:
+          any = holds(n.element);
+          break;
+        case Action::Variant:
+          for (const PlanNode* alternative : n.alternatives) any = any || holds(alternative);
+          break;
+        default:  // scalars, strings, unions; pointees are objects of their own
+          break;
+      }
+      if (any) {
+        n.holds_validated = true;
+        grew = true;
+      }
+    }
+  }
+}
 
 bool names_match(const TypeInfo& writer, const TypeInfo& reader) {
   return same_name(writer.name, reader.name) || in_aliases(writer.name, reader.renamed_from);

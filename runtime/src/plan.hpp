@@ -94,6 +94,10 @@ struct PlanNode {
   std::vector<std::uint32_t> alternative_map;  // Variant: reader index or kNoType
 
   bool validated = false;  // reader type has a symcr_validate
+  // This value or a part of it (a field, an element, a contained value; not a pointee, an
+  // object of its own) is validated: a container element holding one is judged as a whole.
+  // Derived from the other nodes (mark_validated_parts), never encoded in a plan image.
+  bool holds_validated = false;
   // Struct: the writer's type differs from the reader's in its values (a field added, removed,
   // renamed or converted, at any depth; see docs/resolution.md), and the reader type has a
   // symcr_migrate hook (or, in a schema file, kTypeMigrated): restore calls `migrate`, which
@@ -176,6 +180,10 @@ void plan_image_for(const Schema& writer, std::uint64_t writer_hash, const Schem
 std::shared_ptr<const Plan> cached_plan(std::uint64_t writer_hash, const Schema& reader);
 
 bool names_match(const TypeInfo& writer, const TypeInfo& reader);
+
+// Sets every node's holds_validated from the nodes' `validated` and their parts: once a plan's
+// nodes are final (planned, or decoded from an image).
+void mark_validated_parts(std::deque<PlanNode>& nodes);
 
 }  // namespace symcr::detail
 

@@ -160,14 +160,37 @@ void Planner::build_report() {
   }
   // Pointees once each, named by type: their fields are reached through any pointer. One
   // of a root's type was listed under the root already.
-  for (std::size_t i = 0; i < pointees_.size(); ++i) {
-    const PlanNode* pointee = pointees_[i];
-    bool listed = false;
-    for (const RootPlan& root : plan_.roots) listed = listed || root.node == pointee;
-    if (listed) continue;
-    const std::string path = std::string("(") + writer_.types[pointee->writer].name + ")";
-    add_migration_entry(pointee, path);
-    expand(pointee, path);
+  std::size_t listed_pointees = 0;
+  const auto list_pointees = [&] {
+    for (; listed_pointees < pointees_.size(); ++listed_pointees) {
+      const PlanNode* pointee = pointees_[listed_pointees];
+      bool listed = false;
+      for (const RootPlan& root : plan_.roots) listed = listed || root.node == pointee;
+      if (listed) continue;
+      const std::string path = std::string("(") + writer_.types[pointee->writer].name + ")";
+      add_migration_entry(pointee, path);
+      expand(pointee, path);
+    }
+  };
+  list_pointees();
+  // A heap object behind a pointer to a polymorphic base is saved as its own class, which
+  // restore maps by name like any pointee (Planner::run): each such class of the writer is
+  // listed too, after the pointees, whose fields its own entries then complete.
+  for (std::uint32_t t = 0; t < writer_.type_count; ++t) {
+    const TypeInfo& type = writer_.types[t];
+    if (!(type.flags & kTypeDynamicType) || type.kind != Kind::Struct || !plan_.heap_nodes[t]) {
+      continue;
+    }
+    const PlanNode* heap = plan_.heap_nodes[t];
+    if (heap->reader == kNoType) {
+      // Not lossy by itself: a checkpoint may hold no object of it. One that does has each
+      // pointer to it rejected, value by value.
+      add(std::string("(") + type.name + ")", Decision::Dropped,
+          "class not in this build: a heap object of it is not rebuilt", false);
+      continue;
+    }
+    note_pointee(heap);
+    list_pointees();
   }
   for (const ReportEntry& entry : plan_.report_entries) {
     plan_.report_lossy = plan_.report_lossy || entry.lossy;

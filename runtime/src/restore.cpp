@@ -46,6 +46,7 @@ void Restorer::begin_pass(Mode mode) {
   container_ordinal_ = 0;
   slot_ordinal_ = 0;
   verdict_cursor_ = 0;
+  part_cursor_ = 0;
   frames_.clear();
 }
 
@@ -67,8 +68,9 @@ Status Restorer::check() {
 // Capacity of the decoding tables (thread_scratch_bytes).
 std::size_t Restorer::scratch_bytes() const {
   std::size_t bytes =
-      bytes_of(frames_) + bytes_of(rejection_counts_) + bytes_of(verdicts_) + bytes_of(slots_) +
-      bytes_of(containers_) + bytes_of(heap_) + bytes_of(refs_) + bytes_of(steps_) +
+      bytes_of(frames_) + bytes_of(rejection_counts_) + bytes_of(verdicts_) +
+      bytes_of(part_verdicts_) + bytes_of(slots_) + bytes_of(containers_) + bytes_of(heap_) +
+      bytes_of(refs_) + bytes_of(steps_) +
       bytes_of(mapped_) + bytes_of(claimed_) + materialisable_.capacity() / 8 +
       bytes_of(element_needed_) + bytes_of(heap_live_) + bytes_of(holders_) +
       bytes_of(applied_slots_) + bytes_of(element_slots_) + bytes_of(element_addresses_) +

@@ -103,8 +103,10 @@ void Restorer::decide_materialisation() {
     const TypeInfo& type = reader_.types[node->reader];
     const bool can_create =
         type.lifecycle != nullptr || (dry_run_ && (type.flags & kTypeCreatable) != 0);
-    creatable[h] = claimed_[h] || (heap_[h].owner == 0 && can_create) ||
-                   (heap_[h].owner == 1 && plan_.shared_types[node->reader] != kNoType);
+    // A claimed object keeps this build's values where a validator refused the checkpoint's.
+    creatable[h] = claimed_[h] || (!heap_[h].refused && heap_[h].owner == 0 && can_create) ||
+                   (!heap_[h].refused && heap_[h].owner == 1 &&
+                    plan_.shared_types[node->reader] != kNoType);
   }
   // Every heap object was discovered from a root when saved: if every root, heap object and
   // pointer slot is restorable, all of them are reached and the walk below can be skipped.
@@ -177,9 +179,10 @@ void Restorer::map_reference(RefRecord& ref) {
     const std::uint32_t h = ref.a - writer_.root_count;
     if (!materialisable_[h]) {
       ref.why = std::string("heap object of type ") + writer_.types[heap_[h].type].name +
-                (heap_[h].owner == 1 ? " has no shared_ptr owner restored in this build"
-                                     : " cannot be created in this build or is not "
-                                       "reached from a restored root");
+                (heap_[h].refused      ? " holds a value its symcr_validate refused"
+                 : heap_[h].owner == 1 ? " has no shared_ptr owner restored in this build"
+                                       : " cannot be created in this build or is not "
+                                         "reached from a restored root");
       return;
     }
     node = heap_[h].node;

@@ -83,13 +83,16 @@ bool Restorer::decode_objects() {
                        writer_.types[type].name)
             .ok();
       }
-      heap_.push_back(HeapRecord{type, owner, plan_.heap_nodes[type]});
+      heap_.push_back(HeapRecord{type, owner, plan_.heap_nodes[type], false});
     }
     frames_.push_back({PathFrame::Kind::Heap, writer_.types[type].name, h});
     counter_ = heap_counter_;
     current_object_ = writer_.root_count + h;
     std::uint8_t* dst = mode_ == Mode::Apply ? static_cast<std::uint8_t*>(heap_live_[h]) : nullptr;
+    const std::uint32_t refusals = refusals_;
     if (!object(heap_[h].node, dst)) return false;
+    // Created, it would hold value-initialised stand-ins where its refused values were.
+    if (mode_ == Mode::Check && refusals_ != refusals) heap_[h].refused = true;
     frames_.pop_back();
   }
   return true;
@@ -124,6 +127,7 @@ bool Restorer::validated_value(const PlanNode* n, std::uint8_t* dst, const Field
   }
   const std::size_t verdict = verdicts_.size();
   verdicts_.push_back(1);
+  const std::size_t part_mark = part_verdicts_.size();
   const std::uint8_t* start = in_.position();
   const std::size_t first_slot = slots_.size();
   const std::uint32_t container_mark = container_ordinal_;
@@ -151,27 +155,56 @@ bool Restorer::validated_value(const PlanNode* n, std::uint8_t* dst, const Field
   if (staged) {
     // Decode the same bytes again into the staged copy, replaying the counters.
     const std::uint32_t after_containers = container_ordinal_, after_slots = slot_ordinal_;
-    const std::size_t after_cursor = verdict_cursor_;
+    const std::size_t after_cursor = verdict_cursor_, after_parts = part_cursor_;
     in_.seek(start);
     mode_ = Mode::Stage;
     container_ordinal_ = container_mark;
     slot_ordinal_ = slot_mark;
     verdict_cursor_ = verdict + 1;
+    part_cursor_ = part_mark;
     const bool decoded = plain_value(n, static_cast<std::uint8_t*>(staged), field);
     mode_ = Mode::Check;
     in_.seek(end);
     container_ordinal_ = after_containers;
     slot_ordinal_ = after_slots;
     verdict_cursor_ = after_cursor;
+    part_cursor_ = after_parts;
     passed = decoded && type.validate(staged);
     if (type.lifecycle) type.lifecycle->destroy(staged);
   }
   verdicts_[verdict] = passed ? 1 : 0;
   if (!passed) {
+    ++refusals_;
     for (std::size_t s = first_slot; s < slots_.size(); ++s) slots_[s].node = nullptr;
     reject_value(field ? field->counter : counter_, "%s %s", type.name, why);
   }
   return true;
+}
+
+bool Restorer::begin_part(const PlanNode* part, PartMark& mark) {
+  if (!part->holds_validated) return false;
+  if (mode_ != Mode::Check) return part_verdicts_[part_cursor_++] == 0;
+  mark.judged = true;
+  mark.verdict = part_verdicts_.size();
+  part_verdicts_.push_back(1);
+  mark.own_verdict = verdicts_.size();
+  mark.refusals = refusals_;
+  mark.first_slot = slots_.size();
+  return false;
+}
+
+void Restorer::end_part(const PlanNode* part, const PartMark& mark, bool element) {
+  if (!mark.judged || mode_ != Mode::Check || refusals_ == mark.refusals) return;
+  part_verdicts_[mark.verdict] = 0;
+  // Its pointers are not restored: the part is not written.
+  for (std::size_t s = mark.first_slot; s < slots_.size(); ++s) slots_[s].node = nullptr;
+  if (!element) return;
+  refusals_ = mark.refusals;
+  // An element refused as a whole already has its validator's entry at this path.
+  const bool own = runs_validator(part) && verdicts_[mark.own_verdict] == 0;
+  if (!own) {
+    reject_value(counter_, "left out of its container: a value in it failed its symcr_validate");
+  }
 }
 
 bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
@@ -233,12 +266,16 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
         if (to_reader && writing()) ops->reset(dst);
         return true;
       }
+      PartMark mark;
+      const bool refused = begin_part(n->element, mark);
       std::uint8_t* inner = nullptr;
-      if (to_reader) {
+      if (to_reader && !refused) {
         inner = static_cast<std::uint8_t*>(const_cast<void*>(ops->get(dst)));
         if (!inner && writing()) inner = static_cast<std::uint8_t*>(ops->emplace(dst));
       }
-      return value(n->element, inner, nullptr);
+      if (!value(n->element, inner, nullptr)) return false;
+      end_part(n->element, mark, false);
+      return true;
     }
     case Kind::UniquePtr: {
       bool present = false;
@@ -250,13 +287,17 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
         if (to_reader && writing()) ops->reset(dst);
         return true;
       }
+      PartMark mark;
+      const bool refused = begin_part(n->element, mark);
       std::uint8_t* inner = nullptr;
-      if (to_reader) {
+      if (to_reader && !refused) {
         // An object the new build already owns is filled in place (its address may be known).
         inner = static_cast<std::uint8_t*>(const_cast<void*>(ops->get(dst)));
         if (!inner && writing()) inner = static_cast<std::uint8_t*>(ops->make(dst));
       }
-      return nested(n->element, inner);
+      if (!nested(n->element, inner)) return false;
+      end_part(n->element, mark, false);
+      return true;
     }
     case Kind::Variant: {
       std::uint32_t index = 0;
@@ -270,8 +311,10 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
                      writer_.types[wt.alternatives[index]].name);
         return value(alternative, nullptr, nullptr);
       }
+      PartMark mark;
+      const bool refused = begin_part(alternative, mark);
       std::uint8_t* inner = nullptr;
-      if (dst) {
+      if (dst && !refused) {
         const auto* ops = static_cast<const VariantOps*>(reader_.types[n->reader].ops);
         if (ops->index(dst) == reader_index) {
           inner = static_cast<std::uint8_t*>(const_cast<void*>(ops->get(dst)));
@@ -279,7 +322,9 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
           inner = static_cast<std::uint8_t*>(ops->emplace(dst, reader_index));
         }
       }
-      return value(alternative, inner, nullptr);
+      if (!value(alternative, inner, nullptr)) return false;
+      end_part(alternative, mark, false);
+      return true;
     }
     case Kind::Pointer:
     case Kind::SharedPtr:
@@ -463,7 +508,10 @@ bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* ds
   if (!to_reader || !dst || !writing()) {
     for (std::uint32_t i = 0; i < count; ++i) {
       frames_.push_back({PathFrame::Kind::Index, nullptr, i});
+      PartMark mark;
+      begin_part(e, mark);
       if (!nested(e, nullptr)) return false;
+      end_part(e, mark, true);
       frames_.pop_back();
     }
     return true;
@@ -488,7 +536,8 @@ bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* ds
     ops->reserve(dst, count);  // vectors: element addresses stay valid while we append
     for (std::uint32_t i = 0; i < count; ++i) {
       frames_.push_back({PathFrame::Kind::Index, nullptr, i});
-      if (refused_by_validator(e)) {  // not appended: the container holds what passed
+      PartMark mark;
+      if (begin_part(e, mark)) {  // not appended: the container holds what passed
         if (addresses) addresses->push_back(nullptr);
         if (!nested(e, nullptr)) return false;
         frames_.pop_back();
@@ -509,7 +558,8 @@ bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* ds
     auto* staged = lifecycle ? static_cast<std::uint8_t*>(lifecycle->create())
                              : reinterpret_cast<std::uint8_t*>(scalar_buffer);
     const std::size_t first_slot = applied_slots_.size();
-    const bool refused = refused_by_validator(e);
+    PartMark mark;
+    const bool refused = begin_part(e, mark);
     if (!nested(e, staged)) {
       if (lifecycle) lifecycle->destroy(staged);
       return false;

@@ -92,6 +92,7 @@ struct HeapRecord {
   std::uint32_t type;
   std::uint8_t owner;
   const PlanNode* node;
+  bool refused;  // a validator refused a value in it: not created, pointers keep their values
 };
 
 struct MappedStep {
@@ -183,12 +184,24 @@ class Restorer {
 
   bool container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
 
-  // Pass 2: whether the next element, validated as a whole, failed its validator in pass 1.
-  // Such an element is left out of its container (reported and lossy in pass 1), never
-  // inserted value-initialised.
-  bool refused_by_validator(const PlanNode* e) const {
-    return runs_validator(e) && mode_ == Mode::Apply && verdicts_[verdict_cursor_] == 0;
-  }
+  // ---- parts judged whole (docs/resolution.md, Validators) ---------------------------------
+  // A container element, or the value an optional, unique_ptr or variant holds, in which a
+  // validator refused a value is never inserted, emplaced or made with a value-initialised
+  // stand-in: the element is left out of its container, the holder keeps this build's value.
+  // Pass 1 reserves one verdict per such part before decoding it (stream order, like the
+  // validators' verdicts) and settles it after; the later passes read it before the part.
+  struct PartMark {
+    bool judged = false;
+    std::size_t verdict = 0;      // index in part_verdicts_
+    std::size_t own_verdict = 0;  // index in verdicts_ of the part's own validator, if any
+    std::uint32_t refusals = 0;   // refusals_ before the part
+    std::size_t first_slot = 0;   // slots_ before the part
+  };
+  // Before a part: whether pass 1 refused it (false in pass 1 itself).
+  bool begin_part(const PlanNode* part, PartMark& mark);
+  // After a part, in pass 1: its verdict. A container element takes in its parts' refusals
+  // (the container holds what passed); a holder passes them on to what holds it.
+  void end_part(const PlanNode* part, const PartMark& mark, bool element);
 
   // A value checked by its type's symcr_validate. A plan for a build known only by its schema
   // file (the CLI's) marks validated types whose code it does not have: restored unchecked.
@@ -265,6 +278,9 @@ class Restorer {
   std::uint32_t slot_ordinal_ = 0;
   std::vector<std::uint8_t> verdicts_;
   std::size_t verdict_cursor_ = 0;
+  std::vector<std::uint8_t> part_verdicts_;  // begin_part / end_part
+  std::size_t part_cursor_ = 0;
+  std::uint32_t refusals_ = 0;  // pass 1: values refused by validators, not yet taken in
 
   std::vector<SlotRecord> slots_;
   std::unordered_map<std::uint32_t, std::string> explained_;  // slot ordinal -> path

@@ -12,6 +12,8 @@
 #include <symcr/device.hpp>
 #include <symcr/symcr.hpp>
 
+#include "report_file.h"
+
 // embedded_plan_check.cpp, linked into the C++ v1 programs: the failures of checking the plan
 // symcr-gen embedded for `checkpoint`'s schema.
 extern "C" int xv_check_embedded_plan(const char* checkpoint) __attribute__((weak));
@@ -121,6 +123,7 @@ inline symcr::Report restore(int argc, char** argv, bool strict = false) {
   options.strict = strict;
   symcr::Report report = symcr::restore(argv[1], options);
   std::printf("%s\n", report.to_text().c_str());
+  xv_write_report(report.to_json().c_str());
   return report;
 }
 

@@ -6,6 +6,8 @@
 
 #include <symcr/symcr.h>
 
+#include "report_file.h"
+
 typedef struct {
   double lon;
   double lat;
@@ -40,6 +42,7 @@ int main(int argc, char** argv) {
   symcr_report* report = NULL;
   int status = symcr_restore(argv[1], 0, &report);
   printf("%s\n", symcr_report_text(report));
+  xv_write_report(symcr_report_json(report));
   CHECK(status == SYMCR_OK);
   CHECK(symcr_report_ok(report));
   symcr_report_free(report);

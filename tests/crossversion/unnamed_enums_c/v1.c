@@ -3,6 +3,8 @@
 
 #include <symcr/symcr.h>
 
+#include "report_file.h"
+
 typedef enum { LINK_BAD = 10, LINK_OK = 11, LINK_NONE = 12 } link_status_t;
 typedef enum { MODE_RUN = 20, MODE_IDLE = 21 } run_mode_t;
 
@@ -16,7 +18,11 @@ struct State state;
 
 int main(int argc, char** argv) {
   if (argc < 2) return 2;
-  if (symcr_restore(argv[1], 0, NULL) != SYMCR_OK) {
+  symcr_report* report = NULL;
+  const int status = symcr_restore(argv[1], 0, &report);
+  xv_write_report(symcr_report_json(report));
+  symcr_report_free(report);
+  if (status != SYMCR_OK) {
     fprintf(stderr, "restore failed: %s\n", symcr_last_error());
     return 1;
   }
