@@ -13,7 +13,8 @@
 //        byte 40, when present, bit 0: the reader authenticates checkpoints (fuzz_worlds.hpp's
 //        key), and with bit 4 of the control byte slot records are signed again; byte 41,
 //        when present, the crash-loop fallback depth of the writable open (bits 0-2; 0: off);
-//        bytes 64..111, when present, the restore journal at file offset 64 (its CRC fixed
+//        bytes 64..331, when present, the restore journal of earlier versions (64..111) and
+//        the journal's two copies (128..203, 256..331) at those file offsets (their CRCs fixed
 //        with bit 4 of the control byte)
 //     1: schema area 0 (at 4096): u64 hash, u32 size, u32 crc32c, schema bytes
 //     2: schema area 1 (at 4096 + schema_area_size)
@@ -106,15 +107,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<std::uint8_t> header(4096, 0);
   for (std::size_t i = 0; i < sections[0].size() && i < 36; ++i) header[i] = sections[0][i];
   if (fix) le::store32(header.data() + 32, symcr::detail::crc32c(header.data(), 32));
-  constexpr std::size_t kJournalAt = symcr::detail::kRestoreJournalOffset;
-  constexpr std::size_t kJournalEnd = kJournalAt + symcr::detail::kRestoreJournalSize;
+  // The journal's bytes: the earlier versions' single journal and both copies.
+  constexpr std::size_t kJournalAt = symcr::detail::kLegacyRestoreJournalOffset;
+  constexpr std::size_t kJournalEnd = symcr::detail::kRestoreJournalEnd;
   const std::uint32_t fallback_depth = sections[0].size() > 41 ? sections[0][41] & 7u : 0;
   for (std::size_t i = kJournalAt; i < sections[0].size() && i < kJournalEnd; ++i) {
     header[i] = sections[0][i];
   }
   if (fix) {
-    le::store32(header.data() + kJournalEnd - 4,
-                symcr::detail::crc32c(header.data() + kJournalAt, kJournalEnd - kJournalAt - 4));
+    const auto seal = [&header](std::size_t at, std::size_t size) {
+      le::store32(header.data() + at + size - 4, symcr::detail::crc32c(header.data() + at, size - 4));
+    };
+    seal(symcr::detail::kLegacyRestoreJournalOffset, symcr::detail::kLegacyRestoreJournalSize);
+    for (const std::uint64_t copy : symcr::detail::kRestoreJournalOffsets) {
+      seal(copy, symcr::detail::kRestoreJournalSize);
+    }
   }
   const std::uint32_t slot_count = le::load32(header.data() + 12);
   const std::uint32_t slot_size = le::load32(header.data() + 16);
@@ -192,10 +199,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       if (fallback_depth != 0 && !store.read_only()) {
         const std::vector<std::uint8_t> now = read_whole(path);
         const symcr::detail::RestoreJournal journal =
-            now.size() >= kJournalEnd
-                ? symcr::detail::decode_restore_journal(now.data() + kJournalAt,
-                                                        kJournalEnd - kJournalAt)
-                : symcr::detail::RestoreJournal();
+            symcr::detail::read_restore_journal(now.data(), now.size());
         if (journal.unconfirmed != (restored ? report.sequence() : 0)) {
           fail("the journal does not name the restore as unconfirmed", world, report);
         }

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "fuzz_worlds.hpp"
+#include "restore_journal.hpp"
 #include "symcr/device.hpp"
 
 namespace {
@@ -246,8 +247,9 @@ std::vector<std::uint8_t> compact_store(const std::string& path, std::uint8_t co
   std::vector<std::uint8_t> header(file.begin(), file.begin() + 36);
   if (cut_in_slot >= 0 || authenticated) header.resize(authenticated ? 41 : 40);
   if (fallback_depth != 0) {
-    header.resize(112);
-    std::copy(file.begin() + 64, file.begin() + 112, header.begin() + 64);
+    header.resize(symcr::detail::kRestoreJournalEnd);
+    std::copy(file.begin() + 64, file.begin() + symcr::detail::kRestoreJournalEnd,
+              header.begin() + 64);
     header[41] = fallback_depth;
   }
   if (cut_in_slot >= 0) {

@@ -7,6 +7,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <exception>
@@ -32,8 +33,8 @@ struct PointState {
   std::string last_save_error;  // logged once until a save succeeds again
   symcr_restore_hook hook = nullptr;
   void* hook_context = nullptr;
-  // Crash-loop fallback: checkpoints still to save before the restore is confirmed (0: none
-  // pending).
+  // Crash-loop fallback: checkpoint points still to reach before the restore is confirmed (0:
+  // none pending).
   unsigned saves_until_confirmed = 0;
 };
 
@@ -76,7 +77,12 @@ symcr::Status open_store(PointState& s, const symcr_point_store& where) {
   if (is_open_at(s, path)) return symcr::Status();
   s.store.close();
   symcr::StoreOptions options;
-  if (where.slots != 0) options.slots = where.slots;
+  if (where.slots != 0) {
+    options.slots = where.slots;
+  } else if (where.fallback_depth != 0) {
+    // Room for the checkpoints the fallback keeps until confirm() and one to save into.
+    options.slots = std::max(options.slots, where.fallback_depth + 2);
+  }
   if (where.slot_size != 0) options.slot_size = where.slot_size;
   options.durability =
       where.fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
@@ -91,10 +97,12 @@ void checkpoint(PointState& s, symcr_point& point) {
   if (point.passes % every != 0) return;
   symcr::Status status = open_store(s, *point.store);
   if (status.ok()) status = s.store.save();
-  if (status.ok() && s.saves_until_confirmed != 0 && --s.saves_until_confirmed == 0) {
-    status = s.store.confirm();
-    if (!status.ok()) {
-      log_line({point.inserted_at, ": cannot confirm the restore: ", status.message()});
+  // The points reached confirm the restore, saved or not: a save the fallback refuses until
+  // then (StoreFull, a store with few slots) must not keep it unconfirmed for ever.
+  if (s.store.is_open() && s.saves_until_confirmed != 0 && --s.saves_until_confirmed == 0) {
+    const symcr::Status confirmed = s.store.confirm();
+    if (!confirmed.ok()) {
+      log_line({point.inserted_at, ": cannot confirm the restore: ", confirmed.message()});
       return;
     }
   }

@@ -229,6 +229,11 @@ int SimulatedFileSystem::fdatasync(int fd) {
 int SimulatedFileSystem::fsync(int fd) { return fdatasync(fd); }
 
 int SimulatedFileSystem::flock(int fd, int operation) {
+  if (before_flock_ != nullptr) {
+    void (*call)(void*) = before_flock_;
+    before_flock_ = nullptr;
+    call(before_flock_context_);
+  }
   Descriptor* open = descriptor(fd);
   if (open == nullptr) return -1;
   Inode& inode = *open->inode;

@@ -41,6 +41,11 @@ class SimulatedFileSystem final : public symcr::detail::FileSystem {
   std::uint64_t mutating_calls() const { return mutating_calls_; }
   // Opens for writing fail with EROFS, as on a file system remounted read-only.
   void set_read_only(bool read_only) { read_only_ = read_only; }
+  // Runs `call(context)` once, just before the next flock(): another process's turn.
+  void before_next_flock(void (*call)(void*), void* context) {
+    before_flock_ = call;
+    before_flock_context_ = context;
+  }
 
   // Outside the store's code: the bytes of a file (empty if absent), changing one, the names.
   std::vector<std::uint8_t> contents(const std::string& path) const;
@@ -97,6 +102,8 @@ class SimulatedFileSystem final : public symcr::detail::FileSystem {
   bool read_only_ = false;
   std::uint64_t mutating_calls_ = 0;
   CrashPlan plan_;
+  void (*before_flock_)(void*) = nullptr;
+  void* before_flock_context_ = nullptr;
 };
 
 // Installs a file system for the current scope.

@@ -573,5 +573,129 @@ TEST(StoreSimulator, RandomSequencesOfStartsSavesConfirmsCrashesAndTornWritesKee
   EXPECT_GT(counts.fallbacks, 0u);
 }
 
+// Single faults the sequences above meet only by chance, each made to happen.
+class StoreFaultTest : public ::testing::Test {
+ protected:
+  SimulatedFileSystem fs{"/sim"};
+  FileSystemInstalled installed{fs};
+  const std::string path = "/sim/copter.store";
+  symcr::StoreOptions options;
+
+  StoreFaultTest() {
+    options.slot_size = 4096;
+    fs.start_process();
+  }
+  void restart() {
+    fs.kill_process();
+    fs.start_process();
+  }
+  void save_counters(std::int64_t first, std::int64_t last) {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema, options, store).ok());
+    for (std::int64_t c = first; c <= last; ++c) {
+      set_state(c);
+      ASSERT_TRUE(store.save().ok());
+    }
+  }
+};
+
+// S8: with a fallback depth, a store that cannot record the restore does not restore unless
+// the program allows it, and then says the fallback is disarmed.
+TEST_F(StoreFaultTest, AStoreThatCannotRecordARestoreRefusesItUnlessAllowed) {
+  options.fallback_depth = 2;
+  save_counters(1, 3);
+  restart();
+  fs.set_read_only(true);
+  const std::vector<std::uint8_t> before = fs.contents(path);
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema, options, store).ok());
+    EXPECT_TRUE(store.read_only());
+    set_state(-1);
+    const symcr::Report refused = store.restore_latest();
+    EXPECT_EQ(refused.status().error(), symcr::Error::Io);
+    EXPECT_NE(std::string(refused.status().message()).find("crash-loop fallback"),
+              std::string::npos)
+        << refused.status().message();
+    EXPECT_TRUE(state_holds(-1));
+  }
+  options.allow_unrecorded_restore = true;
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema, options, store).ok());
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_TRUE(state_holds(3));
+    ASSERT_EQ(report.warnings().size(), 1u);
+    EXPECT_NE(report.warnings()[0].find("disarmed"), std::string::npos) << report.warnings()[0];
+    EXPECT_NE(report.to_text().find("warning: the crash-loop fallback is disarmed"),
+              std::string::npos);
+  }
+  EXPECT_EQ(fs.contents(path), before);
+}
+
+// S6: a rewrite for another geometry killed before its rename leaves its new file behind;
+// the next open removes it and the store keeps its checkpoints.
+TEST_F(StoreFaultTest, ARewriteKilledBeforeItsRenameLeavesNothingAfterTheNextOpen) {
+  save_counters(1, 3);
+  restart();
+  options.slots = 8;
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema, options, store).ok());
+    // The rewrite's calls: create the file, truncate, allocate, copy the schema area and
+    // three slots, write the header, sync, rename: crash just before the rename.
+    SimulatedFileSystem::CrashPlan plan;
+    plan.at = 10;
+    fs.plan_crash(plan);
+    set_state(4);
+    EXPECT_FALSE(store.save().ok());
+    ASSERT_TRUE(fs.crashed());
+  }
+  ASSERT_EQ(fs.names().size(), 2u) << "the rewrite's file is there";
+  restart();
+  symcr::Store store;
+  ASSERT_TRUE(symcr::Store::open(path.c_str(), schema, options, store).ok());
+  EXPECT_EQ(fs.names(), std::vector<std::string>{"copter.store"});
+  set_state(-1);
+  const symcr::Report report = store.restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_TRUE(state_holds(3));
+}
+
+// S7: a second writer whose open() got the store just before the first rewrote it (a new file
+// renamed over the path) must not lock the replaced file and save into it.
+TEST_F(StoreFaultTest, ASecondWriterThatOpenedTheReplacedFileGetsIo) {
+  save_counters(1, 3);
+  restart();
+  options.slots = 6;  // the first writer rewrites at its first save
+  symcr::Store first;
+  ASSERT_TRUE(symcr::Store::open(path.c_str(), schema, options, first).ok());
+  struct Turn {
+    symcr::Store* first;
+    bool saved;
+  } turn{&first, false};
+  // The second writer's open() has the old file; before it locks it, the first saves (and
+  // rewrites the store) and closes its old descriptor.
+  fs.before_next_flock(
+      [](void* context) {
+        auto& t = *static_cast<Turn*>(context);
+        set_state(4);
+        t.saved = t.first->save().ok();
+      },
+      &turn);
+  symcr::Store second;
+  const symcr::Status opened = symcr::Store::open(path.c_str(), schema, options, second);
+  ASSERT_TRUE(turn.saved);
+  EXPECT_EQ(opened.error(), symcr::Error::Io) << opened.message();
+  EXPECT_FALSE(second.is_open());
+  set_state(5);
+  ASSERT_TRUE(first.save().ok());
+  set_state(-1);
+  const symcr::Report report = first.restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_TRUE(state_holds(5));
+}
+
 }  // namespace
 }  // namespace reliability

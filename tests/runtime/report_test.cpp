@@ -57,7 +57,8 @@ TEST(EngineReport, JsonEscapesEverything) {
   EXPECT_EQ(report.to_json(),
             "{\"ok\":false,\"error\":\"Strict\",\"message\":\"no \\\"way\\\"\",\"sequence\":0,"
             "\"entries\":[{\"path\":\"a\\\"b\\\\c\\n\\u0001\",\"decision\":\"rejected\","
-            "\"detail\":\"bad \\ufffd byte, ok \xc3\xa9\",\"lossy\":true}],\"skipped\":[]}");
+            "\"detail\":\"bad \\ufffd byte, ok \xc3\xa9\",\"lossy\":true}],\"skipped\":[],"
+            "\"warnings\":[]}");
 }
 
 TEST(EngineReport, SkippedCheckpointsAreRenderedInTextAndJson) {
@@ -72,9 +73,20 @@ TEST(EngineReport, SkippedCheckpointsAreRenderedInTextAndJson) {
       << text;
   EXPECT_NE(report.to_json().find("\"skipped\":[{\"slot\":3,\"sequence\":12,\"reason\":"
                                   "\"torn \\\"x\\\"\"},{\"slot\":0,\"sequence\":0,"
-                                  "\"reason\":\"corrupt\"}]}"),
+                                  "\"reason\":\"corrupt\"}],\"warnings\":[]}"),
             std::string::npos)
       << report.to_json();
+}
+
+TEST(EngineReport, WarningsAreRenderedInTextAndJson) {
+  symcr::Report report;
+  symcr::detail::ReportAccess::warn(report, "fallback \"off\"");
+  EXPECT_NE(report.to_text().find("warning: fallback \"off\"\nsequence 0, status: ok\n"),
+            std::string::npos)
+      << report.to_text();
+  EXPECT_NE(report.to_json().find("\"warnings\":[\"fallback \\\"off\\\"\"]}"), std::string::npos)
+      << report.to_json();
+  ASSERT_EQ(report.warnings().size(), 1u);
 }
 
 }  // namespace

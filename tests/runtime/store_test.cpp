@@ -2,6 +2,7 @@
 // a new build reading the previous build's checkpoints, geometry, durability and file safety.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -721,6 +722,48 @@ TEST_F(StoreTest, DifferentGeometryWithoutCheckpointsIsRewrittenAtTheFirstSave) 
   EXPECT_EQ(file.slot_count(), 3u);
   EXPECT_EQ(file.slot_size(), 8192u);
   EXPECT_EQ(file.bytes.size(), file.slots_offset() + 3u * 8192u);
+}
+
+// A damaged schema area makes every slot unrestorable for a while; the next save rewrites the
+// area, which revives them. That save must still be the newest: numbered above every intact
+// record, restorable or not.
+TEST_F(StoreTest, ASaveAfterASchemaAreaWasDamagedIsNumberedAboveTheRevivedSlots) {
+  save_seeds(3, 6);  // sequences 1..4
+  StoreFile file(path);
+  file.bytes[4096 + 16 + 3] ^= 0x40;  // a byte of schema area 0's schema
+  file.write();
+  {
+    symcr::Store store;
+    open(store);
+    EXPECT_EQ(store.restore_latest().status().error(), Error::NoValidSlot);
+    fill_a(100);
+    ASSERT_TRUE(store.save().ok());
+    EXPECT_EQ(store.last_sequence(), 5u);
+  }
+  const symcr::Report report = restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 5u);
+  expect_a(100);
+}
+
+// A rewrite for another geometry killed before its rename leaves its new file: the next open
+// removes it (its process is gone), and the store keeps its checkpoints.
+TEST_F(StoreTest, OpenRemovesTheTempFileOfARewriteWhoseProcessDied) {
+  save_seeds(1, 2);
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
+  const std::string stale = path + ".tmp." + std::to_string(child) + ".0";
+  write_file(stale, std::vector<std::uint8_t>(300000, 0));
+  {
+    symcr::Store store;
+    open(store);
+  }
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"copter.store"}));
+  const symcr::Report report = restore_latest();
+  EXPECT_EQ(report.sequence(), 2u);
 }
 
 TEST_F(StoreTest, InvalidOptionsAreRefused) {
