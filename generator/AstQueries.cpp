@@ -7,7 +7,12 @@
 
 #include "clang/AST/Attr.h"
 #include "clang/AST/DeclTemplate.h"
+#include "clang/AST/Mangle.h"
+#include "clang/AST/VTableBuilder.h"
 #include "clang/Basic/SourceManager.h"
+#include "llvm/Support/raw_ostream.h"
+
+#include <memory>
 
 using namespace clang;
 
@@ -71,6 +76,27 @@ std::size_t arraySuffixStart(const std::string &Name) {
     End = Open;
   }
   return End;
+}
+
+std::string vtableSymbol(ASTContext &Context, const CXXRecordDecl *Class) {
+  auto *VTables = dyn_cast<ItaniumVTableContext>(Context.getVTableContext());
+  std::unique_ptr<MangleContext> Mangler(Context.createMangleContext());
+  auto *Itanium = dyn_cast<ItaniumMangleContext>(Mangler.get());
+  if (!Itanium || !VTables || VTables->isRelativeLayout())
+    return "";
+  std::string Symbol;
+  llvm::raw_string_ostream Out(Symbol);
+  Itanium->mangleCXXVTable(Class, Out);
+  return Out.str();
+}
+
+const CXXMethodDecl *vtableKeyFunction(ASTContext &Context,
+                                       const CXXRecordDecl *Class) {
+  const CXXMethodDecl *Key = Context.getCurrentKeyFunction(Class);
+  // A class template's instantiation has its vtable emitted wherever it is used.
+  if (!Key || Key->getTemplateSpecializationKind() == TSK_ImplicitInstantiation)
+    return nullptr;
+  return Key;
 }
 
 } // namespace symcr_gen

@@ -12,6 +12,7 @@
 
 #include "clang/AST/ASTContext.h"
 #include "clang/AST/Decl.h"
+#include "clang/AST/DeclCXX.h"
 #include "llvm/ADT/StringRef.h"
 
 #include <string>
@@ -35,6 +36,17 @@ Location locationOf(const clang::ASTContext &Context, clang::SourceLocation Loc)
 /// \p RD is a specialization of a template of namespace std; \p Name is the
 /// template's name.
 bool isStdTemplate(const clang::RecordDecl *RD, llvm::StringRef &Name);
+
+/// The mangled name of \p Class's vtable under the Itanium C++ ABI (every GCC
+/// and Clang target symcr supports), or empty under another ABI.
+std::string vtableSymbol(clang::ASTContext &Context,
+                         const clang::CXXRecordDecl *Class);
+
+/// The member function whose definition emits \p Class's vtable (the Itanium
+/// ABI's key function: its first virtual function neither pure nor inline), or
+/// null when every translation unit that needs the vtable emits its own copy.
+const clang::CXXMethodDecl *vtableKeyFunction(clang::ASTContext &Context,
+                                              const clang::CXXRecordDecl *Class);
 
 /// The index of the trailing "[N][M]" suffix of an array type name.
 std::size_t arraySuffixStart(const std::string &Name);

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <map>
 #include <mutex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -149,11 +150,16 @@ struct TypeModel {
   /// vtable's mangled name and the index of its address point, for Lifecycle::vtable.
   std::string VtableSymbol;
   unsigned VtableAddressPoint = 0;
+  /// The function whose definition emits the vtable (the Itanium ABI's key function), when only
+  /// the source defining it does: the class is creatable only if a parsed source defines it.
+  std::string VtableKeyFunction;
   /// A polymorphic class a pointer points to: the classes (itself or derived) saving can
   /// recognise as a heap object's dynamic type, and those it cannot, with why.
   std::vector<std::uint32_t> DynamicTypes;
   std::vector<std::string> NotDynamicTypes;
   std::string DynamicTypesReachedBy; ///< the first such pointer's path, for the note
+  Location DynamicTypesReachedAt;    ///< that pointer's declaration
+  std::string DynamicTypesSkipHint;  ///< and its skip line, "Ahrs::_view"
 
   /// A Lifecycle is emitted only for types the home TU can name and construct
   /// with `new T()` (or calloc in C).
@@ -287,6 +293,8 @@ struct ProgramModel {
   std::vector<PointModel> Points;
   PointStoreModel PointStore;
   std::vector<PreviousPlanModel> PreviousPlans;
+  /// Vtables (mangled names) of classes with a key function some parsed source defines.
+  std::set<std::string> EmittedVtables;
 };
 
 inline bool TypeModel::hasValidate(const ProgramModel &Program) const {

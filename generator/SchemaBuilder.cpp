@@ -269,6 +269,10 @@ void SchemaBuilder::addTranslationUnit(
     const std::vector<Directive> &PragmaDirectives) {
   NameIndex Index(Context);
   Index.TraverseDecl(Context.getTranslationUnitDecl());
+  for (const CXXRecordDecl *Class : Index.PolymorphicClasses)
+    if (const CXXMethodDecl *Key = vtableKeyFunction(Context, Class))
+      if (Key->isDefined())
+        Program.EmittedVtables.insert(vtableSymbol(Context, Class));
   Selections Select;
   Program.TranslationUnits[TUIndex].DeducesReturnTypes =
       Context.getLangOpts().CPlusPlus14;
@@ -592,8 +596,59 @@ void SchemaBuilder::addTranslationUnit(
   }
 }
 
+void SchemaBuilder::dropClassesWithoutVtable() {
+  // Code that creates such a class names its vtable, which the link would not find.
+  for (std::uint32_t Index = 0; Index < Program.Types.size(); ++Index) {
+    TypeModel &Type = Program.Types[Index];
+    if (Type.VtableSymbol.empty() || Type.VtableKeyFunction.empty() ||
+        Program.EmittedVtables.count(Type.VtableSymbol))
+      continue;
+    Type.NeedsLifecycle = false;
+    Type.VtableSymbol.clear();
+    std::string Why = Type.Name + ": its vtable is not in this build (its key function '" +
+                      Type.VtableKeyFunction + "' is defined in no source symcr-gen "
+                      "parsed: compiled out, or in a library source not given with "
+                      "--library-source)";
+    for (TypeModel &Base : Program.Types) {
+      auto It = std::find(Base.DynamicTypes.begin(), Base.DynamicTypes.end(), Index);
+      if (It == Base.DynamicTypes.end())
+        continue;
+      Base.DynamicTypes.erase(It);
+      Base.NotDynamicTypes.push_back(Why);
+    }
+  }
+}
+
+std::set<std::string> SchemaBuilder::typesInState() const {
+  std::set<std::string> Names;
+  std::vector<std::uint32_t> Pending;
+  for (const RootModel &Root : Program.Roots)
+    Pending.push_back(Root.Type);
+  while (!Pending.empty()) {
+    std::uint32_t Index = Pending.back();
+    Pending.pop_back();
+    if (Index == symcr::kNoType || Index >= Program.Types.size() ||
+        !Names.insert(Program.Types[Index].Name).second)
+      continue;
+    const TypeModel &Type = Program.Types[Index];
+    for (const FieldModel &Field : Type.Fields)
+      Pending.push_back(Field.Type);
+    Pending.insert(Pending.end(), Type.Alternatives.begin(), Type.Alternatives.end());
+    if (Type.Element == symcr::kNoType)
+      continue;
+    // A polymorphic pointee is in the state only as the heap objects restore creates.
+    const TypeModel &Element = Program.Types[Type.Element];
+    if (Type.Kind == symcr::Kind::Pointer && (Element.Flags & symcr::kTypePolymorphic))
+      Pending.insert(Pending.end(), Element.DynamicTypes.begin(), Element.DynamicTypes.end());
+    else
+      Pending.push_back(Type.Element);
+  }
+  return Names;
+}
+
 void SchemaBuilder::finish(bool CheckUnmatched) {
   Diags.flushUnrestorable();
+  dropClassesWithoutVtable();
   // A C++11 wrapper can only name accessible types; one that needs code (ops,
   // a Lifecycle, hooks) and is private cannot be served in that dialect.
   for (const TypeModel &Type : Program.Types) {
@@ -619,18 +674,40 @@ void SchemaBuilder::finish(bool CheckUnmatched) {
     if (Type.hasValidate(Program))
       Type.Flags |= symcr::kTypeValidated;
   }
+  std::set<std::string> InState = typesInState();
   for (const TypeModel &Type : Program.Types) {
     if (Type.DynamicTypesReachedBy.empty() || !Type.DynamicTypes.empty())
       continue;
     std::string Reasons;
     for (const std::string &Reason : Type.NotDynamicTypes)
       Reasons += (Reasons.empty() ? " (" : "; ") + Reason;
-    Diags.note(Location(),
-               "'" + Type.DynamicTypesReachedBy + "' points to polymorphic class '" +
-                   Type.Name + "': it is saved as a reference to the member or "
-                   "element of the state it points at; no class derived from it "
-                   "can be created by restore" + (Reasons.empty() ? "" : Reasons + ")") +
-                   ", so saving refuses a heap object it points to");
+    Reasons = Reasons.empty() ? " (every class derived from it is abstract)"
+                              : Reasons + ")";
+    // A pointer can still refer to an object the state holds; when the state holds none of
+    // its class, every save with the pointer set would be refused.
+    if (InState.count(Type.Name) || Program.Profile != RuntimeProfile::Host) {
+      Diags.note(Location(),
+                 "'" + Type.DynamicTypesReachedBy + "' points to polymorphic class '" +
+                     Type.Name + "': it is saved as a reference to the member or "
+                     "element of the state it points at; no class derived from it "
+                     "can be created by restore" + Reasons +
+                     ", so saving refuses a heap object it points to");
+      continue;
+    }
+    const std::string &Skip = Type.DynamicTypesSkipHint;
+    // A root that is such a pointer has no member to skip: it is left out of the checkpoint.
+    std::string LeaveOut =
+        Skip.empty() ? "Leave it out of the checkpoint (the new build keeps its own value)"
+                     : "Skip it (the new build keeps its own value): '#pragma symcr skip(" +
+                           Skip + ")' or 'skip(" + Skip + ")' in the annotation file";
+    Diags.error(Type.DynamicTypesReachedAt,
+                "'" + Type.DynamicTypesReachedBy + "' points to polymorphic class '" +
+                    Type.Name + "', which no object of the state is, and restore "
+                    "can create no class derived from it" + Reasons +
+                    ": every checkpoint taken while it is set would be refused. " +
+                    LeaveOut + "; or give '" + Type.Name + "' or a class derived from "
+                    "it a public default constructor, so that restore can create its "
+                    "heap object");
   }
   for (std::size_t I = 0; I < Sidecar.size() && CheckUnmatched; ++I)
     for (std::size_t A = 0; A < Sidecar[I].Arguments.size(); ++A) {

@@ -45,6 +45,13 @@ public:
   void finish(bool CheckUnmatched = true);
 
 private:
+  /// Takes out of the heap's dynamic types every class whose vtable no parsed
+  /// source emits, saying why under each pointer that could have held one.
+  void dropClassesWithoutVtable();
+  /// Names of the types whose objects the state holds: the roots, what they
+  /// contain, and the heap objects restore creates behind their pointers.
+  std::set<std::string> typesInState() const;
+
   struct DirectiveState;
   ProgramModel &Program;
   Diagnostics &Diags;

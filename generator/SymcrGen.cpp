@@ -32,6 +32,7 @@
 #include "llvm/Support/CommandLine.h"
 #include "llvm/Support/FileSystem.h"
 #include "llvm/Support/Path.h"
+#include "llvm/Support/VirtualFileSystem.h"
 #include "llvm/Support/raw_ostream.h"
 
 #include <algorithm>
@@ -134,6 +135,17 @@ std::string absolute(const std::string &Path) {
   return std::string(Result);
 }
 
+/// \p Path as an absolute path: a relative one is relative to the directory
+/// of the compile command that read it (its file manager's working directory),
+/// not to the process's, which parallel parses share.
+std::string absoluteInCommandDirectory(const FileManager &Files,
+                                       llvm::StringRef Path) {
+  llvm::SmallString<256> Result(Path);
+  Files.makeAbsolutePath(Result);
+  llvm::sys::path::remove_dots(Result, /*remove_dot_dot=*/true);
+  return std::string(Result);
+}
+
 /// Answers for a source with the compile command of its wrapper when the build
 /// compiles the wrapper instead: the source is then absent from
 /// compile_commands.json, or present with another target's flags.
@@ -153,8 +165,9 @@ public:
     // The wrapper's command wins: another target may compile the source itself
     // with other flags.
     if (It == SourceToWrapper.end() || !Known.count(It->second))
-      return Base.getCompileCommands(File);
-    std::vector<CompileCommand> Commands = Base.getCompileCommands(It->second);
+      return withAbsoluteCompiler(Base.getCompileCommands(File));
+    std::vector<CompileCommand> Commands =
+        withAbsoluteCompiler(Base.getCompileCommands(It->second));
     for (CompileCommand &Command : Commands) {
       for (std::string &Arg : Command.CommandLine)
         if (Arg == It->second || absolute(Arg) == It->second)
@@ -168,6 +181,25 @@ public:
   }
 
 private:
+  /// A compiler named by a relative path ("../tools/bin/g++") is relative to
+  /// its command's directory; CompileCommandAdapter runs it (to ask its
+  /// defaults) from the process's working directory, which parses share.
+  static std::vector<CompileCommand>
+  withAbsoluteCompiler(std::vector<CompileCommand> Commands) {
+    for (CompileCommand &Command : Commands) {
+      if (Command.CommandLine.empty())
+        continue;
+      std::string &Compiler = Command.CommandLine.front();
+      if (Compiler.find('/') == std::string::npos ||
+          llvm::sys::path::is_absolute(Compiler))
+        continue;
+      llvm::SmallString<256> Path(Command.Directory);
+      llvm::sys::path::append(Path, Compiler);
+      Compiler = absolute(std::string(Path));
+    }
+    return Commands;
+  }
+
   const CompilationDatabase &Base;
   std::map<std::string, std::string> SourceToWrapper;
   std::set<std::string> Known;
@@ -219,9 +251,11 @@ public:
     unsigned End = SM.getFileOffset(FilenameRange.getEnd());
     if (End <= Begin)
       return;
-    Out.push_back({Begin, End - Begin, absolute(File->tryGetRealPathName().empty()
-                                               ? File->getName().str()
-                                               : File->tryGetRealPathName().str())});
+    Out.push_back({Begin, End - Begin,
+                   File->tryGetRealPathName().empty()
+                       ? absoluteInCommandDirectory(SM.getFileManager(),
+                                                    File->getName())
+                       : absolute(File->tryGetRealPathName().str())});
   }
 
 private:
@@ -278,8 +312,9 @@ public:
   }
 
   void EndSourceFileAction() override {
+    FileManager &Files = getCompilerInstance().getFileManager();
     for (const std::string &File : Collector->getDependencies())
-      Dependencies.insert(absolute(File));
+      Dependencies.insert(absoluteInCommandDirectory(Files, File));
   }
 
 private:
@@ -373,7 +408,12 @@ int main(int argc, const char **argv) {
   auto Worker = [&] {
     for (unsigned I = NextSource++; I < Sources.size(); I = NextSource++) {
       auto Start = std::chrono::steady_clock::now();
-      ClangTool Tool(Database, {Sources[I]});
+      // A file system of its own, whose working directory is this tool's:
+      // ClangTool moves it to each command's directory, which over the real
+      // file system would change the process's under the other workers.
+      ClangTool Tool(Database, {Sources[I]},
+                     std::make_shared<PCHContainerOperations>(),
+                     llvm::vfs::createPhysicalFileSystem());
       Tool.clearArgumentsAdjusters();
       Tool.appendArgumentsAdjuster(getClangStripOutputAdjuster());
       Tool.appendArgumentsAdjuster(getClangStripDependencyFileAdjuster());

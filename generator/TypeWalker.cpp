@@ -159,9 +159,12 @@ void TypeWalker::store(std::uint32_t Index, TypeModel Model,
   // Attached while the type was still being walked (a pointer inside it to itself).
   Model.VtableSymbol = std::move(Slot.VtableSymbol);
   Model.VtableAddressPoint = Slot.VtableAddressPoint;
+  Model.VtableKeyFunction = std::move(Slot.VtableKeyFunction);
   Model.DynamicTypes = std::move(Slot.DynamicTypes);
   Model.NotDynamicTypes = std::move(Slot.NotDynamicTypes);
   Model.DynamicTypesReachedBy = std::move(Slot.DynamicTypesReachedBy);
+  Model.DynamicTypesReachedAt = std::move(Slot.DynamicTypesReachedAt);
+  Model.DynamicTypesSkipHint = std::move(Slot.DynamicTypesSkipHint);
   Model.FirstSeenIn = Program.TranslationUnits[TUIndex].Source;
   Slot = std::move(Model);
 }
@@ -426,20 +429,20 @@ void TypeWalker::findDynamicTypes(const CXXRecordDecl *Base,
   if (!Base || !PolymorphicClasses || !DynamicTypesSought.insert(BaseIndex).second)
     return;
   Base = Base->getDefinition();
-  if (Program.Types[BaseIndex].DynamicTypesReachedBy.empty())
+  if (Program.Types[BaseIndex].DynamicTypesReachedBy.empty()) {
     Program.Types[BaseIndex].DynamicTypesReachedBy = C.Path.substr(0, C.Path.size() - 2);
+    Program.Types[BaseIndex].DynamicTypesReachedAt = C.Where;
+    Program.Types[BaseIndex].DynamicTypesSkipHint = C.SkipHint;
+  }
   auto NotCreatable = [&](const std::string &Name, const std::string &Why) {
     std::string Entry = Name + ": " + Why;
     std::vector<std::string> &List = Program.Types[BaseIndex].NotDynamicTypes;
     if (std::find(List.begin(), List.end(), Entry) == List.end())
       List.push_back(Entry);
   };
-  // Saving recognises a class by its vtable, laid out by the Itanium C++ ABI
-  // (every GCC and Clang target symcr supports).
-  std::unique_ptr<MangleContext> Mangler(Context.createMangleContext());
-  auto *Itanium = dyn_cast<ItaniumMangleContext>(Mangler.get());
+  // Saving recognises a class by its vtable (vtableSymbol: Itanium C++ ABI only).
   auto *VTables = dyn_cast<ItaniumVTableContext>(Context.getVTableContext());
-  if (!Itanium || !VTables || VTables->isRelativeLayout()) {
+  if (vtableSymbol(Context, Base).empty() || !VTables) {
     NotCreatable(Base->getNameAsString(),
                  "the target's C++ ABI is not the Itanium one");
     return;
@@ -464,10 +467,9 @@ void TypeWalker::findDynamicTypes(const CXXRecordDecl *Base,
     }
     TypeModel &Dynamic = Program.Types[Index];
     Dynamic.NeedsLifecycle = true;
-    std::string Symbol;
-    llvm::raw_string_ostream Out(Symbol);
-    Itanium->mangleCXXVTable(Class, Out);
-    Dynamic.VtableSymbol = Out.str();
+    Dynamic.VtableSymbol = vtableSymbol(Context, Class);
+    if (const CXXMethodDecl *Key = vtableKeyFunction(Context, Class))
+      Dynamic.VtableKeyFunction = Key->getQualifiedNameAsString();
     Dynamic.VtableAddressPoint =
         VTables->getVTableLayout(Class)
             .getAddressPoint(BaseSubobject(Class, CharUnits::Zero()))

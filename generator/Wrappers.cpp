@@ -92,8 +92,10 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
              << ", \"symcr-gen: offset of " << T.Name << "::" << F.Name
              << " differs\");\n";
     }
+    // Declared first, as in C++: -Wmissing-variable-declarations.
     for (std::uint32_t I : Roots)
-      OS << "void* const symcr_gen_root_" << I << " = "
+      OS << "extern void* const symcr_gen_root_" << I << ";\n"
+         << "void* const symcr_gen_root_" << I << " = "
          << Program.Roots[I].AddressExpression << ";\n";
     return OS.str();
   }

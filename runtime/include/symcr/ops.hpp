@@ -25,12 +25,21 @@
 namespace symcr {
 namespace ops {
 
+// destroy() deletes an object as its exact (dynamic) class, which generated code chose by its
+// vtable: correct without a virtual destructor, which -Wdelete-non-virtual-dtor cannot know.
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wdelete-non-virtual-dtor"
+#endif
 template <typename T>
 struct lifecycle {
   static void* create() { return new T(); }
   static void destroy(void* object) { delete static_cast<T*>(object); }
   static constexpr Lifecycle table{&create, &destroy, nullptr};
 };
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
 
 template <typename S>
 struct string {
