@@ -11,25 +11,6 @@ namespace symcr::cli {
 
 namespace {
 
-// Why the next start passes over a restorable slot that `journal` (as it applies it) excludes;
-// `pending` is the restore the store's journal records as unconfirmed.
-std::string exclusion_reason(const detail::RestoreJournal& journal, std::uint64_t pending,
-                             std::uint64_t sequence) {
-  if (journal.gave_up_on(sequence)) {
-    return "crash-loop fallback: given up on (restores never confirmed down to the fallback "
-           "depth, or no older checkpoint left)";
-  }
-  if (journal.crashed(sequence)) {
-    return "crash-loop fallback: crashed the program, or was saved after a restore that did";
-  }
-  if (sequence == pending) {
-    return "crash-loop fallback: suspect, the last start restored it and never confirmed (a "
-           "crash, counted at the next start)";
-  }
-  return "crash-loop fallback: suspect, restored or saved after a restore that was never "
-         "confirmed";
-}
-
 std::string count_text(std::size_t count, const char* what) {
   return std::to_string(count) + (count == 1 ? " checkpoint " : " checkpoints ") + what;
 }
@@ -104,7 +85,7 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
       s.restorable = status.ok() && authentic.ok();
       if (s.restorable && journal.excludes(slot.header.sequence)) {
         s.passed_over = true;
-        s.problem = exclusion_reason(journal, pending, slot.header.sequence);
+        s.problem = journal.exclusion_reason(slot.header.sequence);
       }
       if (!authentic.ok()) {
         s.state = detail::store_slot_state_name(detail::StoreSlotState::Unauthenticated);

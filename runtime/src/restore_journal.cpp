@@ -66,6 +66,23 @@ bool RestoreJournal::same_state(const RestoreJournal& o) const {
          fallbacks == o.fallbacks && depth == o.depth;
 }
 
+const char* RestoreJournal::exclusion_reason(std::uint64_t sequence) const {
+  if (gave_up_on(sequence)) {
+    return "crash-loop fallback: given up on (its restores were never confirmed, down to the "
+           "fallback depth or the oldest checkpoint; the program started afresh since)";
+  }
+  if (crashed(sequence)) {
+    return "crash-loop fallback: it crashed the program, or was saved after a restore that did "
+           "(an older checkpoint restored since was confirmed)";
+  }
+  if (sequence == suspect_low) {
+    return "crash-loop fallback: suspect, the last start restored it and stopped before "
+           "Store::confirm() (a crash, or a stop too early)";
+  }
+  return "crash-loop fallback: suspect, restored, or saved after a restore, that was never "
+         "confirmed";
+}
+
 std::uint64_t RestoreJournal::highest_sequence() const {
   return std::max({unconfirmed, suspect_high, given_up_through, crashed_high});
 }

@@ -59,6 +59,8 @@ struct RestoreJournal {
   bool excludes(std::uint64_t sequence) const {
     return suspects(sequence) || crashed(sequence) || gave_up_on(sequence);
   }
+  // Why a start passes over `sequence`, which excludes() (the report's and the CLI's words).
+  const char* exclusion_reason(std::uint64_t sequence) const;
   // The highest sequence the journal names: a new checkpoint is numbered above it, so that
   // no exclusion covers it.
   std::uint64_t highest_sequence() const;

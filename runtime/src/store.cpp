@@ -890,23 +890,6 @@ Status Store::save() {
 
 namespace {
 
-// Why restore_latest() passes over a valid slot that the journal excludes.
-const char* exclusion_reason(const detail::RestoreJournal& journal, std::uint64_t sequence) {
-  if (journal.gave_up_on(sequence)) {
-    return "crash-loop fallback: given up on, its restores never confirmed down to the "
-           "fallback depth or the oldest checkpoint (the program started afresh since)";
-  }
-  if (journal.crashed(sequence)) {
-    return "crash-loop fallback: it crashed the program, or was saved after a restore that did "
-           "(an older checkpoint restored since was confirmed)";
-  }
-  if (sequence == journal.suspect_low) {
-    return "crash-loop fallback: the last start restored it and stopped before "
-           "Store::confirm() (a crash, or a stop too early)";
-  }
-  return "crash-loop fallback: restored, or saved after a restore, that was never confirmed";
-}
-
 void skip(std::vector<SkippedCheckpoint>& skipped, std::uint32_t slot, std::uint64_t sequence,
           std::string reason) {
   skipped.push_back(SkippedCheckpoint{slot, sequence, std::move(reason)});
@@ -988,7 +971,7 @@ Report Store::restore_latest(const RestoreOptions& options) {
     const std::uint64_t sequence = impl.slots[i].sequence;
     if (journal.excludes(sequence)) {
       ++suspect;
-      skip(skipped, i, sequence, exclusion_reason(journal, sequence));
+      skip(skipped, i, sequence, journal.exclusion_reason(sequence));
       continue;
     }
     const detail::RecordView* record = &impl.newest_view;
