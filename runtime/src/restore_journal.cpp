@@ -160,7 +160,16 @@ RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size) 
       found = true;
     }
   }
-  if (!found && kLegacyRestoreJournalOffset + kLegacyRestoreJournalSize <= size) {
+  // The earlier versions' journal counts only in a store this version never wrote a journal
+  // into (both copies blank): once it has, that journal is stale.
+  bool copies_blank = true;
+  for (const std::uint64_t offset : kRestoreJournalOffsets) {
+    for (std::size_t i = 0; i < kRestoreJournalSize && offset + i < size; ++i) {
+      copies_blank = copies_blank && page[offset + i] == 0;
+    }
+  }
+  if (!found && copies_blank &&
+      kLegacyRestoreJournalOffset + kLegacyRestoreJournalSize <= size) {
     decode_legacy(page + kLegacyRestoreJournalOffset, current);
   }
   return current;

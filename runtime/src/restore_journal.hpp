@@ -3,8 +3,9 @@
 // page. A restored state can itself make the program crash again; the journal records which
 // checkpoint a start restored until the program confirms it, so that the next start can tell
 // an unconfirmed restore (a crash, or a stop, before the state proved itself) and pass over
-// that checkpoint and every one saved after it. Two copies are written in turn, so a write
-// cut short leaves the previous journal readable. Internal to the runtime.
+// that checkpoint and every one saved after it. Each write goes to two copies in turn, so a
+// write cut short leaves a readable journal, and so does a copy damaged later. Internal to the
+// runtime.
 #ifndef SYMCR_SRC_RESTORE_JOURNAL_HPP
 #define SYMCR_SRC_RESTORE_JOURNAL_HPP
 
@@ -13,7 +14,8 @@
 
 namespace symcr::detail {
 
-// The two copies, in the store's header page; generation g is written to copy g % 2.
+// The two copies, in the store's header page; generation g is written to copy g % 2 first,
+// then to the other.
 inline constexpr std::uint64_t kRestoreJournalOffsets[2] = {128, 256};
 inline constexpr std::size_t kRestoreJournalSize = 76;
 // Where the header page's journal bytes end: one read at open covers the header and both.
@@ -83,9 +85,9 @@ struct RestoreJournal {
 // Encodes `journal` as one copy (kRestoreJournalSize bytes, its generation included).
 void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out);
 // The current journal of a store whose first `size` bytes are `page`: the copy with the
-// higher generation of those whose magic and checksum hold, else the legacy journal, else an
-// empty journal (a new store, or damaged bytes: the restore then behaves as without the
-// fallback).
+// higher generation of those whose magic and checksum hold, else the legacy journal of a store
+// whose copies were never written, else an empty journal (a new store, or both copies damaged:
+// the restore then behaves as without the fallback).
 RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size);
 
 }  // namespace symcr::detail

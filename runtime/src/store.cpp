@@ -119,17 +119,22 @@ struct Store::Impl {
   // Per slot, during save(): whether the crash-loop fallback may still restore it.
   std::vector<std::uint8_t> needed_by_fallback;
 
-  // Records `journal` in the header page, unless that is what the file already holds: into the
-  // copy not holding the current journal, so a write cut short leaves that one readable.
+  // Records `journal` in the header page, unless that is what the file already holds: into both
+  // copies, first the one not holding the current journal, so that a write cut short leaves a
+  // readable journal (the old or the new), and one copy damaged later leaves the current one.
   Status write_journal(int fd, Durability durability) {
     if (journal.same_state(recorded)) return Status();
     journal.generation = recorded.generation + 1;
     std::uint8_t bytes[detail::kRestoreJournalSize];
     detail::encode_restore_journal(journal, bytes);
-    Status status = detail::pwrite_all(
-        fd, bytes, sizeof bytes,
-        static_cast<off_t>(detail::kRestoreJournalOffsets[journal.generation % 2]),
-        path.c_str());
+    Status status;
+    for (const std::uint64_t copy : {journal.generation % 2, (journal.generation + 1) % 2}) {
+      if (status.ok()) {
+        status = detail::pwrite_all(
+            fd, bytes, sizeof bytes, static_cast<off_t>(detail::kRestoreJournalOffsets[copy]),
+            path.c_str());
+      }
+    }
     if (status.ok() && durability == Durability::Fdatasync &&
         detail::file_system().fdatasync(fd) != 0) {
       status = detail::io_error("cannot fdatasync", path.c_str(), errno);
@@ -392,13 +397,15 @@ struct Store::Impl {
     return Status();
   }
 
-  // Adds the journal the file holds to `copies` (encoded into `buffer`, kRestoreJournalSize
-  // bytes): the crash-loop fallback's memory, and the sequences it names, move with the store.
+  // Adds the journal the file holds to `copies`, both of them (encoded into `buffer`,
+  // kRestoreJournalSize bytes): the crash-loop fallback's memory, and the sequences it names,
+  // move with the store.
   void add_journal_copy(std::vector<Copy>& copies, std::uint8_t* buffer) const {
     if (recorded.empty()) return;
     detail::encode_restore_journal(recorded, buffer);
-    copies.push_back({detail::kRestoreJournalOffsets[recorded.generation % 2], buffer,
-                      detail::kRestoreJournalSize});
+    for (const std::uint64_t offset : detail::kRestoreJournalOffsets) {
+      copies.push_back({offset, buffer, detail::kRestoreJournalSize});
+    }
   }
 
   // Adopts `g` for a file just initialised with nothing in it but the journal.
@@ -960,6 +967,9 @@ Report Store::restore_latest(const RestoreOptions& options) {
     crash_depth = journal.fallbacks + 1;
     crashed = journal.count_crash(last_sequence_, impl.fallback_depth);
   }
+  // A restore of this run still unconfirmed: another one does not vouch for it (the state may
+  // still hold what it restored), so the older of the two is the one a crash is blamed on.
+  const std::uint64_t pending = impl.unconfirmed_is_ours ? journal.unconfirmed : 0;
   if (recording) journal.depth = impl.fallback_depth;
 
   std::vector<SkippedCheckpoint> skipped;
@@ -1002,7 +1012,7 @@ Report Store::restore_latest(const RestoreOptions& options) {
     if (recording) {
       // Recorded before the state is touched: a crash during or after the restore is seen by
       // the next start. A restore that cannot be recorded is not applied.
-      journal.unconfirmed = sequence;
+      journal.unconfirmed = pending != 0 ? std::min(pending, sequence) : sequence;
       status = impl.write_journal(fd_, options_.durability);
       if (!status.ok()) {
         detail::ReportAccess::set_status(report, status);
@@ -1016,7 +1026,7 @@ Report Store::restore_latest(const RestoreOptions& options) {
     const Error error = report.status().error();
     if (error != Error::Corrupt && error != Error::Truncated) {
       if (!report.ok() && recording) {
-        journal.unconfirmed = 0;  // nothing was applied: nothing to confirm
+        journal.unconfirmed = pending;  // nothing was applied: nothing new to confirm
         (void)impl.write_journal(fd_, options_.durability);
       }
       if (report.ok() && impl.fallback_depth > 0 && !recording) {
@@ -1049,8 +1059,8 @@ Report Store::restore_latest(const RestoreOptions& options) {
     // crash, what is left is given up on, so the checkpoints saved from the initial state are
     // the next ones restored (with the full depth again).
     if (crashed) journal.give_up(last_sequence_);
-    journal.unconfirmed = 0;
-    impl.unconfirmed_is_ours = false;
+    journal.unconfirmed = pending;
+    impl.unconfirmed_is_ours = pending != 0;
     status = impl.write_journal(fd_, options_.durability);
     if (!status.ok()) {
       detail::ReportAccess::set_status(report, status);

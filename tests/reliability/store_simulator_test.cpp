@@ -28,6 +28,7 @@
 #include "crc32c.hpp"
 #include "little_endian.hpp"
 #include "record.hpp"
+#include "restore_journal.hpp"
 #include "schema_tables.hpp"
 #include "simulated_file_system.hpp"
 #include "store_layout.hpp"
@@ -178,6 +179,9 @@ class Simulation {
         running_ = false;
         damage();
         start(/*may_change_geometry=*/false);
+      } else if (what < 95) {
+        log_ << "restore again\n";
+        restore(read_only_);  // after a soft fault, say: no sign of a crash
       } else {
         restart();
       }
@@ -298,8 +302,10 @@ class Simulation {
       // What the store numbers below: its records and the sequences its journal names.
       const std::uint64_t newest =
           std::max(disk.empty() ? 0 : disk.rbegin()->first, candidate.highest());
+      // A restore of this process still unconfirmed stays the one a crash is blamed on.
+      const std::uint64_t pending = restored_here_ ? m.unconfirmed : 0;
       bool found_crash = false;
-      if (recording && m.unconfirmed != 0) {
+      if (recording && !restored_here_ && m.unconfirmed != 0) {
         found_crash = true;
         for (const std::uint64_t sequence : ok_saves_)
           if (sequence >= m.unconfirmed) m.abandoned.insert(sequence);
@@ -315,11 +321,11 @@ class Simulation {
       }
       if (!expected) {
         if (found_crash) m.give_up(newest);
-        if (recording) m.unconfirmed = 0;
+        if (recording) m.unconfirmed = pending;
       } else if (recording) {
-        m.unconfirmed = *expected;
-        m.needed.insert(*expected);
-        std::uint64_t below = *expected;
+        m.unconfirmed = pending != 0 ? std::min(pending, *expected) : *expected;
+        m.needed.insert(m.unconfirmed);
+        std::uint64_t below = m.unconfirmed;
         for (std::uint32_t level = m.fallbacks; level < static_cast<std::uint32_t>(depth_);
              ++level) {
           std::optional<std::uint64_t> older;
@@ -363,7 +369,7 @@ class Simulation {
     }
     if (report.ok() && report.sequence() != 0 && !report.skipped().empty()) ++counts_.fallbacks;
     // A restore recorded by this process is the one its confirm() vouches for.
-    restored_here_ = report.ok() && depth_ > 0 && !read_only;
+    if (report.ok() && depth_ > 0 && !read_only) restored_here_ = true;
     models_ = std::move(next);
   }
 
@@ -460,9 +466,22 @@ class Simulation {
     }
   }
 
-  // A byte of a slot is damaged from outside: the checkpoint there, if any, is gone.
+  // A byte of a slot is damaged from outside: the checkpoint there, if any, is gone. Or a byte
+  // of one journal copy, while both hold the current journal: nothing is lost.
   void damage() {
     std::vector<std::uint8_t> file = fs_.contents(path_);
+    const std::uint64_t copy0 = symcr::detail::kRestoreJournalOffsets[0];
+    const std::uint64_t copy1 = symcr::detail::kRestoreJournalOffsets[1];
+    const std::size_t copy_size = symcr::detail::kRestoreJournalSize;
+    if (pick(0, 2) == 0 && file.size() >= copy1 + copy_size &&
+        std::equal(file.begin() + copy0, file.begin() + copy0 + copy_size, file.begin() + copy1)) {
+      const std::uint64_t at = (pick(0, 1) == 0 ? copy0 : copy1) +
+                               static_cast<std::uint64_t>(pick(0, static_cast<int>(copy_size) - 1));
+      file[at] ^= static_cast<std::uint8_t>(1u << pick(0, 7));
+      fs_.set_contents(path_, file);
+      log_ << "damage a journal copy\n";
+      return;
+    }
     symcr::detail::StoreGeometry g;
     if (!symcr::detail::decode_store_header(file.data(), file.size(), "store", g).ok()) return;
     const std::uint32_t slot = static_cast<std::uint32_t>(pick(0, static_cast<int>(g.slot_count) - 1));

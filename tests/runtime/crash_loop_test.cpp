@@ -7,13 +7,16 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
 
+#include "crc32c.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
+#include "little_endian.hpp"
 #include "restore_journal.hpp"
 #include "store_fixture.hpp"
 #include "symcr/symcr.hpp"
@@ -435,19 +438,70 @@ TEST_F(CrashLoopTest, AReadOnlyStoreHonoursTheSuspicionsButRecordsNothing) {
   EXPECT_EQ(read_file(path), before);
 }
 
-TEST_F(CrashLoopTest, ADamagedJournalCopyGivesWayToTheOtherCopy) {
+// Both copies hold the current journal: one damaged later leaves it in the other (a stale
+// journal there would blame good checkpoints on a crash).
+TEST_F(CrashLoopTest, OneDamagedJournalCopyLeavesTheCurrentJournal) {
   save_seeds(1, 4);
   start_and_crash();  // journal: 4 unconfirmed
-  start_and_crash();  // journal: 4 suspect, 3 unconfirmed (the other copy)
+  start_and_crash();  // journal: 4 suspect, 3 unconfirmed
   ASSERT_EQ(journal().unconfirmed, 3u);
+  for (const std::uint64_t damaged : symcr::detail::kRestoreJournalOffsets) {
+    std::vector<std::uint8_t> bytes = read_file(path);
+    bytes[damaged + 16] ^= 0x01;  // that copy's unconfirmed sequence
+    write_file(path, bytes);
+    EXPECT_EQ(journal().unconfirmed, 3u) << "copy at " << damaged;
+    EXPECT_EQ(journal().suspect_low, 4u);
+    bytes[damaged + 16] ^= 0x01;
+    write_file(path, bytes);
+  }
   std::vector<std::uint8_t> bytes = read_file(path);
-  bytes[journal_offset() + 16] ^= 0x01;  // the current copy's unconfirmed sequence
+  bytes[journal_offset() + 16] ^= 0x01;
   write_file(path, bytes);
-  // The previous copy says 4 was restored and not confirmed: 4 is passed over.
-  EXPECT_EQ(journal().unconfirmed, 4u);
+  const symcr::Report report = start_and_crash();  // 3 crashed too
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 2u);
+}
+
+// A store written by an earlier version kept its single journal at 64; once this version wrote
+// its copies, that one is stale and never read again, even with both copies damaged.
+TEST_F(CrashLoopTest, TheEarlierVersionsJournalCountsOnlyUntilTheCopiesAreWritten) {
+  save_seeds(1, 4);
+  std::vector<std::uint8_t> bytes = read_file(path);
+  std::uint8_t legacy[48] = {'S', 'Y', 'M', 'C', 'R', 'J', 'N', 'L'};
+  symcr::detail::le::store64(legacy + 8, 4);  // 4 restored, never confirmed
+  symcr::detail::le::store32(legacy + 44, symcr::detail::crc32c(legacy, 44));
+  std::copy(legacy, legacy + sizeof legacy, bytes.begin() + 64);
+  write_file(path, bytes);
+  ASSERT_EQ(journal().unconfirmed, 4u) << "the earlier version's journal is read";
+  ASSERT_EQ(start_and_confirm().sequence(), 3u);  // 4 passed over, as that journal says
+  bytes = read_file(path);
+  for (const std::uint64_t copy : symcr::detail::kRestoreJournalOffsets) bytes[copy + 20] ^= 1;
+  write_file(path, bytes);
+  EXPECT_TRUE(journal().empty()) << "both copies damaged: no journal, not the stale one";
+}
+
+// A second restore in one run (the program restores again after a soft fault) does not vouch
+// for the first: a crash is still blamed on the older restore, so the fallback goes below it.
+TEST_F(CrashLoopTest, ASecondRestoreInOneRunKeepsTheFirstUnconfirmed) {
+  options.fallback_depth = 3;
+  options.slots = 6;
+  save_seeds(1, 3);
+  {
+    symcr::Store store;
+    open(store);
+    ASSERT_EQ(store.restore_latest().sequence(), 3u);
+    fill_a(40);
+    ASSERT_TRUE(store.save().ok());  // 4
+    ASSERT_EQ(store.restore_latest().sequence(), 4u);
+    EXPECT_EQ(journal().unconfirmed, 3u);
+    fill_a(50);
+    ASSERT_TRUE(store.save().ok());  // 5
+  }  // crash
   const symcr::Report report = start_and_crash();
   ASSERT_TRUE(report.ok()) << report.status().message();
-  EXPECT_EQ(report.sequence(), 3u);
+  EXPECT_EQ(report.sequence(), 2u);
+  EXPECT_EQ(skipped_sequences(report), (std::vector<std::uint64_t>{5, 4, 3}));
+  EXPECT_EQ(start_and_crash().sequence(), 1u);
 }
 
 TEST_F(CrashLoopTest, ADamagedJournalIsIgnored) {
