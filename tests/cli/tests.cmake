@@ -269,7 +269,7 @@ symcr_cli_test(inspect_unconfirmed_store EXIT 0 ARGS inspect ${files}/unconfirme
   EXPECT "restore_journal +restore of #6 unconfirmed. fallback depth 3\n"
          "next_start +counts the unconfirmed restore of #6 as a crash: suspect #6 \\(1 fallback\\)"
          "restore_latest +slot 0 \\(sequence 5\\)"
-         "\n1 +valid +6 .*the last start restored it and never confirmed"
+         "\n1 +valid +6 .*the last start restored it and stopped before Store::confirm\\(\\)"
          "\n0 +valid +5 .*<- shown" "copter.ticks += 1005\n")
 symcr_cli_test(verify_unconfirmed_store EXIT 0 ARGS verify ${files}/unconfirmed.store
   EXPECT "restore_latest +slot 0 \\(sequence 5\\)" "\nvalid\n")
