@@ -2,8 +2,9 @@
 // has are listed as removed (only in a) or added (only in b), so checkpoints of different
 // builds compare meaningfully; values compare by their rendering, so an int32 42 equals an
 // int64 42 and floats compare exactly.
+#include <algorithm>
+#include <functional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "checkpoint_source.hpp"
@@ -19,10 +20,12 @@ namespace {
 
 enum class Change { Changed, Removed, Added };
 
+constexpr std::size_t kAbsent = static_cast<std::size_t>(-1);
+
 struct Difference {
   Change change;
-  const Value* a;  // null when added
-  const Value* b;  // null when removed
+  std::size_t a;  // leaf of a; kAbsent when added
+  std::size_t b;  // leaf of b; kAbsent when removed
 };
 
 const char* change_name(Change change) {
@@ -34,24 +37,76 @@ const char* change_name(Change change) {
   return "?";
 }
 
-std::vector<Difference> compare(const std::vector<Value>& a, const std::vector<Value>& b) {
-  std::unordered_map<std::string, const Value*> in_b;
-  for (const Value& value : b) in_b.emplace(value.path, &value);
-  std::unordered_map<std::string, const Value*> in_a;
+// A listing's leaves by path without holding the paths: their hashes, sorted, each match
+// confirmed by rendering the path. Of several leaves with one path the first counts.
+class PathIndex {
+ public:
+  explicit PathIndex(const ValueListing& listing) : listing_(listing) {
+    entries_.reserve(listing.size());
+    for (std::size_t leaf = 0; leaf < listing.size(); ++leaf) {
+      entries_.push_back({hash(listing.path(leaf)), leaf});
+    }
+    std::sort(entries_.begin(), entries_.end());
+  }
+
+  std::size_t find(const std::string& path) const {
+    const std::uint64_t h = hash(path);
+    for (auto it = std::lower_bound(entries_.begin(), entries_.end(), Entry{h, 0});
+         it != entries_.end() && it->hash == h; ++it) {
+      if (listing_.path(it->leaf) == path) return it->leaf;
+    }
+    return kAbsent;
+  }
+
+ private:
+  struct Entry {
+    std::uint64_t hash;
+    std::size_t leaf;
+    bool operator<(const Entry& other) const {
+      return hash != other.hash ? hash < other.hash : leaf < other.leaf;
+    }
+  };
+  static std::uint64_t hash(const std::string& path) { return std::hash<std::string>()(path); }
+
+  const ValueListing& listing_;
+  std::vector<Entry> entries_;
+};
+
+std::vector<Difference> compare(const ValueListing& a, const ValueListing& b) {
+  const PathIndex in_a(a), in_b(b);
   std::vector<Difference> differences;
-  for (const Value& value : a) {
-    in_a.emplace(value.path, &value);
-    const auto found = in_b.find(value.path);
-    if (found == in_b.end()) {
-      differences.push_back({Change::Removed, &value, nullptr});
-    } else if (found->second->text != value.text) {
-      differences.push_back({Change::Changed, &value, found->second});
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const std::size_t j = in_b.find(a.path(i));
+    if (j == kAbsent) {
+      differences.push_back({Change::Removed, i, kAbsent});
+    } else if (a.text(i) != b.text(j)) {
+      differences.push_back({Change::Changed, i, j});
     }
   }
-  for (const Value& value : b) {
-    if (in_a.find(value.path) == in_a.end()) differences.push_back({Change::Added, nullptr, &value});
+  for (std::size_t j = 0; j < b.size(); ++j) {
+    if (in_a.find(b.path(j)) == kAbsent) differences.push_back({Change::Added, kAbsent, j});
   }
   return differences;
+}
+
+// The table's columns: change mark, path, a, b, and for a changed type a note.
+constexpr std::size_t kDiffColumnCaps[] = {0, 60, 30, 30};
+
+std::vector<Table::Cell> difference_row(const Difference& d, const ValueListing& a,
+                                        const ValueListing& b) {
+  switch (d.change) {
+    case Change::Changed: {
+      const Value va = a.value(d.a), vb = b.value(d.b);
+      std::string note;
+      if (va.type != vb.type) note = "(" + va.type + " -> " + vb.type + ")";
+      return {{"~", Colour::Yellow}, {va.path}, {va.text}, {vb.text}, {note}};
+    }
+    case Change::Removed:
+      return {{"-", Colour::Red}, {a.path(d.a)}, {a.text(d.a)}, {"(absent)", Colour::Dim}};
+    case Change::Added:
+      return {{"+", Colour::Green}, {b.path(d.b)}, {"(absent)", Colour::Dim}, {b.text(d.b)}};
+  }
+  return {};
 }
 
 std::string describe(const LoadedCheckpoint& c) {
@@ -63,10 +118,11 @@ std::string describe(const LoadedCheckpoint& c) {
 }
 
 bool load(const std::string& path, std::optional<std::uint32_t> slot, LoadedCheckpoint& out,
-          std::vector<Value>& values) {
+          ValueListing& values) {
   Status status = load_checkpoint(path, slot, out);
   if (status.ok()) {
-    status = decode_values(*out.writer, out.record.payload, out.record.payload_size, values);
+    status = values.decode(*out.writer, out.record.payload, out.record.payload_size);
+    if (!status.ok()) status = Status(status.error(), "%s: %s", path.c_str(), status.message());
   }
   if (!status.ok()) print_error(status.message());
   return status.ok();
@@ -76,7 +132,7 @@ bool load(const std::string& path, std::optional<std::uint32_t> slot, LoadedChec
 
 int run_diff(const DiffArgs& args) {
   LoadedCheckpoint a, b;
-  std::vector<Value> values_a, values_b;
+  ValueListing values_a, values_b;
   if (!load(args.a, args.slot_a, a, values_a) || !load(args.b, args.slot_b, b, values_b)) {
     return kExitError;
   }
@@ -95,17 +151,18 @@ int run_diff(const DiffArgs& args) {
     json.key_begin("differences");
     json.array_begin();
     for (const Difference& d : differences) {
-      const Value& any = d.a ? *d.a : *d.b;
       json.object_begin();
-      json.field("path", any.path);
+      json.field("path", d.a != kAbsent ? values_a.path(d.a) : values_b.path(d.b));
       json.field("change", change_name(d.change));
-      if (d.a) {
-        json.field("a", d.a->json);
-        json.field("type_a", d.a->type);
+      if (d.a != kAbsent) {
+        const Value value = values_a.value(d.a);
+        json.field("a", value.json);
+        json.field("type_a", value.type);
       }
-      if (d.b) {
-        json.field("b", d.b->json);
-        json.field("type_b", d.b->type);
+      if (d.b != kAbsent) {
+        const Value value = values_b.value(d.b);
+        json.field("b", value.json);
+        json.field("type_b", value.type);
       }
       json.object_end();
     }
@@ -117,30 +174,28 @@ int run_diff(const DiffArgs& args) {
 
   const Terminal terminal = Terminal::for_stdout();
   print("a  " + describe(a) + "\nb  " + describe(b) + "\n\n");
-  Table table;
-  table.cap_column(1, 60);
-  table.cap_column(2, 30);
-  table.cap_column(3, 30);
-  if (!differences.empty()) {
-    table.add({{" "}, {"path", Colour::Bold}, {"a", Colour::Bold}, {"b", Colour::Bold}});
-  }
-  for (const Difference& d : differences) {
-    switch (d.change) {
-      case Change::Changed: {
-        std::string note;
-        if (d.a->type != d.b->type) note = "(" + d.a->type + " -> " + d.b->type + ")";
-        table.add({{"~", Colour::Yellow}, {d.a->path}, {d.a->text}, {d.b->text}, {note}});
-        break;
-      }
-      case Change::Removed:
-        table.add({{"-", Colour::Red}, {d.a->path}, {d.a->text}, {"(absent)", Colour::Dim}});
-        break;
-      case Change::Added:
-        table.add({{"+", Colour::Green}, {d.b->path}, {"(absent)", Colour::Dim}, {d.b->text}});
-        break;
+  // Widths first, then a row at a time: the differences are never held rendered.
+  const std::vector<Table::Cell> heading = {
+      {" "}, {"path", Colour::Bold}, {"a", Colour::Bold}, {"b", Colour::Bold}};
+  std::size_t widths[4] = {};
+  auto measure = [&widths](const std::vector<Table::Cell>& row) {
+    for (std::size_t c = 0; c < 4 && c < row.size(); ++c) {
+      widths[c] = std::max(widths[c], Table::cell_width(row[c].text, kDiffColumnCaps[c]));
     }
-  }
-  print(table.render(terminal));
+  };
+  auto print_row = [&](const std::vector<Table::Cell>& row) {
+    Table table;
+    for (std::size_t c = 0; c < 4; ++c) {
+      table.cap_column(c, kDiffColumnCaps[c]);
+      table.pad_column(c, widths[c]);
+    }
+    table.add(row);
+    print(table.render(terminal));
+  };
+  if (!differences.empty()) measure(heading);
+  for (const Difference& d : differences) measure(difference_row(d, values_a, values_b));
+  if (!differences.empty()) print_row(heading);
+  for (const Difference& d : differences) print_row(difference_row(d, values_a, values_b));
   if (differences.empty()) {
     print("no differences (" + std::to_string(values_a.size()) + " values)\n");
     return kExitOk;

@@ -78,8 +78,8 @@ int inspect_record(const InspectArgs& args) {
     return kExitError;
   }
   if (file.record.payload_size == 0) return inspect_schema_file(args, file);
-  std::vector<Value> values;
-  status = decode_values(*file.writer, file.record.payload, file.record.payload_size, values);
+  ValueListing values;
+  status = values.decode(*file.writer, file.record.payload, file.record.payload_size);
   if (!status.ok()) {
     print_error(args.path + ": " + status.message());
     return kExitError;
@@ -118,7 +118,8 @@ int inspect_store(const InspectArgs& args) {
   std::optional<std::uint32_t> selected = args.slot ? args.slot : survey.restore_latest_slot;
 
   std::string failure;
-  std::vector<Value> values;
+  std::vector<std::uint8_t> bytes;  // the selected record, which `values` points into
+  ValueListing values;
   std::vector<HeaderField> fields;
   if (!selected) {
     failure = args.path + ": " + survey.nothing_restored;
@@ -131,12 +132,11 @@ int inspect_store(const InspectArgs& args) {
         args.path + ": slot " + std::to_string(*selected) + " is " + survey.slots[*selected].state +
         (survey.slots[*selected].problem.empty() ? "" : ": " + survey.slots[*selected].problem);
   } else {
-    std::vector<std::uint8_t> bytes;
     detail::RecordView view;
     int area = -1;
     status = store.read_record(*selected, bytes, view, area);
     const Schema* writer = area >= 0 ? &store.area(area).schema() : nullptr;
-    if (status.ok()) status = decode_values(*writer, view.payload, view.payload_size, values);
+    if (status.ok()) status = values.decode(*writer, view.payload, view.payload_size);
     if (status.ok()) {
       fields = describe_header(view.header, writer, "store area " + std::to_string(area));
     } else {

@@ -60,12 +60,22 @@ void Table::cap_column(std::size_t column, std::size_t cap) {
   caps_[column] = cap;
 }
 
+void Table::pad_column(std::size_t column, std::size_t width) {
+  if (pads_.size() <= column) pads_.resize(column + 1, 0);
+  pads_[column] = width;
+}
+
+std::size_t Table::cell_width(const std::string& text, std::size_t cap) {
+  const std::size_t width = display_width(printable(text));
+  return cap != 0 ? std::min(width, cap) : width;
+}
+
 std::string Table::render(const Terminal& terminal, const char* separator) const {
   std::vector<std::vector<Cell>> rows = rows_;
   for (auto& row : rows) {
     for (Cell& cell : row) cell.text = printable(cell.text);
   }
-  std::vector<std::size_t> widths;
+  std::vector<std::size_t> widths = pads_;
   for (const auto& row : rows) {
     if (widths.size() < row.size()) widths.resize(row.size(), 0);
     for (std::size_t c = 0; c < row.size(); ++c) {

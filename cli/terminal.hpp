@@ -32,12 +32,18 @@ class Table {
   };
   void add(std::vector<Cell> row) { rows_.push_back(std::move(row)); }
   void cap_column(std::size_t column, std::size_t cap);
+  // Pads `column` to at least `width` (display width of the printable text, capped): for a
+  // long table printed a row at a time, its widths measured beforehand.
+  void pad_column(std::size_t column, std::size_t width);
+  // The width `text` takes in a column capped at `cap` (0: uncapped).
+  static std::size_t cell_width(const std::string& text, std::size_t cap);
   std::string render(const Terminal& terminal, const char* separator = "  ") const;
   bool empty() const { return rows_.empty(); }
 
  private:
   std::vector<std::vector<Cell>> rows_;
   std::vector<std::size_t> caps_;
+  std::vector<std::size_t> pads_;
 };
 
 // `text` safe to print on a terminal: names and strings come from untrusted files, so control

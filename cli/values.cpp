@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <unordered_map>
 
 #include "engine.hpp"
 
@@ -134,110 +135,209 @@ std::string quoted(const std::string& text) {
   return out + "\"";
 }
 
-class Collector : public detail::ValueVisitor {
- public:
-  Collector(const Schema& writer, std::vector<Value>* out) : writer_(writer), out_(out) {}
+bool underlying_is_signed(const Schema& writer, const TypeInfo& type) {
+  return type.element < writer.type_count && writer.types[type.element].kind == Kind::Int;
+}
 
-  void leaf(const char* path, const TypeInfo& type, const std::uint8_t* bytes, std::size_t size,
-            const char* text) override {
-    if (!out_) return;
-    Value value;
-    value.path = path;
-    value.type = type.name ? type.name : "?";
-    render(type, bytes, size, text, value);
-    out_->push_back(std::move(value));
-  }
-
- private:
-  bool underlying_is_signed(const TypeInfo& type) const {
-    return type.element < writer_.type_count && writer_.types[type.element].kind == Kind::Int;
-  }
-
-  void render(const TypeInfo& type, const std::uint8_t* bytes, std::size_t size,
-              const char* text, Value& out) const {
-    char number[32];
-    switch (type.kind) {
-      case Kind::Bool:
-        out.text = bytes[0] ? "true" : "false";
-        out.json = JsonScalar::of(bytes[0] != 0);
-        return;
-      case Kind::Int: {
-        const std::int64_t v = load_signed(bytes, size);
-        std::snprintf(number, sizeof number, "%" PRId64, v);
-        out.text = number;
-        out.json = JsonScalar::of_int(v);
-        return;
-      }
-      case Kind::UInt: {
-        const std::uint64_t v = load_unsigned(bytes, size);
-        std::snprintf(number, sizeof number, "%" PRIu64, v);
-        out.text = number;
-        out.json = JsonScalar::of_uint(v);
-        return;
-      }
-      case Kind::Float:
-        render_float(type, bytes, out);
-        return;
-      case Kind::Enum: {
-        const bool is_signed = underlying_is_signed(type);
-        const std::int64_t v = is_signed ? load_signed(bytes, size)
-                                         : static_cast<std::int64_t>(load_unsigned(bytes, size));
-        for (std::uint32_t e = 0; e < type.enumerator_count; ++e) {
-          if (type.enumerators[e].value == v && type.enumerators[e].name) {
-            out.text = type.enumerators[e].name;
-            out.json = JsonScalar::of(out.text);
-            return;
-          }
+void render(const Schema& writer, const TypeInfo& type, const std::uint8_t* bytes,
+            std::size_t size, const char* text, Value& out) {
+  char number[32];
+  switch (type.kind) {
+    case Kind::Bool:
+      out.text = bytes[0] ? "true" : "false";
+      out.json = JsonScalar::of(bytes[0] != 0);
+      return;
+    case Kind::Int: {
+      const std::int64_t v = load_signed(bytes, size);
+      std::snprintf(number, sizeof number, "%" PRId64, v);
+      out.text = number;
+      out.json = JsonScalar::of_int(v);
+      return;
+    }
+    case Kind::UInt: {
+      const std::uint64_t v = load_unsigned(bytes, size);
+      std::snprintf(number, sizeof number, "%" PRIu64, v);
+      out.text = number;
+      out.json = JsonScalar::of_uint(v);
+      return;
+    }
+    case Kind::Float:
+      render_float(type, bytes, out);
+      return;
+    case Kind::Enum: {
+      const bool is_signed = underlying_is_signed(writer, type);
+      const std::int64_t v = is_signed ? load_signed(bytes, size)
+                                       : static_cast<std::int64_t>(load_unsigned(bytes, size));
+      for (std::uint32_t e = 0; e < type.enumerator_count; ++e) {
+        if (type.enumerators[e].value == v && type.enumerators[e].name) {
+          out.text = type.enumerators[e].name;
+          out.json = JsonScalar::of(out.text);
+          return;
         }
-        if (is_signed) std::snprintf(number, sizeof number, "%" PRId64, v);
-        else std::snprintf(number, sizeof number, "%" PRIu64, static_cast<std::uint64_t>(v));
-        out.text = std::string(number) + " (no enumerator)";
-        out.json = is_signed ? JsonScalar::of_int(v)
-                             : JsonScalar::of_uint(static_cast<std::uint64_t>(v));
-        return;
       }
-      case Kind::String: {
-        const std::uint32_t width =
-            type.element < writer_.type_count ? writer_.types[type.element].size : 1;
-        std::string contents = string_contents(bytes, size, width);
-        out.text = quoted(contents);
-        out.json = JsonScalar::of(std::move(contents));
-        return;
+      if (is_signed) std::snprintf(number, sizeof number, "%" PRId64, v);
+      else std::snprintf(number, sizeof number, "%" PRIu64, static_cast<std::uint64_t>(v));
+      out.text = std::string(number) + " (no enumerator)";
+      out.json = is_signed ? JsonScalar::of_int(v)
+                           : JsonScalar::of_uint(static_cast<std::uint64_t>(v));
+      return;
+    }
+    case Kind::String: {
+      const std::uint32_t width =
+          type.element < writer.type_count ? writer.types[type.element].size : 1;
+      std::string contents = string_contents(bytes, size, width);
+      out.text = quoted(contents);
+      out.json = JsonScalar::of(std::move(contents));
+      return;
+    }
+    case Kind::Pointer:
+    case Kind::SharedPtr:
+      out.text = text ? text : "?";
+      out.json = out.text == "null" ? JsonScalar::null() : JsonScalar::of(out.text);
+      return;
+    default: {  // Union and anything opaque: raw bytes as written
+      std::string hex = "0x";
+      for (std::size_t i = 0; i < size; ++i) {
+        std::snprintf(number, sizeof number, "%02x", bytes[i]);
+        hex += number;
       }
-      case Kind::Pointer:
-      case Kind::SharedPtr:
-        out.text = text ? text : "?";
-        out.json = out.text == "null" ? JsonScalar::null() : JsonScalar::of(out.text);
-        return;
-      default: {  // Union and anything opaque: raw bytes as written
-        std::string hex = "0x";
-        for (std::size_t i = 0; i < size; ++i) {
-          std::snprintf(number, sizeof number, "%02x", bytes[i]);
-          hex += number;
-        }
-        out.text = "bytes " + hex;
-        out.json = JsonScalar::of(hex);
-        return;
-      }
+      out.text = "bytes " + hex;
+      out.json = JsonScalar::of(hex);
+      return;
     }
   }
+}
 
-  const Schema& writer_;
-  std::vector<Value>* out_;
+// Counts the leaves only.
+class Counter : public detail::ValueVisitor {
+ public:
+  void leaf(const char*, const TypeInfo&, const std::uint8_t*, std::size_t, const char*) override {
+    ++count;
+  }
+  std::size_t count = 0;
 };
 
 }  // namespace
 
-Status decode_values(const Schema& writer, const std::uint8_t* payload, std::size_t size,
-                     std::vector<Value>& out) {
-  out.clear();
-  Collector collector(writer, &out);
-  return detail::visit_payload(writer, payload, size, collector);
+// Keeps each leaf with the frames of its path that no earlier leaf shares: the frames on the
+// walker's stack become nodes only when a leaf under them is kept.
+class Recorder : public detail::ValueVisitor {
+ public:
+  Recorder(ValueListing& listing, std::size_t budget) : listing_(listing), budget_(budget) {}
+
+  void enter(const detail::PathFrame& frame) override {
+    stack_.push_back({frame, ValueListing::kNoNode});
+  }
+  void leave() override {
+    stack_.pop_back();
+    if (kept_ > stack_.size()) kept_ = stack_.size();
+  }
+  void leaf(const char*, const TypeInfo& type, const std::uint8_t* bytes, std::size_t size,
+            const char* text) override {
+    if (too_large) return;
+    for (; kept_ < stack_.size(); ++kept_) {
+      const std::uint32_t parent = kept_ == 0 ? ValueListing::kNoNode : stack_[kept_ - 1].node;
+      stack_[kept_].node = static_cast<std::uint32_t>(listing_.nodes_.size());
+      listing_.nodes_.push_back({stack_[kept_].frame, parent});
+    }
+    std::uint32_t target = ValueListing::kNoTarget;
+    if (text) {
+      // The walker renders each reference's target once and hands out the same text.
+      const auto found = targets_.find(text);
+      if (found != targets_.end()) {
+        target = found->second;
+      } else {
+        target = static_cast<std::uint32_t>(listing_.targets_.size());
+        listing_.targets_.emplace_back(text);
+        targets_.emplace(text, target);
+        used_ += listing_.targets_.back().size() + sizeof(std::string) + 2 * sizeof(void*);
+      }
+    }
+    listing_.leaves_.push_back({&type, bytes, size,
+                                stack_.empty() ? ValueListing::kNoNode : stack_.back().node,
+                                target});
+    used_ += sizeof(ValueListing::Leaf);
+    too_large = used_ + listing_.nodes_.size() * sizeof(ValueListing::Node) > budget_;
+  }
+
+  bool too_large = false;
+
+ private:
+  struct Open {
+    detail::PathFrame frame;
+    std::uint32_t node;
+  };
+  ValueListing& listing_;
+  const std::size_t budget_;
+  std::size_t used_ = 0;
+  std::vector<Open> stack_;
+  std::size_t kept_ = 0;  // stack_[0, kept_) are nodes already
+  std::unordered_map<const char*, std::uint32_t> targets_;
+};
+
+std::size_t listing_budget(std::size_t payload_size) {
+  constexpr std::size_t kFloor = std::size_t{64} << 20;
+  constexpr std::size_t kPerPayloadByte = 128;
+  return payload_size > kFloor / kPerPayloadByte ? payload_size * kPerPayloadByte : kFloor;
 }
 
-Status check_payload(const Schema& writer, const std::uint8_t* payload, std::size_t size) {
-  Collector discard(writer, nullptr);
-  return detail::visit_payload(writer, payload, size, discard);
+Status ValueListing::decode(const Schema& writer, const std::uint8_t* payload, std::size_t size) {
+  writer_ = &writer;
+  nodes_.clear();
+  leaves_.clear();
+  targets_.clear();
+  const std::size_t budget = listing_budget(size);
+  Recorder recorder(*this, budget);
+  Status status = detail::visit_payload(writer, payload, size, recorder);
+  if (status.ok() && recorder.too_large) {
+    status = Status(Error::TooLarge,
+                    "listing the values would take more than %zu MiB (at most 128 bytes per "
+                    "byte of the %zu-byte payload, or 64 MiB)",
+                    budget >> 20, size);
+  }
+  if (!status.ok()) {
+    nodes_ = {};
+    leaves_ = {};
+    targets_ = {};
+  }
+  return status;
+}
+
+void ValueListing::append_path(std::uint32_t node, std::string& out) const {
+  // Iterative, not recursive: a path is as deep as the payload nests.
+  std::vector<std::uint32_t> chain;
+  for (; node != kNoNode; node = nodes_[node].parent) chain.push_back(node);
+  for (std::size_t i = chain.size(); i-- > 0;) detail::append_path(out, nodes_[chain[i]].frame);
+}
+
+std::string ValueListing::path(std::size_t leaf) const {
+  std::string out;
+  append_path(leaves_[leaf].node, out);
+  return out;
+}
+
+std::string ValueListing::text(std::size_t leaf) const {
+  const Leaf& l = leaves_[leaf];
+  Value value;
+  render(*writer_, *l.type, l.bytes, l.size, target_text(l), value);
+  return std::move(value.text);
+}
+
+Value ValueListing::value(std::size_t leaf) const {
+  const Leaf& l = leaves_[leaf];
+  Value value;
+  value.path = path(leaf);
+  value.type = l.type->name ? l.type->name : "?";
+  render(*writer_, *l.type, l.bytes, l.size, target_text(l), value);
+  return value;
+}
+
+Status check_payload(const Schema& writer, const std::uint8_t* payload, std::size_t size,
+                     std::size_t* leaf_count) {
+  Counter counter;
+  const Status status = detail::visit_payload(writer, payload, size, counter);
+  if (leaf_count) *leaf_count = counter.count;
+  return status;
 }
 
 }  // namespace symcr::cli

@@ -105,8 +105,13 @@ Report plan_payload(const Schema& writer, std::uint64_t writer_hash, const std::
 
 // Decodes a payload against its writer schema without any reader, calling the visitor for each
 // scalar leaf with its symbolic path (for the CLI's inspect/diff). Returns the decode status.
+struct PathFrame;
 struct ValueVisitor {
   virtual ~ValueVisitor() = default;
+  // Around every nested value, in the pass that reports leaves: the path as a stack of frames
+  // (whose names are the schema's), for a visitor that keeps paths without copying them.
+  virtual void enter(const PathFrame& /*frame*/) {}
+  virtual void leave() {}
   // `path` like "copter.mission.items[3].lat"; `type` is the writer type of the leaf; `bytes`
   // the little-endian wire bytes (String: the characters; Pointer: textual target in `text`).
   virtual void leaf(const char* path, const TypeInfo& type, const std::uint8_t* bytes,

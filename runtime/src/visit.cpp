@@ -35,10 +35,12 @@ class Walker {
   void push(const PathFrame& frame) {
     marks_.push_back(path_.size());
     append_path(path_, frame);
+    if (emit_) visitor_.enter(frame);
   }
   void pop() {
     path_.resize(marks_.back());
     marks_.pop_back();
+    if (emit_) visitor_.leave();
   }
   void leaf(const TypeInfo& type, const std::uint8_t* bytes, std::size_t size) {
     if (emit_) visitor_.leaf(path_.c_str(), type, bytes, size, nullptr);
