@@ -3,8 +3,8 @@
 // page. A restored state can itself make the program crash again; the journal records which
 // checkpoint a start restored until the program confirms it, so that the next start can tell
 // an unconfirmed restore (a crash, or a stop, before the state proved itself) and pass over
-// that checkpoint and every one saved after it. Each write goes to two copies in turn, so a
-// write cut short leaves a readable journal, and so does a copy damaged later. Internal to the
+// that checkpoint and every one saved after it. Each write puts it in two copies, so a write
+// cut short leaves a readable journal, and so does a copy damaged later. Internal to the
 // runtime.
 #ifndef SYMCR_SRC_RESTORE_JOURNAL_HPP
 #define SYMCR_SRC_RESTORE_JOURNAL_HPP
@@ -14,8 +14,7 @@
 
 namespace symcr::detail {
 
-// The two copies, in the store's header page; generation g is written to copy g % 2 first,
-// then to the other.
+// The two copies, in the store's header page (its first sector), written together.
 inline constexpr std::uint64_t kRestoreJournalOffsets[2] = {128, 256};
 inline constexpr std::size_t kRestoreJournalSize = 76;
 // Where the header page's journal bytes end: one read at open covers the header and both.

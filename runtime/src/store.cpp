@@ -119,22 +119,20 @@ struct Store::Impl {
   // Per slot, during save(): whether the crash-loop fallback may still restore it.
   std::vector<std::uint8_t> needed_by_fallback;
 
-  // Records `journal` in the header page, unless that is what the file already holds: into both
-  // copies, first the one not holding the current journal, so that a write cut short leaves a
-  // readable journal (the old or the new), and one copy damaged later leaves the current one.
+  // Records `journal` in the header page, unless that is what the file already holds: in both
+  // copies, with one write (both lie in the file's first sector). Cut short, in address order,
+  // that write leaves one copy of the previous journal or of the new one; and one copy damaged
+  // later leaves the current journal in the other.
   Status write_journal(int fd, Durability durability) {
     if (journal.same_state(recorded)) return Status();
     journal.generation = recorded.generation + 1;
-    std::uint8_t bytes[detail::kRestoreJournalSize];
-    detail::encode_restore_journal(journal, bytes);
-    Status status;
-    for (const std::uint64_t copy : {journal.generation % 2, (journal.generation + 1) % 2}) {
-      if (status.ok()) {
-        status = detail::pwrite_all(
-            fd, bytes, sizeof bytes, static_cast<off_t>(detail::kRestoreJournalOffsets[copy]),
-            path.c_str());
-      }
+    constexpr std::uint64_t kFirst = detail::kRestoreJournalOffsets[0];
+    std::uint8_t bytes[detail::kRestoreJournalEnd - kFirst] = {};
+    for (const std::uint64_t copy : detail::kRestoreJournalOffsets) {
+      detail::encode_restore_journal(journal, bytes + (copy - kFirst));
     }
+    Status status = detail::pwrite_all(fd, bytes, sizeof bytes, static_cast<off_t>(kFirst),
+                                       path.c_str());
     if (status.ok() && durability == Durability::Fdatasync &&
         detail::file_system().fdatasync(fd) != 0) {
       status = detail::io_error("cannot fdatasync", path.c_str(), errno);
