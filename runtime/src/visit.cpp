@@ -2,6 +2,7 @@
 // scalar leaf is reported with its concrete path and wire bytes; pointers with a textual
 // target. Two walks along the grammar (payload_grammar.hpp): the first finds the reference
 // table (which follows the values) and the paths of containers, the second reports the leaves.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,7 @@ class Walker {
 
   Status run() {
     emit_ = false;
-    if (!walk_objects() || !read_references() || !in_.finish()) return error_;
+    if (!walk_objects() || !error_.ok() || !read_references() || !in_.finish()) return error_;
     emit_ = true;
     walk_objects();
     return error_;
@@ -34,7 +35,10 @@ class Walker {
   // ---- the sink of walk_value --------------------------------------------------------------
   void push(const PathFrame& frame) {
     marks_.push_back(path_.size());
-    append_path(path_, frame);
+    if (!over_budget_) {
+      append_path(path_, frame);
+      kept(0);  // the path itself counts
+    }
     if (emit_) visitor_.enter(frame);
   }
   void pop() {
@@ -56,7 +60,7 @@ class Walker {
     visitor_.leaf(path_.c_str(), type, code_bytes, 4, text);
   }
   void container(const TypeInfo& type, std::uint32_t count) {
-    if (emit_) return;
+    if (emit_ || !kept(path_.size())) return;
     containers_.push_back(Container{path_, count, type.element});
   }
 
@@ -66,6 +70,22 @@ class Walker {
     std::uint32_t count;
     std::uint32_t element_type;
   };
+
+  // The paths kept for containers (references may name their elements), the references' texts
+  // and the current path are text the file's names drive: bounded by the input (names of up to
+  // 64 KiB over many containers would otherwise take gigabytes), refused past the bound.
+  bool kept(std::size_t more) {
+    kept_bytes_ += more;
+    if (!over_budget_ && kept_bytes_ + path_.size() <= text_budget_) return true;
+    if (!over_budget_ && error_.ok()) {
+      error_ = Status(Error::TooLarge,
+                      "the payload's paths would take more than %zu bytes of text (the bound for "
+                      "a payload of %zu bytes)",
+                      text_budget_, size_);
+    }
+    over_budget_ = true;
+    return false;
+  }
 
   bool walk_objects() {
     in_.start(payload_, size_);
@@ -132,6 +152,7 @@ class Walker {
       };
       Reference ref;
       if (!in_.reference(i, ref, object_type, element_type, on_step)) return false;
+      if (!kept(text.size())) return false;
       targets_.push_back("-> " + text);
     }
     return true;
@@ -145,6 +166,9 @@ class Walker {
   std::size_t size_;
   ValueVisitor& visitor_;
   bool emit_ = false;
+  const std::size_t text_budget_ = std::max<std::size_t>(std::size_t{64} << 20, 64 * size_);
+  std::size_t kept_bytes_ = 0;
+  bool over_budget_ = false;
   std::string path_;
   std::vector<std::size_t> marks_;
   std::vector<std::uint32_t> heap_types_;

@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "schema_tables.hpp"
+#include "symcr/ops.hpp"
 #include "symcr/symcr.hpp"
 
 namespace {
@@ -140,6 +141,43 @@ TEST(CliListingAllocation, AListingBeyondItsBoundIsRefusedCleanly) {
   // verify keeps no listing: it decodes and counts every leaf.
   const Outcome verified = run_cli_limited({"verify", file}, file);
   EXPECT_EQ(verified.exit_code, 0) << verified.error_output;
+  std::remove(file.c_str());
+  std::remove((file + ".stderr").c_str());
+}
+
+// The decoder keeps each container's path (a reference may name its elements): a 60 KB field
+// name over 100,000 small containers once made that 6 GB. Past the bound the commands refuse
+// (TooLarge), never abort.
+std::vector<std::vector<std::uint8_t>> many_containers(100000);
+
+TEST(CliListingAllocation, LongNamesOverManyContainersAreBoundedToo) {
+  static const FieldInfo holder_fields[] = {field(long_name.c_str(), 2, 0)};
+  static const TypeInfo types[] = {
+      scalar("uint8", Kind::UInt, 1),
+      holder("std::vector<uint8>", Kind::Container, sizeof(std::vector<std::uint8_t>),
+             alignof(std::vector<std::uint8_t>), 0,
+             &symcr::ops::container<std::vector<std::uint8_t>>::table),
+      holder("std::vector<std::vector<uint8>>", Kind::Container, sizeof(many_containers),
+             alignof(decltype(many_containers)), 1,
+             &symcr::ops::container<std::vector<std::vector<std::uint8_t>>>::table),
+      record("Holder", sizeof(many_containers), alignof(decltype(many_containers)),
+             holder_fields, 1),
+  };
+  static const symcr::RootInfo roots[] = {{"r", 3, &many_containers, 0, nullptr}};
+  static const symcr::Schema schema{types, 4, roots, 1, nullptr};
+
+  const std::string file = scratch_path("containers") + ".ckpt";
+  ASSERT_TRUE(symcr::checkpoint(schema, file.c_str()).ok());
+  for (const auto& command : std::vector<std::vector<std::string>>{
+           {"inspect", file}, {"inspect", "--json", file}, {"diff", file, file}, {"verify", file}}) {
+    const Outcome outcome = run_cli_limited(command, file);
+    EXPECT_GE(outcome.exit_code, 0) << command[0] << " was killed: " << outcome.error_output;
+    if (command[0] != "verify") {
+      EXPECT_EQ(outcome.exit_code, 2) << command[0] << ": " << outcome.error_output;
+      EXPECT_NE(outcome.error_output.find("paths would take more than"), std::string::npos)
+          << outcome.error_output;
+    }
+  }
   std::remove(file.c_str());
   std::remove((file + ".stderr").c_str());
 }
