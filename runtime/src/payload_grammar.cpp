@@ -88,14 +88,18 @@ __attribute__((cold)) WireSizes wire_sizes(const Schema& writer) {
   WireSizes sizes;
   SizeFacts facts(writer, sizes);
   for (std::uint32_t t = 0; t < writer.type_count; ++t) facts.compute(t);
-  std::uint32_t culprit = kNoType;
-  if (by_value_levels(writer, sizes.levels, culprit) != ByValueNesting::Ok) {
-    // Only a schema that was not parsed (a program's own) gets here: its values are refused.
-    for (std::uint32_t& level : sizes.levels) {
-      level = std::min<std::uint32_t>(level, kMaxValueNesting + 1);
-    }
-  }
+  sizes.levels = value_levels(writer);
   return sizes;
+}
+
+__attribute__((cold)) std::vector<std::uint32_t> value_levels(const Schema& writer) {
+  std::vector<std::uint32_t> levels;
+  std::uint32_t culprit = kNoType;
+  if (by_value_levels(writer, levels, culprit) != ByValueNesting::Ok) {
+    // Only a schema that was not parsed (a program's own) gets here: its values are refused.
+    for (std::uint32_t& level : levels) level = std::min<std::uint32_t>(level, kMaxValueNesting + 1);
+  }
+  return levels;
 }
 
 namespace {

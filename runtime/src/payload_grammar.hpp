@@ -42,6 +42,9 @@ struct WireSizes {
 };
 // For a parsed schema (whose types nest by value within the limit).
 WireSizes wire_sizes(const Schema& writer);
+// WireSizes::levels of `writer`: by_value_levels, each capped one past the limit (a program's
+// own schema is not parsed: a value of a type past it is refused when met).
+std::vector<std::uint32_t> value_levels(const Schema& writer);
 
 // Per type, the levels of values its values hold by value: 0 for a type that holds none, a
 // struct or union one more than its deepest field, an array or optional one more than its

@@ -201,7 +201,7 @@ __attribute__((cold)) SchemaFacts compute_schema_facts(const Schema& schema) {
   facts.flat_count.assign(schema.type_count, 0);
   facts.flat_wire_size.assign(schema.type_count, 0);
   facts.has_pointer_fields.assign(schema.type_count, false);
-  facts.nesting_levels = wire_sizes(schema).levels;
+  facts.nesting_levels = value_levels(schema);
   for (std::uint32_t t = 0; t < schema.type_count; ++t) {
     const TypeInfo& type = schema.types[t];
     if (type.kind != Kind::Struct) continue;
