@@ -20,7 +20,7 @@ function(expect_crashed name)
 endfunction()
 
 # A restored value that crashes the program: the next start restores the older checkpoint,
-# says which one it passed over and why, and runs; its confirmed restore is trusted again.
+# says which one it passed over and why, and runs; the checkpoints its confirmed run saved are restored next.
 file(REMOVE "${STORE}")
 start(save save 5)
 start(first run 5)
