@@ -20,6 +20,8 @@ Colour decision_colour(Decision decision) {
       return Colour::Yellow;
     case Decision::Rejected:
       return Colour::Red;
+    case Decision::Rebased:
+      return Colour::Cyan;
   }
   return Colour::None;
 }
@@ -49,7 +51,8 @@ void print_report_table(const Report& report) {
   print(table.render(terminal));
   std::string summary;
   for (const Decision decision : {Decision::Restored, Decision::Converted, Decision::Kept,
-                                  Decision::Dropped, Decision::Rejected}) {
+                                  Decision::Dropped, Decision::Rejected,
+                                  Decision::Rebased}) {
     if (!summary.empty()) summary += ", ";
     summary += std::to_string(report.count(decision)) + " " + decision_name(decision);
   }

@@ -119,6 +119,35 @@ void Diagnostics::flushUnrestorable() {
                        List + ")");
 }
 
+bool parseTimeArguments(const std::vector<std::string> &Arguments, TimeSpec &Out,
+                        std::string &Error) {
+  if (Arguments.empty() || Arguments.size() > 2 || Arguments[0].empty() ||
+      Arguments[0].find('=') != std::string::npos) {
+    Error = "a time names its clock, and optionally never=N: (millis) or (millis, never=0)";
+    return false;
+  }
+  Out.Clock = Arguments[0];
+  Out.Never = 0;
+  if (Arguments.size() == 2) {
+    llvm::StringRef Never(Arguments[1]);
+    Never = Never.trim();
+    if (!Never.consume_front("never=")) {
+      Error = "unexpected '" + Arguments[1] + "' in a time annotation (expected never=N)";
+      return false;
+    }
+    Never = Never.trim();
+    bool Negative = Never.consume_front("-");
+    unsigned long long Value = 0;
+    if (Never.getAsInteger(0, Value) || (Negative && Value > (1ull << 63))) {
+      Error = "never=" + Never.str() + " is not an integer";
+      return false;
+    }
+    Out.Never = Negative ? static_cast<std::int64_t>(0ull - Value)
+                         : static_cast<std::int64_t>(Value);
+  }
+  return true;
+}
+
 static bool directiveKindFromName(const std::string &Name,
                                   DirectiveKind &Kind) {
   if (Name == "checkpoint")
@@ -137,6 +166,10 @@ static bool directiveKindFromName(const std::string &Name,
     Kind = DirectiveKind::RestoreAt;
   else if (Name == "store")
     Kind = DirectiveKind::Store;
+  else if (Name == "clock")
+    Kind = DirectiveKind::Clock;
+  else if (Name == "time")
+    Kind = DirectiveKind::Time;
   else
     return false;
   return true;
@@ -203,7 +236,7 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
     Diags.error(At(NameBegin),
                 "unknown symcr directive '" + Name +
                     "' (expected checkpoint, skip, renamed, include, range, "
-                    "checkpoint_at, restore_at or store)");
+                    "checkpoint_at, restore_at, store, clock or time)");
     return false;
   }
   SkipSpace();
@@ -291,6 +324,27 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
     Diags.error(D.Where, "renamed(...) takes two arguments: the new name "
                          "(Type::field, Type or variable) and the old name");
     return false;
+  }
+  if (D.Kind == DirectiveKind::Clock &&
+      (D.Arguments.empty() || D.Arguments.size() > 2)) {
+    Diags.error(D.Where, "clock(...) takes the clock's reading function, or a name and the "
+                         "function: clock(millis) or clock(ms, AP_HAL::millis)");
+    return false;
+  }
+  if (D.Kind == DirectiveKind::Time) {
+    std::vector<std::string> Rest;
+    for (std::size_t A = 1; A < D.Arguments.size(); ++A)
+      Rest.push_back(D.Arguments[A].Text);
+    TimeSpec Spec;
+    std::string Error;
+    if (D.Arguments.size() < 2 || !parseTimeArguments(Rest, Spec, Error)) {
+      Diags.error(D.Where, Error.empty()
+                               ? "time(...) takes the member (Type::field) or typedef, the "
+                                 "clock, and optionally never=N: time(Vehicle::last_ms, "
+                                 "millis)"
+                               : Error);
+      return false;
+    }
   }
   if (D.Kind == DirectiveKind::Range) {
     if (D.Arguments.size() != 3) {

@@ -13,6 +13,7 @@
 
 #include "Model.h"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -33,7 +34,14 @@ enum class DirectiveKind {
   RestoreAt,    ///< restore_at(function, entry|exit [, on_failure=continue|stop] ...)
   Store,        ///< store(path [, slots=N] [, slot_size=N] [, durability=...]
                 ///< [, fallback_depth=N [, confirm_after=N]])
+  Clock,        ///< clock([name,] function): a clock and its reading function
+  Time,         ///< time(Type::field | typedef, clock [, never=N]): a time of a clock
 };
+
+/// Parses SYMCR_TIME's text ("millis" or "millis, never=0xFFFFFFFF"); false with \p Error
+/// set when it is malformed.
+bool parseTimeArguments(const std::vector<std::string> &Arguments, TimeSpec &Out,
+                        std::string &Error);
 
 struct DirectiveArgument {
   /// "Copter::mission", whitespace removed outside quotes; the quotes of a

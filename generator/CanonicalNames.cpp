@@ -332,6 +332,8 @@ std::string TypeWalker::fingerprint(const TypeModel &Model) const {
     if (Field.Flags & symcr::kFieldHasRange)
       F += "[" + std::to_string(Field.RangeMin) + "," +
            std::to_string(Field.RangeMax) + "]";
+    if (Field.Flags & symcr::kFieldClockTime)
+      F += "{time " + Field.Clock + " never " + std::to_string(Field.Never) + "}";
   }
   for (const auto &E : Model.Enumerators)
     F += "|" + E.first + "=" + std::to_string(E.second);

@@ -26,6 +26,9 @@ struct Location {
   unsigned Line = 0;
   unsigned Column = 0;
   bool valid() const { return !File.empty(); }
+  std::string str() const {
+    return File + ":" + std::to_string(Line) + ":" + std::to_string(Column);
+  }
 };
 
 /// A member on a selection's path, as diagnostics name it.
@@ -105,6 +108,9 @@ struct FieldModel {
   std::vector<std::string> RenamedFrom;
   double RangeMin = 0;
   double RangeMax = 0;
+  /// kFieldClockTime: the clock whose times the member holds, and its "no time yet" value.
+  std::string Clock;
+  std::int64_t Never = 0;
   /// Spelling of the member for an offsetof() check, or empty when the member
   /// is not checkable at compile time (private, bit-field,
   /// non-standard-layout).
@@ -231,6 +237,26 @@ struct PointStoreModel {
   Location Where; ///< invalid when no store directive was given
 };
 
+/// What time(...) or SYMCR_TIME(...) says of a member or typedef.
+struct TimeSpec {
+  std::string Clock;
+  std::int64_t Never = 0;
+  Location Where;
+};
+
+/// A clock(...) directive: a clock's name and the function that reads it.
+struct ClockModel {
+  std::string Name;     ///< as time(...) and SYMCR_TIME name it; in the schema
+  std::string Function; ///< as written, "AP_HAL::millis" (no leading ::)
+  Location Where;       ///< of the first directive naming it
+  /// The first TU that declares the function: its wrapper defines the reading thunk
+  /// `symcr_gen_clock_<index>`, which calls CallExpression.
+  int HomeTU = -1;
+  std::string CallExpression;
+  /// Its function returns an unsigned 64-bit count: the thunk converts it explicitly.
+  bool Unsigned64 = false;
+};
+
 /// A text edit of a source's copy (a point's call, an include made absolute).
 struct SourceEdit {
   unsigned Offset = 0; ///< in the source's text
@@ -295,6 +321,10 @@ struct ProgramModel {
   std::vector<PreviousPlanModel> PreviousPlans;
   /// Vtables (mangled names) of classes with a key function some parsed source defines.
   std::set<std::string> EmittedVtables;
+  /// Clocks, in the byte order of their names: a clock's index in the schema is its position.
+  std::vector<ClockModel> Clocks;
+  /// Time members by clock name: where the first one is, for "no such clock" diagnostics.
+  std::map<std::string, Location> ClockUses;
 };
 
 inline bool TypeModel::hasValidate(const ProgramModel &Program) const {

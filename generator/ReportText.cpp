@@ -80,6 +80,9 @@ std::string renderReport(const ProgramModel &Program) {
             OS << " " << Old;
           OS << ")";
         }
+        if (F.Flags & symcr::kFieldClockTime)
+          OS << " (time of clock " << F.Clock
+             << (F.Never ? ", never " + std::to_string(F.Never) : std::string()) << ")";
         OS << "\n";
       }
       for (const std::string &S : Type.Skipped)
@@ -104,6 +107,12 @@ std::string renderReport(const ProgramModel &Program) {
           OS << "    " << Program.Types[T].Name << "::" << Left.Name << ": " << Left.Why
              << "\n";
     }
+  }
+  if (!Program.Clocks.empty()) {
+    OS << "\nclocks (each checkpoint records their readings; a restore in another process "
+          "moves their times by their advance):\n";
+    for (const ClockModel &Clock : Program.Clocks)
+      OS << "  " << Clock.Name << ": read by " << Clock.CallExpression << "\n";
   }
   return OS.str();
 }

@@ -5,6 +5,8 @@
 //
 //===----------------------------------------------------------------------===//
 #include "SchemaBuilder.h"
+
+#include "Clocks.h"
 #include "NameIndex.h"
 #include "TypeWalker.h"
 
@@ -40,8 +42,11 @@ namespace symcr_gen {
 SchemaBuilder::SchemaBuilder(ProgramModel &Program, Diagnostics &Diags,
                              std::vector<Directive> SidecarDirectives)
     : Program(Program), Diags(Diags), Sidecar(std::move(SidecarDirectives)) {
-  for (const Directive &D : Sidecar)
+  for (const Directive &D : Sidecar) {
     SidecarMatched.emplace_back(D.Arguments.size(), false);
+    if (D.Kind == DirectiveKind::Clock)
+      declareClock(D, Program, Diags);
+  }
 }
 
 SchemaBuilder::~SchemaBuilder() = default;
@@ -332,18 +337,34 @@ void SchemaBuilder::addTranslationUnit(
       case DirectiveKind::Skip:
       case DirectiveKind::Include:
       case DirectiveKind::Range:
+      case DirectiveKind::Time:
       case DirectiveKind::Renamed: {
         if (D.Kind == DirectiveKind::Renamed && I == 1)
           continue; // the old name
-        if (D.Kind == DirectiveKind::Range && I >= 1)
-          continue; // the bounds
+        if ((D.Kind == DirectiveKind::Range || D.Kind == DirectiveKind::Time) && I >= 1)
+          continue; // the bounds; the clock and never value
         const std::string &Text = A.Text;
         std::vector<std::string> Keys;
         std::vector<const RecordDecl *> Records;
         std::string Reason = IsSidecar ? "skipped by the annotation file"
                                        : "skipped by '#pragma symcr skip'";
+        TimeSpec Time;
+        if (D.Kind == DirectiveKind::Time) {
+          std::vector<std::string> Rest;
+          std::string Ignored; // parseDirectiveText checked the arguments
+          for (std::size_t R = 1; R < D.Arguments.size(); ++R)
+            Rest.push_back(D.Arguments[R].Text);
+          parseTimeArguments(Rest, Time, Ignored);
+          Time.Where = D.Where;
+          // time(ms_t, millis): every member declared with the typedef.
+          if (Index.Typedefs.count(Text)) {
+            Found = true;
+            Select.TypedefTimes[Text] = Time;
+            break;
+          }
+        }
         if (D.Kind != DirectiveKind::Include &&
-            D.Kind != DirectiveKind::Range &&
+            D.Kind != DirectiveKind::Range && D.Kind != DirectiveKind::Time &&
             resolveTypeName(Index, Text, Keys, &Records, CanonicalName)) {
           Found = true;
           for (const std::string &K : Keys) {
@@ -368,6 +389,7 @@ void SchemaBuilder::addTranslationUnit(
               (D.Kind == DirectiveKind::Skip      ? "skip"
                : D.Kind == DirectiveKind::Include ? "include"
                : D.Kind == DirectiveKind::Range   ? "range"
+               : D.Kind == DirectiveKind::Time    ? "time"
                                                   : "renamed") +
               " directive");
           break;
@@ -405,6 +427,8 @@ void SchemaBuilder::addTranslationUnit(
             Select.SkippedFields[{K, Member}] = Reason;
           else if (D.Kind == DirectiveKind::Include)
             Select.IncludedFields.insert({K, Member});
+          else if (D.Kind == DirectiveKind::Time)
+            Select.FieldTimes[{K, Member}] = Time;
           else if (D.Kind == DirectiveKind::Range)
             Select.FieldRanges[{K, Member}] = {
                 std::strtod(D.Arguments[1].Text.c_str(), nullptr),
@@ -418,15 +442,21 @@ void SchemaBuilder::addTranslationUnit(
       case DirectiveKind::RestoreAt:
       case DirectiveKind::Store:
         return; // program points: ProgramPoints
+      case DirectiveKind::Clock:
+        return; // declareClock; resolved below
       }
       if (Found && Matched)
         (*Matched)[I] = true;
     }
   };
+  for (const Directive &D : PragmaDirectives)
+    if (D.Kind == DirectiveKind::Clock)
+      declareClock(D, Program, Diags);
   for (std::size_t I = 0; I < Sidecar.size(); ++I)
     Apply(Sidecar[I], /*IsSidecar=*/true, &SidecarMatched[I]);
   for (const Directive &D : PragmaDirectives)
     Apply(D, /*IsSidecar=*/false, nullptr);
+  resolveClocks(Context, TUIndex, Program, Diags);
 
   // Roots defined in this TU.
   TypeWalker Walker(Context, S, TUIndex, Program, Diags, Select);
@@ -713,13 +743,18 @@ void SchemaBuilder::finish(bool CheckUnmatched) {
     for (std::size_t A = 0; A < Sidecar[I].Arguments.size(); ++A) {
       if (SidecarMatched[I][A] ||
           (Sidecar[I].Kind == DirectiveKind::Renamed && A == 1) ||
-          (Sidecar[I].Kind == DirectiveKind::Range && A >= 1))
+          ((Sidecar[I].Kind == DirectiveKind::Range ||
+            Sidecar[I].Kind == DirectiveKind::Time) &&
+           A >= 1) ||
+          Sidecar[I].Kind == DirectiveKind::Clock) // checkClocks
         continue;
       Diags.error(Sidecar[I].Arguments[A].Where,
                   "'" + Sidecar[I].Arguments[A].Text +
                       "' in the annotation file matches nothing in any "
                       "translation unit");
     }
+  if (CheckUnmatched)
+    checkClocks(Program, Diags);
   for (const auto &Pending : PendingDeclaredRoots)
     if (CheckUnmatched && !DefinedRootNames.count(Pending.first))
       Diags.error(

@@ -27,6 +27,10 @@ std::string number(double Value) {
   return Text;
 }
 
+std::string integer(std::int64_t Value) {
+  return Value == INT64_MIN ? std::string("INT64_MIN") : std::to_string(Value) + "ll";
+}
+
 std::string uintText(std::uint64_t Value) {
   return Value == symcr::kNoType ? std::string("symcr::kNoType")
                                  : std::to_string(Value) + "u";
@@ -47,6 +51,7 @@ public:
           "#include <cstdint>\n\n#include <symcr/generated.hpp>\n\n";
     declareSymbols();
     OS << "namespace {\n";
+    writeClocks();
     for (std::uint32_t I = 0; I < Schema.type_count; ++I)
       writeTypeParts(I);
     writeTypes();
@@ -93,6 +98,11 @@ private:
         OS << "extern void* const symcr_gen_root_" << I << ";\n";
       OS << "}\n\n";
     }
+    // Each clock's reading thunk is in the wrapper of the source that declares its function.
+    for (std::size_t I = 0; I < Program.Clocks.size(); ++I)
+      OS << "extern \"C\" std::int64_t symcr_gen_clock_" << I << "(void);\n";
+    if (!Program.Clocks.empty())
+      OS << "\n";
   }
 
   /// A nullptr-terminated name list as a named array; "nullptr" for none.
@@ -104,6 +114,16 @@ private:
       OS << quoted(List[I]) << ", ";
     OS << "nullptr};\n";
     return Symbol;
+  }
+
+  void writeClocks() {
+    if (Program.Clocks.empty())
+      return;
+    OS << "const symcr::ClockInfo clocks[] = {\n";
+    for (std::size_t I = 0; I < Program.Clocks.size(); ++I)
+      OS << "    {" << nameText(Program.Clocks[I].Name.c_str()) << ", symcr_gen_clock_" << I
+         << ", " << I << "u},\n";
+    OS << "};\n";
   }
 
   void writeTypeParts(std::uint32_t I) {
@@ -130,13 +150,26 @@ private:
            << ", " << number(Range->max) << "};\n";
         FieldRanges.push_back("&" + Symbol);
       }
+      std::vector<std::string> FieldTimes;
+      for (std::uint32_t F = 0; F < T.field_count; ++F) {
+        const symcr::FieldTime *Time = T.fields[F].time;
+        if (!Time) {
+          FieldTimes.push_back("nullptr");
+          continue;
+        }
+        std::string Symbol = "time_" + Index + "_" + std::to_string(F);
+        OS << "const symcr::FieldTime " << Symbol << " = {&clocks[" << Time->clock->index
+           << "], " << integer(Time->never) << "};\n";
+        FieldTimes.push_back("&" + Symbol);
+      }
       OS << "const symcr::FieldInfo fields_" << I << "[] = {\n";
       for (std::uint32_t F = 0; F < T.field_count; ++F) {
         const symcr::FieldInfo &Field = T.fields[F];
         OS << "    {" << nameText(Field.name) << ", " << Field.type << "u, "
            << Field.offset << "u, " << Field.bit_offset << ", "
            << Field.bit_width << ", " << Field.flags << "u, "
-           << FieldRenamed[F] << ", " << FieldRanges[F] << "},\n";
+           << FieldRenamed[F] << ", " << FieldRanges[F] << ", " << FieldTimes[F]
+           << "},\n";
       }
       OS << "};\n";
     }

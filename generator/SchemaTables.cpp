@@ -8,6 +8,9 @@
 namespace symcr_gen {
 
 SchemaTables::SchemaTables(const ProgramModel &Program) {
+  for (const ClockModel &Clock : Program.Clocks)
+    Clocks.push_back(symcr::ClockInfo{Clock.Name.c_str(), nullptr,
+                                      static_cast<std::uint32_t>(Clocks.size())});
   Types.resize(Program.Types.size());
   for (std::size_t I = 0; I < Program.Types.size(); ++I) {
     const TypeModel &T = Program.Types[I];
@@ -31,7 +34,10 @@ SchemaTables::SchemaTables(const ProgramModel &Program) {
                              static_cast<std::uint16_t>(Field.BitWidth),
                              Field.Flags,
                              aliases(Field.RenamedFrom),
-                             range(Field)};
+                             range(Field),
+                             time(Field)};
+        if (!Fields[F].time)
+          Fields[F].flags &= ~std::uint32_t{symcr::kFieldClockTime};
       }
       Info.fields = Fields.data();
       Info.field_count = static_cast<std::uint32_t>(Fields.size());
@@ -75,6 +81,17 @@ const symcr::FieldRange *SchemaTables::range(const FieldModel &Field) {
     return nullptr;
   Ranges.push_back(symcr::FieldRange{Field.RangeMin, Field.RangeMax});
   return &Ranges.back();
+}
+
+const symcr::FieldTime *SchemaTables::time(const FieldModel &Field) {
+  if (!(Field.Flags & symcr::kFieldClockTime))
+    return nullptr;
+  for (const symcr::ClockInfo &Clock : Clocks)
+    if (Field.Clock == Clock.name) {
+      Times.push_back(symcr::FieldTime{&Clock, Field.Never});
+      return &Times.back();
+    }
+  return nullptr; // an undeclared clock: diagnosed (checkClocks), nothing is written
 }
 
 /// A nullptr-terminated list of \p Names, or nullptr when there are none

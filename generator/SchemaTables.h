@@ -31,11 +31,15 @@ public:
   /// The tables, and their serialised form and hash.
   const symcr::Schema &schema() const { return Schema; }
   const symcr::SerialisedSchema &serialised() const { return Serialised; }
+  /// The program's clocks, by index (ProgramModel::Clocks' order).
+  const std::vector<symcr::ClockInfo> &clocks() const { return Clocks; }
 
 private:
   const char *const *aliases(const std::vector<std::string> &Names);
   /// The field's SYMCR_RANGE bounds, or null without one.
   const symcr::FieldRange *range(const FieldModel &Field);
+  /// The field's clock and never value, or null when it holds no time.
+  const symcr::FieldTime *time(const FieldModel &Field);
   const char *const *leftToNewBuild(const TypeModel &T);
   template <class Items, class NameOf>
   const char *const *nameList(const Items &List, NameOf Name);
@@ -47,6 +51,8 @@ private:
   std::list<std::vector<symcr::EnumeratorInfo>> EnumeratorTables;
   std::list<std::vector<const char *>> AliasTables;
   std::list<symcr::FieldRange> Ranges;
+  std::vector<symcr::ClockInfo> Clocks;
+  std::list<symcr::FieldTime> Times;
   symcr::detail::SchemaBlob Blob;
   symcr::SerialisedSchema Serialised{};
   symcr::Schema Schema{};

@@ -660,6 +660,12 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
       Field.RangeMax = It->second.second;
       Field.Flags |= symcr::kFieldHasRange;
     }
+    const auto TimeDirective = Lookup(Select.FieldTimes, Name);
+    if (!fieldTime(FD,
+                   TimeDirective != Select.FieldTimes.end() ? &TimeDirective->second
+                                                            : nullptr,
+                   Field, F))
+      Ok = false;
     Model.Fields.push_back(Field);
   }
   return Ok;

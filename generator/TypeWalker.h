@@ -43,6 +43,10 @@ struct Selections {
   /// range(Type::field, lo, hi) directives.
   std::map<std::pair<std::string, std::string>, std::pair<double, double>>
       FieldRanges;
+  /// time(Type::field, clock) and time(typedef, clock) directives; typedefs by
+  /// qualified name.
+  std::map<std::pair<std::string, std::string>, TimeSpec> FieldTimes;
+  std::map<std::string, TimeSpec> TypedefTimes;
   /// Record types (canonical) that have a usable `bool symcr_validate(const
   /// T&)` in this TU.
   std::set<const clang::Type *> Validated;
@@ -116,6 +120,10 @@ private:
   std::uint32_t synthesizedPair(clang::QualType Key, clang::QualType Value,
                                 const WalkContext &C);
   bool fillFields(const clang::RecordDecl *RD, TypeModel &Model, const WalkContext &C);
+  /// Marks \p Field a time of a clock when its member, a directive or a typedef in its
+  /// type says so (Clocks.cpp); false after a diagnostic.
+  bool fieldTime(const clang::FieldDecl *FD, const TimeSpec *Directive, FieldModel &Field,
+                 const WalkContext &F);
   bool checkPointee(clang::QualType Pointee, const WalkContext &C, const char *Holder);
   /// Finds the classes (\p Base or derived from it) a heap object behind a
   /// pointer to \p Base may be saved as, and walks each into the schema.

@@ -53,8 +53,29 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
   for (std::uint32_t I = 0; I < Program.Roots.size(); ++I)
     if (Program.Roots[I].HomeTU == TUIndex)
       Roots.push_back(I);
-  if (Home.empty() && Roots.empty())
+  std::vector<std::size_t> Clocks;
+  for (std::size_t I = 0; I < Program.Clocks.size(); ++I)
+    if (Program.Clocks[I].HomeTU == static_cast<int>(TUIndex))
+      Clocks.push_back(I);
+  if (Home.empty() && Roots.empty() && Clocks.empty())
     return OS.str();
+  // A clock's reading as the runtime takes it: an unsigned 64-bit count converted without a
+  // value change a warning could flag, anything narrower implicitly.
+  auto ClockThunks = [&](const char *Int64, const char *Uint64, bool C) {
+    for (std::size_t I : Clocks) {
+      const ClockModel &Clock = Program.Clocks[I];
+      const std::string Name = "symcr_gen_clock_" + std::to_string(I);
+      OS << Int64 << " " << Name << "(void);\n" << Int64 << " " << Name << "(void) {\n";
+      if (Clock.Unsigned64)
+        OS << "  const " << Uint64 << " reading = " << Clock.CallExpression << ";\n  return "
+           << (C ? std::string("(") + Int64 + ")reading"
+                 : std::string("static_cast<") + Int64 + ">(reading)")
+           << ";\n";
+      else
+        OS << "  return " << Clock.CallExpression << ";\n";
+      OS << "}\n";
+    }
+  };
 
   if (TU.IsC) {
     OS << "#include <stddef.h>\n#include <stdlib.h>\n\n";
@@ -97,6 +118,9 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
       OS << "extern void* const symcr_gen_root_" << I << ";\n"
          << "void* const symcr_gen_root_" << I << " = "
          << Program.Roots[I].AddressExpression << ";\n";
+    if (!Clocks.empty())
+      OS << "#include <stdint.h>\n";
+    ClockThunks("int64_t", "uint64_t", /*C=*/true);
     return OS.str();
   }
 
@@ -208,6 +232,11 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
       OS << "extern void* const symcr_gen_root_" << I << ";\n"
          << "void* const symcr_gen_root_" << I << " = "
          << Program.Roots[I].AddressExpression << ";\n";
+    OS << "}\n";
+  }
+  if (!Clocks.empty()) {
+    OS << "extern \"C\" {\n";
+    ClockThunks("std::int64_t", "std::uint64_t", /*C=*/false);
     OS << "}\n";
   }
   return OS.str();

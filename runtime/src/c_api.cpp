@@ -23,6 +23,8 @@ static_assert(SYMCR_ERROR_IO == static_cast<int>(symcr::Error::Io),
               "C error codes mirror symcr::Error");
 static_assert(SYMCR_REJECTED == static_cast<int>(symcr::Decision::Rejected),
               "C decisions mirror symcr::Decision");
+static_assert(SYMCR_REBASED == static_cast<int>(symcr::Decision::Rebased),
+              "C decisions mirror symcr::Decision");
 
 namespace {
 thread_local char last_error[256];  // a Status message (240) always fits
@@ -112,7 +114,7 @@ uint64_t symcr_report_sequence(const symcr_report* report) {
 
 size_t symcr_report_count(const symcr_report* report, int decision) {
   if (report == nullptr || decision < 0 ||
-      decision > static_cast<int>(symcr::Decision::Rejected)) {
+      decision > static_cast<int>(symcr::Decision::Rebased)) {
     return 0;
   }
   return report->report.count(static_cast<symcr::Decision>(decision));

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "address_table.hpp"
+#include "clocks.hpp"
 #include "engine.hpp"
 #include "payload_grammar.hpp"
 #include "process_memory.hpp"
@@ -175,8 +176,20 @@ class Encoder {
       out_.resize(start_);
       return Status();
     }
+    if (!facts_.clocks.empty()) put_clock_readings();
     out_.resize(pos_);
     return Status();
+  }
+
+  // The clocks' readings end the payload (docs/format.md §3), after everything they describe
+  // was read from memory.
+  void put_clock_readings() {
+    const std::uint64_t epoch = process_epoch();
+    std::memcpy(grow(8), &epoch, 8);
+    for (const ClockInfo* clock : facts_.clocks) {
+      const std::int64_t reading = clock && clock->read ? clock->read() : 0;
+      std::memcpy(grow(8), &reading, 8);
+    }
   }
 
   bool heap_objects_overlap() {

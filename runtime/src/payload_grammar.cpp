@@ -89,7 +89,24 @@ __attribute__((cold)) WireSizes wire_sizes(const Schema& writer) {
   SizeFacts facts(writer, sizes);
   for (std::uint32_t t = 0; t < writer.type_count; ++t) facts.compute(t);
   sizes.levels = value_levels(writer);
+  sizes.clock_count = static_cast<std::uint32_t>(schema_clocks(writer).size());
   return sizes;
+}
+
+std::vector<const ClockInfo*> schema_clocks(const Schema& schema) {
+  std::vector<const ClockInfo*> clocks;
+  for (std::uint32_t t = 0; t < schema.type_count; ++t) {
+    const TypeInfo& type = schema.types[t];
+    if (type.kind != Kind::Struct) continue;
+    for (std::uint32_t f = 0; f < type.field_count; ++f) {
+      const FieldInfo& field = type.fields[f];
+      if (!(field.flags & kFieldClockTime) || !field.time || !field.time->clock) continue;
+      const ClockInfo* clock = field.time->clock;
+      if (clock->index >= clocks.size()) clocks.resize(clock->index + std::size_t{1}, nullptr);
+      clocks[clock->index] = clock;
+    }
+  }
+  return clocks;
 }
 
 __attribute__((cold)) std::vector<std::uint32_t> value_levels(const Schema& writer) {
@@ -217,6 +234,18 @@ bool PayloadReader::reference_count(std::uint32_t& count) {
   if (!in_.read(count)) return truncated("reference count");
   // A reference takes at least 11 bytes: base kind, object, step count and target.
   if (count > in_.remaining() / 11) return fail("reference count %u exceeds the payload", count);
+  return true;
+}
+
+bool PayloadReader::clock_readings(ClockReadings& out) {
+  out = ClockReadings();
+  if (sizes_.clock_count == 0) return true;
+  const std::uint8_t* bytes = nullptr;
+  if (!in_.read(out.epoch) || !in_.bytes(std::size_t{8} * sizes_.clock_count, bytes)) {
+    return truncated("clock readings");
+  }
+  out.readings = bytes;
+  out.count = sizes_.clock_count;
   return true;
 }
 

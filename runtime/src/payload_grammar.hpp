@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -39,12 +40,30 @@ struct WireSizes {
   std::vector<std::uint64_t> least;
   std::vector<std::uint64_t> fixed;  // kVariable when value-dependent
   std::vector<std::uint32_t> levels;  // by_value_levels
+  std::uint32_t clock_count = 0;      // schema_clocks(writer).size(): readings that end a payload
 };
 // For a parsed schema (whose types nest by value within the limit).
 WireSizes wire_sizes(const Schema& writer);
 // WireSizes::levels of `writer`: by_value_levels, each capped one past the limit (a program's
 // own schema is not parsed: a value of a type past it is refused when met).
 std::vector<std::uint32_t> value_levels(const Schema& writer);
+
+// The clocks `schema`'s time fields name (kFieldClockTime), by ClockInfo::index: a payload of
+// a schema with clocks ends with the writing process's epoch and one reading per clock
+// (docs/format.md §3). An index no field names (a hand-written table's gap) is null.
+std::vector<const ClockInfo*> schema_clocks(const Schema& schema);
+
+// What ends a payload of a schema with clocks.
+struct ClockReadings {
+  std::uint64_t epoch = 0;                // the writing process (0: unknown, e.g. a device)
+  const std::uint8_t* readings = nullptr;  // clock_count little-endian i64, by clock index
+  std::uint32_t count = 0;
+  std::int64_t reading(std::uint32_t clock) const {
+    std::int64_t value = 0;
+    std::memcpy(&value, readings + 8 * std::size_t{clock}, sizeof value);  // wire.hpp: LE host
+    return value;
+  }
+};
 
 // Per type, the levels of values its values hold by value: 0 for a type that holds none, a
 // struct or union one more than its deepest field, an array or optional one more than its
@@ -186,6 +205,8 @@ class PayloadReader {
   // there is none); `element_type(a, b, type)` that of element `b` of container `a`. Each step
   // is checked against the type it steps into and passed to `on_step(step)`.
   bool reference_count(std::uint32_t& count);
+  // After the references: the clock readings (none when the writer schema has no clocks).
+  bool clock_readings(ClockReadings& out);
   template <typename ObjectType, typename ElementType, typename OnStep>
   bool reference(std::uint32_t i, Reference& ref, ObjectType object_type, ElementType element_type,
                  OnStep on_step) {

@@ -19,6 +19,29 @@
 #include "unicode.hpp"
 
 namespace symcr::detail {
+
+void map_clocks(Plan& plan) {
+  plan.reader_clocks = schema_clocks(*plan.reader);
+  const std::vector<const ClockInfo*> writer_clocks = schema_clocks(*plan.writer);
+  plan.writer_clock_of.assign(plan.reader_clocks.size(), kNoType);
+  for (std::size_t c = 0; c < plan.reader_clocks.size(); ++c) {
+    const ClockInfo* clock = plan.reader_clocks[c];
+    if (!clock || !clock->name) continue;
+    for (std::size_t w = 0; w < writer_clocks.size(); ++w) {
+      if (writer_clocks[w] && writer_clocks[w]->name &&
+          std::strcmp(writer_clocks[w]->name, clock->name) == 0) {
+        plan.writer_clock_of[c] = static_cast<std::uint32_t>(w);
+      }
+    }
+  }
+}
+
+const FieldTime* reader_time(const Schema& reader, const PlanNode& n, const FieldPlan& field) {
+  if (field.reader_field == kNoType || n.reader >= reader.type_count) return nullptr;
+  const FieldInfo& f = reader.types[n.reader].fields[field.reader_field];
+  return (f.flags & kFieldClockTime) && f.time && f.time->clock ? f.time : nullptr;
+}
+
 namespace planning {
 
 // Once per (writer, reader) pair, then cached: cold, so that it and what only it calls are
@@ -51,6 +74,7 @@ void Planner::run() {
       plan_.heap_nodes[t] = node(t, find_reader_type(writer_.types[t]));
     }
   }
+  map_clocks(plan_);
   decide_migrations();
   mark_validated_parts(plan_.nodes);
   for (PlanNode& n : plan_.nodes) compute_copy(n);

@@ -154,6 +154,10 @@ struct Plan final : ReportSource {
   // bools and copies, without the general decoder.
   bool copy_only_payload = false;
   std::uint64_t copy_only_payload_size = 0;
+  // The reader's clocks (by ClockInfo::index) and, for each, the writer's clock of that name
+  // (kNoType when the checkpoint has no reading of it): map_clocks().
+  std::vector<const ClockInfo*> reader_clocks;
+  std::vector<std::uint32_t> writer_clock_of;
   Status status;  // Incompatible when nothing can be restored
 
   // Written once by entries() (Planner::build_report).
@@ -180,6 +184,11 @@ void plan_image_for(const Schema& writer, std::uint64_t writer_hash, const Schem
 std::shared_ptr<const Plan> cached_plan(std::uint64_t writer_hash, const Schema& reader);
 
 bool names_match(const TypeInfo& writer, const TypeInfo& reader);
+
+// Fills Plan::reader_clocks and writer_clock_of from the plan's schemas (planned or decoded).
+void map_clocks(Plan& plan);
+// The reader field a FieldPlan of struct node `n` restores into is a time of a clock.
+const FieldTime* reader_time(const Schema& reader, const PlanNode& n, const FieldPlan& field);
 
 // Sets every node's holds_validated from the nodes' `validated` and their parts: once a plan's
 // nodes are final (planned, or decoded from an image).

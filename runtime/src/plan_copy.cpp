@@ -85,6 +85,8 @@ void Planner::compute_copy(PlanNode& n) {
 // the roots' copy programs back to back and two empty sections (heap objects, references).
 void Planner::compute_copy_only_payload() {
   std::uint64_t size = 2 * sizeof(std::uint32_t);
+  const std::uint32_t clocks = plan_.wire_sizes.clock_count;
+  if (clocks) size += sizeof(std::uint64_t) * (1 + std::uint64_t{clocks});  // epoch, readings
   for (const RootPlan& root : plan_.roots) {
     if (root.reader_root == kNoType || !child_copy_only(root.node)) return;
     size += root.node->copy_wire;
@@ -119,6 +121,7 @@ bool Planner::build_copy(PlanNode& n) {
       std::uint64_t wire = 0;
       for (const FieldPlan& field : n.fields) {
         if (field.reader_field == kNoType || field.has_range) return false;
+        if (reader_time(reader_, n, field)) return false;  // rebased value by value
         if (field.bit_width) {
           if (!add_bit_field(n, field, wire)) return false;
           wire += writer_.types[field.node->writer].size;

@@ -203,6 +203,8 @@ bool decode_plan_image(const std::uint8_t* image, std::size_t size, std::uint64_
   for (std::uint64_t& v : plan.wire_sizes.fixed) v = in.u64();
   // Not in the image: the levels follow from the writer schema alone.
   plan.wire_sizes.levels = value_levels(writer);
+  plan.wire_sizes.clock_count = static_cast<std::uint32_t>(schema_clocks(writer).size());
+  map_clocks(plan);
   plan.counter_paths.resize(in.count(2));
   for (Plan::CounterPath& c : plan.counter_paths) {
     c.scope = in.name();

@@ -250,7 +250,19 @@ void Planner::expand(const PlanNode* n, const std::string& path) {
           detail =
               std::string("renamed from ") + writer.name + (detail.empty() ? "" : "; ") + detail;
         }
-        const bool own_lossy = field.node->lossy && field.node->action != Action::Struct;
+        bool own_lossy = field.node->lossy && field.node->action != Action::Struct;
+        if (const FieldTime* time = reader_time(reader_, *n, field)) {
+          const std::string clock =
+              std::string("a time of clock '") + (time->clock->name ? time->clock->name : "?") + "'";
+          if (plan_.writer_clock_of[time->clock->index] == kNoType) {
+            decision = Decision::Rejected;
+            detail = clock + ", of which the checkpoint holds no reading: this build's value is kept";
+            own_lossy = true;
+          } else if (decision == Decision::Restored || decision == Decision::Converted) {
+            decision = Decision::Rebased;
+            detail = clock + (detail.empty() ? "" : "; " + detail);
+          }
+        }
         note_migration(field.node, decision, detail);
         add(child, decision, detail, own_lossy);
         expand(field.node, child);

@@ -104,6 +104,16 @@ void Report::add(std::string path, Decision decision, std::string detail, bool l
   entries_.push_back(ReportEntry{std::move(path), decision, std::move(detail), lossy});
 }
 
+void Report::remove(Decision decision) {
+  if (source_) {
+    entries_ = source_->entries();
+    source_.reset();
+  }
+  entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
+                                [decision](const ReportEntry& e) { return e.decision == decision; }),
+                 entries_.end());
+}
+
 Report::~Report() = default;
 Report::Report(const Report& other) = default;
 Report::Report(Report&& other) noexcept = default;

@@ -29,6 +29,8 @@ struct ReportAccess {
                   bool lossy) {
     report.add(std::move(path), decision, std::move(detail), lossy);
   }
+  // Removes every entry of `decision` (copying shared entries first).
+  static void remove(Report& report, Decision decision) { report.remove(decision); }
   static std::vector<SkippedCheckpoint>& skipped(Report& report) { return report.skipped_; }
   static void warn(Report& report, std::string warning) {
     report.warnings_.push_back(std::move(warning));

@@ -54,9 +54,12 @@ Status Restorer::check() {
   begin_pass(Mode::Check);
   rejection_counts_.assign(plan_.counter_paths.size() + 1, 0);
   heap_counter_ = static_cast<std::uint32_t>(plan_.counter_paths.size());
-  if (!decode_objects() || !decode_references() || !in_.finish() || !check_slots()) {
+  ClockReadings readings;
+  if (!decode_objects() || !decode_references() || !in_.clock_readings(readings) ||
+      !in_.finish() || !check_slots()) {
     return error_;
   }
+  decide_clock_deltas(readings);
   claim_live_objects();
   decide_materialisation();
   for (RefRecord& ref : refs_) map_reference(ref);

@@ -209,7 +209,8 @@ void Restorer::end_part(const PlanNode* part, const PartMark& mark, bool element
 
 bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
   if (n->action == Action::Reject) return value(n->skip, nullptr, nullptr);
-  if (n->copy_only && !(field && (field->bit_width || field->has_range)) && copy(n, dst)) {
+  if (n->copy_only && !time_ && !(field && (field->bit_width || field->has_range)) &&
+      copy(n, dst)) {
     return true;
   }
   const TypeInfo& wt = writer_.types[n->writer];
@@ -226,13 +227,19 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       // One path frame for all the fields, renamed per field.
       const std::size_t frame = frames_.size();
       frames_.push_back({PathFrame::Kind::Name, "", 0});
+      const FieldTime* outer_time = time_;
       for (const FieldPlan& child : n->fields) {
         frames_[frame].name = child.name;
         counter_ = child.counter;
         std::uint8_t* at =
             dst && child.reader_field != kNoType ? dst + child.reader_offset : nullptr;
+        time_ = reader_time(reader_, *n, child);
+        // A time of a clock the checkpoint has no reading of keeps this build's value (the
+        // plan's report rejects the field).
+        if (time_ && plan_.writer_clock_of[time_->clock->index] == kNoType) at = nullptr;
         if (!value(child.node, at, &child)) return false;
       }
+      time_ = outer_time;
       frames_.pop_back();
       counter_ = saved;
       // The migration hook, once the mechanical rules wrote the object and everything in it
@@ -356,8 +363,10 @@ bool Restorer::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst,
   const bool ranged = field && field->has_range;
   const TypeInfo& rt = reader_.types[n->reader];
   if (n->identical && !bit_field && !ranged) {
-    if (dst && writing())
+    if (dst && writing()) {
       std::memcpy(dst, bytes, wt.kind == Kind::Float && wt.size == 16 ? 10 : wt.size);
+      if (time_) rebase(dst, rt);
+    }
     return true;
   }
   const std::uint32_t counter = field ? field->counter : counter_;
@@ -411,10 +420,12 @@ bool Restorer::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst,
     }
   }
   if (dst && writing()) {
-    if (bit_field)
+    if (bit_field) {
       store_bits(dst, field->bit_offset, field->bit_width, out);
-    else
+    } else {
       store_number(reader_, rt, out, dst);
+      if (time_) rebase(dst, rt);
+    }
   }
   return true;
 }
@@ -424,7 +435,7 @@ bool Restorer::array(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
   const TypeInfo& we = writer_.types[wt.element];
   const PlanNode* e = n->element;
   // Identical packed scalars: one bounds check and one copy.
-  if (to_reader && e->identical && we.kind != Kind::Bool &&
+  if (to_reader && !time_ && e->identical && we.kind != Kind::Bool &&
       !(we.kind == Kind::Float && we.size == 16)) {
     const std::uint8_t* bytes = nullptr;
     if (!in_.scalar_run(we, wt.count, bytes)) return false;

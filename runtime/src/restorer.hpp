@@ -254,6 +254,14 @@ class Restorer {
 
   void fix_up_slots();
 
+  // ---- clocks (docs/resolution.md, Clocks) --------------------------------------------------
+  // After pass 1 read the payload's clock readings: how far each reader clock moves its times
+  // (rebasing_ when the checkpoint is another process's), and the report's lines for them.
+  void decide_clock_deltas(const ClockReadings& readings);
+  // A time of `time_`'s clock just written at `dst` as reader type `type`: moved by the clock's
+  // delta in the write pass, in the integer's own wrapping arithmetic.
+  void rebase(std::uint8_t* dst, const TypeInfo& type) const;
+
   const Plan& plan_;
   const Schema& writer_;
   const Schema& reader_;
@@ -299,6 +307,10 @@ class Restorer {
   std::vector<std::uint32_t> element_slots_;
   std::vector<std::vector<void*>> element_addresses_;
   std::vector<std::uint8_t> string_scratch_;
+
+  const FieldTime* time_ = nullptr;  // the reader field being decoded is a time of this clock
+  bool rebasing_ = false;
+  std::vector<std::int64_t> clock_deltas_;  // per reader clock
 };
 
 }  // namespace symcr::detail::restoring

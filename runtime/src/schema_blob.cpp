@@ -60,13 +60,21 @@ void serialise_schema(const Schema& schema, std::vector<std::uint8_t>& out) {
           put_u16(out, field.bit_offset);
           put_u16(out, field.bit_width);
           // A range flag without bounds (a hand-written table's slip) is no range.
-          const std::uint32_t flags =
-              field.range != nullptr ? field.flags : field.flags & ~std::uint32_t{kFieldHasRange};
+          std::uint32_t flags = field.flags;
+          if (field.range == nullptr) flags &= ~std::uint32_t{kFieldHasRange};
+          if (field.time == nullptr || field.time->clock == nullptr ||
+              field.time->clock->name == nullptr) {
+            flags &= ~std::uint32_t{kFieldClockTime};
+          }
           put_u32(out, flags);
           put_aliases(out, field.renamed_from);
           if (flags & kFieldHasRange) {
             put_f64(out, field.range->min);
             put_f64(out, field.range->max);
+          }
+          if (flags & kFieldClockTime) {
+            put_str(out, field.time->clock->name);
+            put_le(out, field.time->never);
           }
         }
         break;
@@ -232,6 +240,7 @@ __attribute__((cold)) SchemaFacts compute_schema_facts(const Schema& schema) {
       facts.has_references = true;
     }
   }
+  facts.clocks = schema_clocks(schema);
   return facts;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine.hpp"
+#include "payload_grammar.hpp"
 #include "symcr/device.hpp"
 #include "symcr/generated.hpp"
 
@@ -38,6 +39,8 @@ struct SchemaFacts {
     std::uint32_t type;
   };
   std::vector<DynamicType> dynamic_types;
+  // The clocks whose readings end every payload (payload_grammar.hpp: schema_clocks).
+  std::vector<const ClockInfo*> clocks;
 };
 
 SchemaFacts compute_schema_facts(const Schema& schema);
@@ -55,7 +58,9 @@ struct SchemaCacheEntry {
   // checkpoint of this very schema can be restored without a plan (restore.cpp).
   bool device_holdable() const {
     std::call_once(device_checked, [this] {
-      device_holdable_ = device::check_schema(*schema) == device::Result::Ok;
+      // Times of clocks are rebased value by value, which that decoder leaves to the device.
+      device_holdable_ = device::check_schema(*schema) == device::Result::Ok &&
+                         schema_clocks(*schema).empty();
     });
     return device_holdable_;
   }

@@ -2,6 +2,7 @@
 // every read is bounds-checked, every count is bounded by the bytes left (so allocation never
 // exceeds a small multiple of the input), every type index is checked, scalar sizes are
 // checked, and by-value self-containment and absurd nesting are refused.
+#include <algorithm>
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
@@ -19,6 +20,8 @@ struct ParsedSchema::Storage {
   std::vector<TypeInfo> types;
   std::vector<FieldInfo> fields;
   std::vector<FieldRange> ranges;  // FieldInfo::range points here (set once all are read)
+  std::vector<FieldTime> times;    // FieldInfo::time points here
+  std::vector<ClockInfo> clocks;   // FieldTime::clock points here, in index order
   std::vector<EnumeratorInfo> enumerators;
   std::vector<std::uint32_t> alternatives;
   std::vector<RootInfo> roots;
@@ -55,6 +58,7 @@ struct TypeFixup {
 struct NamedFixup {
   std::size_t name, aliases;
   std::size_t range = 0;  // fields with kFieldHasRange: index into Storage::ranges
+  std::size_t time = 0;   // fields with kFieldClockTime: index into Storage::times
 };
 
 class Parser {
@@ -196,6 +200,14 @@ class Parser {
             named.range = s_.ranges.size();
             s_.ranges.push_back(range);
           }
+          if (field.flags & kFieldClockTime) {
+            std::size_t clock_name = 0;
+            FieldTime time{};
+            if (!read_str(clock_name) || !in_.read(time.never)) return truncated("field clock");
+            named.time = s_.times.size();
+            s_.times.push_back(time);
+            time_clock_names_.push_back(clock_name);
+          }
           if (!check_index(field.type)) {
             return corrupt("field %u of type %u has type index %u out of range", f, index,
                            field.type);
@@ -330,7 +342,9 @@ class Parser {
       s_.fields[f].name = base + field_fixups_[f].name;
       s_.fields[f].renamed_from = aliases_at(field_fixups_[f].aliases);
       if (s_.fields[f].flags & kFieldHasRange) s_.fields[f].range = &s_.ranges[field_fixups_[f].range];
+      if (s_.fields[f].flags & kFieldClockTime) s_.fields[f].time = &s_.times[field_fixups_[f].time];
     }
+    number_clocks(base);
     for (std::size_t e = 0; e < s_.enumerators.size(); ++e) {
       s_.enumerators[e].name = base + enumerator_names_[e];
     }
@@ -357,8 +371,31 @@ class Parser {
     s_.schema.root_count = static_cast<std::uint32_t>(s_.roots.size());
   }
 
+  // The clocks the time fields name, numbered in the byte order of their names (format §3).
+  void number_clocks(const char* base) {
+    std::vector<const char*> names;
+    for (std::size_t offset : time_clock_names_) names.push_back(base + offset);
+    std::vector<const char*> distinct = names;
+    std::sort(distinct.begin(), distinct.end(),
+              [](const char* a, const char* b) { return std::strcmp(a, b) < 0; });
+    distinct.erase(std::unique(distinct.begin(), distinct.end(),
+                               [](const char* a, const char* b) { return !std::strcmp(a, b); }),
+                   distinct.end());
+    s_.clocks.clear();
+    for (std::size_t c = 0; c < distinct.size(); ++c) {
+      s_.clocks.push_back(ClockInfo{distinct[c], nullptr, static_cast<std::uint32_t>(c)});
+    }
+    for (std::size_t t = 0; t < s_.times.size(); ++t) {
+      const auto found = std::lower_bound(
+          distinct.begin(), distinct.end(), names[t],
+          [](const char* a, const char* b) { return std::strcmp(a, b) < 0; });
+      s_.times[t].clock = &s_.clocks[static_cast<std::size_t>(found - distinct.begin())];
+    }
+  }
+
   WireReader in_;
   ParsedSchema::Storage& s_;
+  std::vector<std::size_t> time_clock_names_;  // per Storage::times entry: its clock's name
   std::vector<TypeFixup> type_fixups_;
   std::vector<NamedFixup> field_fixups_;
   std::vector<NamedFixup> root_fixups_;

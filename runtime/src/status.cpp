@@ -58,6 +58,7 @@ const char* decision_name(Decision decision) {
     case Decision::Dropped: return "dropped";
     case Decision::Converted: return "converted";
     case Decision::Rejected: return "rejected";
+    case Decision::Rebased: return "rebased";
   }
   return "unknown";
 }

@@ -26,10 +26,28 @@ class Walker {
 
   Status run() {
     emit_ = false;
-    if (!walk_objects() || !error_.ok() || !read_references() || !in_.finish()) return error_;
+    ClockReadings readings;
+    if (!walk_objects() || !error_.ok() || !read_references() || !in_.clock_readings(readings) ||
+        !in_.finish()) {
+      return error_;
+    }
     emit_ = true;
     walk_objects();
+    emit_clock_readings(readings);
     return error_;
+  }
+
+  // Each clock's reading at the checkpoint, as a value "(clock NAME)" after the objects.
+  void emit_clock_readings(const ClockReadings& readings) {
+    static const TypeInfo kReading = {"int64", Kind::Int, 0, 8, 8, nullptr, 0, nullptr, 0,
+                                      kNoType, 0, nullptr, 0, 0, nullptr, nullptr, nullptr,
+                                      nullptr, nullptr, nullptr};
+    const std::vector<const ClockInfo*> clocks = schema_clocks(writer_);
+    for (std::uint32_t c = 0; c < readings.count && c < clocks.size(); ++c) {
+      const std::string path =
+          std::string("(clock ") + (clocks[c] && clocks[c]->name ? clocks[c]->name : "?") + ")";
+      visitor_.leaf(path.c_str(), kReading, readings.readings + 8 * std::size_t{c}, 8, nullptr);
+    }
   }
 
   // ---- the sink of walk_value --------------------------------------------------------------

@@ -62,22 +62,28 @@ constexpr TypeInfo variant_of(const char* name, std::uint32_t size, std::uint32_
 
 constexpr FieldInfo field(const char* name, std::uint32_t type, std::size_t offset,
                           const char* const* renamed_from = nullptr) {
-  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, 0, renamed_from, nullptr};
+  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, 0, renamed_from, nullptr, nullptr};
 }
 // A bit-field of `width` bits from `bit_offset` of the storage unit at offset 0.
 constexpr FieldInfo bit_field(const char* name, std::uint32_t type, std::uint16_t bit_offset,
                               std::uint16_t width) {
-  return {name, type, 0, bit_offset, width, 0, nullptr, nullptr};
+  return {name, type, 0, bit_offset, width, 0, nullptr, nullptr, nullptr};
 }
 constexpr FieldInfo base(const char* name, std::uint32_t type, std::size_t offset) {
   return {name, type, static_cast<std::uint32_t>(offset), 0, 0, symcr::kFieldBase, nullptr,
-          nullptr};
+          nullptr, nullptr};
 }
 // `range` must outlive the tables: a namespace-scope or static constant.
 constexpr FieldInfo ranged(const char* name, std::uint32_t type, std::size_t offset,
                            const symcr::FieldRange& range) {
   return {name, type, static_cast<std::uint32_t>(offset), 0, 0, symcr::kFieldHasRange, nullptr,
-          &range};
+          &range, nullptr};
+}
+// A time of `time.clock` (kFieldClockTime); `time` must outlive the tables.
+constexpr FieldInfo timed(const char* name, std::uint32_t type, std::size_t offset,
+                          const symcr::FieldTime& time) {
+  return {name, type, static_cast<std::uint32_t>(offset), 0, 0, symcr::kFieldClockTime, nullptr,
+          nullptr, &time};
 }
 
 }  // namespace schema_tables

@@ -55,7 +55,8 @@ std::size_t record_size(const Schema& schema) {
   }
   if (pointers > kMaxReferences) pointers = kMaxReferences;
   return detail::kHeaderSize + detail::values_size(schema) + 8 +  // the two counts
-         pointers * detail::kMaxReferenceSize;
+         pointers * detail::kMaxReferenceSize +
+         detail::clock_readings_size(detail::clock_count(schema));
 }
 
 std::size_t scratch_size(const Schema& schema) {

@@ -124,6 +124,37 @@ std::size_t pointer_count(const Schema& schema, std::uint32_t t) {
   }
 }
 
+std::uint32_t clock_count(const Schema& schema) {
+  std::uint32_t count = 0;
+  for (std::uint32_t t = 0; t < schema.type_count; ++t) {
+    const TypeInfo& type = schema.types[t];
+    if (type.kind != Kind::Struct) continue;
+    for (std::uint32_t f = 0; f < type.field_count; ++f) {
+      const FieldInfo& field = type.fields[f];
+      if ((field.flags & kFieldClockTime) && field.time && field.time->clock &&
+          field.time->clock->index >= count) {
+        count = field.time->clock->index + 1;
+      }
+    }
+  }
+  return count;
+}
+
+const ClockInfo* clock_at(const Schema& schema, std::uint32_t index) {
+  for (std::uint32_t t = 0; t < schema.type_count; ++t) {
+    const TypeInfo& type = schema.types[t];
+    if (type.kind != Kind::Struct) continue;
+    for (std::uint32_t f = 0; f < type.field_count; ++f) {
+      const FieldInfo& field = type.fields[f];
+      if ((field.flags & kFieldClockTime) && field.time && field.time->clock &&
+          field.time->clock->index == index) {
+        return field.time->clock;
+      }
+    }
+  }
+  return nullptr;
+}
+
 std::size_t values_size(const Schema& schema) {
   std::size_t total = 0;
   for (std::uint32_t r = 0; r < schema.root_count; ++r) {

@@ -58,6 +58,20 @@ inline std::uint64_t load64(const std::uint8_t* p) {
   return v;
 }
 
+// Moves the time held in the `size`-byte little-endian integer at `p` by `delta`, in the
+// integer's own wrapping arithmetic (a 32-bit millisecond time wraps as the program expects),
+// unless it holds `never` (compared in the same width). Both runtimes rebase with it.
+inline void rebase_time(std::uint8_t* p, std::size_t size, std::int64_t never,
+                        std::uint64_t delta) {
+  std::uint64_t value = 0;
+  for (std::size_t i = size; i-- > 0;) value = (value << 8) | p[i];
+  const std::uint64_t mask =
+      size >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * size)) - 1;
+  if (value == (static_cast<std::uint64_t>(never) & mask)) return;
+  value = (value + delta) & mask;
+  for (std::size_t i = 0; i < size; ++i) p[i] = static_cast<std::uint8_t>(value >> (8 * i));
+}
+
 // The first type reachable from the roots that the device profile cannot hold, or kNoType.
 std::uint32_t first_unheld_type(const Schema& schema);
 // Bytes `type` takes in the payload (fixed: the profile has no variable-length kind), and the
@@ -68,6 +82,14 @@ std::size_t values_size(const Schema& schema);
 // once per schema, not once per restore).
 Result restore_held_payload(const Schema& schema, const std::uint8_t* payload, std::size_t size,
                             std::uint8_t* scratch, std::size_t scratch_capacity);
+// The clocks the schema's time fields name (kFieldClockTime): their count (one more than the
+// greatest ClockInfo::index), and the clock of an index (null when no field names it). A
+// payload of a schema with clocks ends with an epoch and one reading per clock (format §3).
+std::uint32_t clock_count(const Schema& schema);
+const ClockInfo* clock_at(const Schema& schema, std::uint32_t index);
+inline std::size_t clock_readings_size(std::uint32_t clocks) {
+  return clocks != 0 ? 8 + 8 * std::size_t{clocks} : 0;
+}
 // Pointers among the values of `type` (each may need a reference).
 std::size_t pointer_count(const Schema& schema, std::uint32_t type);
 // The most bytes one reference takes: base, object, step count, steps, target type.

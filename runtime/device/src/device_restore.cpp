@@ -21,12 +21,17 @@ class Restorer {
   Result run() {
     // The values have a fixed size: the tables behind them can be found, and checked, first.
     const std::size_t values = detail::values_size(schema_);
-    if (size_ < values + 8) return Result::Truncated;
+    const std::uint32_t clocks = detail::clock_count(schema_);
+    if (clocks > kMaxClocks) return Result::Unsupported;
+    const std::size_t readings = detail::clock_readings_size(clocks);
+    if (size_ < values + 8 + readings) return Result::Truncated;
     if (load32(payload_ + values) != 0) return Result::Corrupt;  // heap objects
     reference_count_ = load32(payload_ + values + 4);
     references_ = values + 8;
+    references_end_ = size_ - readings;
     Result result = check_references();
     if (result != Result::Ok) return result;
+    decide_clock_deltas(clocks);
     std::uint8_t* stage = stage_;
     for (std::uint32_t r = 0; r < schema_.root_count; ++r) {
       const RootInfo& root = schema_.roots[r];
@@ -49,7 +54,28 @@ class Restorer {
       const Result result = reference_at(&at, &ignored, &type);
       if (result != Result::Ok) return result;
     }
-    return at == size_ ? Result::Ok : Result::Corrupt;
+    return at == references_end_ ? Result::Ok : Result::Corrupt;
+  }
+
+  // How far each clock moved since the checkpoint: its times move as far (a device restores
+  // after a reset, in a process other than the one that saved).
+  void decide_clock_deltas(std::uint32_t clocks) {
+    for (std::uint32_t c = 0; c < clocks; ++c) {
+      const ClockInfo* clock = detail::clock_at(schema_, c);
+      const std::uint64_t saved = load64(payload_ + references_end_ + 8 + 8 * std::size_t{c});
+      deltas_[c] = clock && clock->read ? static_cast<std::uint64_t>(clock->read()) - saved : 0;
+    }
+  }
+
+  // The staged time(s) of a time field: an integer, or an array of them.
+  void rebase(std::uint32_t t, std::uint8_t* stage, const FieldTime& time) const {
+    const TypeInfo& type = schema_.types[t];
+    if (type.kind == Kind::Array) {
+      const std::size_t stride = schema_.types[type.element].size;
+      for (std::uint64_t i = 0; i < type.count; ++i) rebase(type.element, stage + i * stride, time);
+    } else if (type.kind == Kind::Int || type.kind == Kind::UInt) {
+      detail::rebase_time(stage, type.size, time.never, deltas_[time.clock->index]);
+    }
   }
 
   // Reads the reference at `*at` (advancing it): its target's address in the live roots.
@@ -123,6 +149,10 @@ class Restorer {
                                     ? bit_field(field, stage + field.offset)
                                     : value(field.type, stage + field.offset, live + field.offset);
           if (result != Result::Ok) return result;
+          if ((field.flags & kFieldClockTime) && field.time && field.time->clock &&
+              field.bit_width == 0) {
+            rebase(field.type, stage + field.offset, *field.time);
+          }
           if ((field.flags & kFieldHasRange) && field.range != nullptr && !in_range(field, wire)) {
             return Result::Rejected;
           }
@@ -210,6 +240,8 @@ class Restorer {
   std::size_t at_ = 0;
   std::size_t references_ = 0;
   std::uint32_t reference_count_ = 0;
+  std::size_t references_end_ = 0;  // where the clock readings begin (or the payload ends)
+  std::uint64_t deltas_[kMaxClocks] = {};
 };
 
 // The record's header checked against this build; the payload's bounds in `*payload`.

@@ -28,6 +28,7 @@ class Saver {
     put32(0);  // no heap objects
     put32(static_cast<std::uint32_t>(target_count_));
     for (std::size_t i = 0; i < target_count_ && result_ == Result::Ok; ++i) reference(i);
+    clock_readings();
     *size = at_;
     return result_;
   }
@@ -46,6 +47,27 @@ class Saver {
     std::uint8_t bytes[4];
     store32(bytes, v);
     put(bytes, 4);
+  }
+  void put64(std::uint64_t v) {
+    std::uint8_t bytes[8];
+    detail::store64(bytes, v);
+    put(bytes, 8);
+  }
+
+  // The epoch 0 (a device restores only after a reset: its times always move) and each
+  // clock's reading.
+  void clock_readings() {
+    const std::uint32_t clocks = detail::clock_count(schema_);
+    if (clocks == 0) return;
+    if (clocks > kMaxClocks) {
+      result_ = Result::Unsupported;
+      return;
+    }
+    put64(0);
+    for (std::uint32_t c = 0; c < clocks; ++c) {
+      const ClockInfo* clock = detail::clock_at(schema_, c);
+      put64(clock && clock->read ? static_cast<std::uint64_t>(clock->read()) : 0);
+    }
   }
 
   void value(std::uint32_t t, const std::uint8_t* p) {

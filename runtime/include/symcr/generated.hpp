@@ -74,6 +74,7 @@ enum : std::uint32_t {
 enum : std::uint32_t {
   kFieldBase = 1u << 0,       // a base-class subobject; `name` is the base's type name
   kFieldHasRange = 1u << 1,   // range_min/range_max validate restored values
+  kFieldClockTime = 1u << 2,  // a time of a named clock (`time`): rebased on restore
 };
 
 // RootInfo::flags
@@ -92,6 +93,22 @@ struct FieldRange {
   double max;
 };
 
+// A clock the program names (symcr-gen's `clock(...)`): checkpoints record its reading, and a
+// restore in another process moves the clock's times by its advance since the checkpoint.
+// Clocks are numbered in the byte order of their names (docs/format.md §3).
+struct ClockInfo {
+  const char* name;          // null in the device profile's tables
+  std::int64_t (*read)();    // the program's reading function; null in a schema without code
+  std::uint32_t index;       // this clock's number among the schema's clocks
+};
+
+// A member that holds a time of `clock` (kFieldClockTime). `never` (0 unless annotated) means
+// "no time yet" and is restored as it is.
+struct FieldTime {
+  const ClockInfo* clock;
+  std::int64_t never;
+};
+
 struct FieldInfo {
   const char* name;                  // source name of the member (or base type name)
   std::uint32_t type;                // index into Schema::types
@@ -102,6 +119,7 @@ struct FieldInfo {
   std::uint32_t flags;               // kField*
   const char* const* renamed_from;   // nullptr-terminated list of old names, or nullptr
   const FieldRange* range;           // with kFieldHasRange: the bounds on the value; else null
+  const FieldTime* time;             // with kFieldClockTime: the clock of its times; else null
 };
 
 // Per-kind operations: the only code the runtime cannot derive from offsets. Implemented as

@@ -53,7 +53,8 @@ enum {
   SYMCR_KEPT = 1,
   SYMCR_DROPPED = 2,
   SYMCR_CONVERTED = 3,
-  SYMCR_REJECTED = 4
+  SYMCR_REJECTED = 4,
+  SYMCR_REBASED = 5
 };
 
 /* "Io", "Checksum", ...; "Unknown" for a value that is not an error code. */

@@ -98,6 +98,7 @@ enum class Decision : std::uint8_t {
   Dropped,    // field or root removed: skipped
   Converted,  // converted between types (detail: "int16 -> int32"); also renames, enum remaps
   Rejected,   // could not be restored; kept the new build's value (detail: why)
+  Rebased,    // a time of a clock, restored in another process: moved by the clock's advance
 };
 
 const char* decision_name(Decision decision);
@@ -156,6 +157,7 @@ class Report {
  private:
   friend struct detail::ReportAccess;  // the runtime and symcr's tools fill reports
   void add(std::string path, Decision decision, std::string detail, bool lossy);
+  void remove(Decision decision);
   void set_source(std::shared_ptr<const detail::ReportSource> source);
 
   Status status_;

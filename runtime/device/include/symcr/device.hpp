@@ -65,6 +65,8 @@ std::size_t scratch_size(const Schema& schema);
 constexpr std::size_t kMaxReferences = 32;
 // The deepest path from a root to a pointer's target (fields and array elements).
 constexpr std::size_t kMaxPathSteps = 16;
+// Clocks whose times a checkpoint may hold (symcr-gen's `clock`): more is Unsupported.
+constexpr std::size_t kMaxClocks = 8;
 
 // Writes the record of the roots' current values into out[0, capacity); `*size` is its size.
 Result save(const Build& build, std::uint64_t sequence, std::uint8_t* out, std::size_t capacity,
