@@ -432,6 +432,8 @@ void SchemaBuilder::addTranslationUnit(
   TypeWalker Walker(Context, S, TUIndex, Program, Diags, Select);
   Walker.PolymorphicClasses = &Index.PolymorphicClasses;
   const SourceManager &SM = Context.getSourceManager();
+  std::vector<std::tuple<std::string, QualType, std::uint32_t>> ShallowRoots;
+  std::vector<std::uint32_t> RootTypes;
   for (auto &Entry : Index.Variables) {
     for (VarDecl *VD : Entry.second) {
       bool Annotated = hasAnnotation(VD, "checkpoint") ||
@@ -592,8 +594,12 @@ void SchemaBuilder::addTranslationUnit(
         }
       }
       Program.Roots.push_back(std::move(Root));
+      RootTypes.push_back(TypeIndex);
+      if (Shallow)
+        ShallowRoots.emplace_back(Name, Type, TypeIndex);
     }
   }
+  Walker.addReferenceMembers(ShallowRoots, RootTypes);
 }
 
 void SchemaBuilder::dropClassesWithoutVtable() {

@@ -784,8 +784,9 @@ class Encoder {
     const TypeInfo& type = types_[type_index];
     switch (type.kind) {
       case Kind::Struct:
-        for (std::uint32_t f = 0; f < type.field_count; ++f) {
-          const FieldInfo& field = type.fields[f];
+        // Fields, then the members a pointer may target without their values being saved.
+        for (std::uint32_t f = 0; f < type.field_count + type.reference_member_count; ++f) {
+          const FieldInfo& field = *step_member(type, f);
           if (field.bit_width) continue;
           const std::uintptr_t start = base + field.offset;
           if (target < start || target >= start + size_of(field.type)) continue;

@@ -138,12 +138,13 @@ class Walker {
       };
       auto on_step = [&](std::uint32_t step) {
         const TypeInfo& t = writer_.types[type];
-        type = t.kind == Kind::Struct    ? t.fields[step].type
+        const FieldInfo* member = t.kind == Kind::Struct ? step_member(t, step) : nullptr;
+        type = member                    ? member->type
                : t.kind == Kind::Variant ? t.alternatives[step]
                                          : t.element;
-        if (t.kind == Kind::Struct) {
+        if (member) {
           text += '.';
-          text += t.fields[step].name;
+          text += member->name;
         } else if (t.kind == Kind::Array || t.kind == Kind::String) {  // an element or character
           append_path(text, PathFrame{PathFrame::Kind::Index, nullptr, step});
         } else if (t.kind == Kind::Variant) {
