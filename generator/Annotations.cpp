@@ -137,6 +137,8 @@ static bool directiveKindFromName(const std::string &Name,
     Kind = DirectiveKind::RestoreAt;
   else if (Name == "store")
     Kind = DirectiveKind::Store;
+  else if (Name == "not_owner")
+    Kind = DirectiveKind::NotOwner;
   else
     return false;
   return true;

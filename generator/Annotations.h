@@ -33,6 +33,7 @@ enum class DirectiveKind {
   RestoreAt,    ///< restore_at(function, entry|exit [, on_failure=continue|stop] ...)
   Store,        ///< store(path [, slots=N] [, slot_size=N] [, durability=...]
                 ///< [, fallback_depth=N [, confirm_after=N]])
+  NotOwner,     ///< not_owner(Type::field, ...): as SYMCR_NOT_OWNER
 };
 
 struct DirectiveArgument {

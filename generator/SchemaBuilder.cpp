@@ -331,6 +331,7 @@ void SchemaBuilder::addTranslationUnit(
       }
       case DirectiveKind::Skip:
       case DirectiveKind::Include:
+      case DirectiveKind::NotOwner:
       case DirectiveKind::Range:
       case DirectiveKind::Renamed: {
         if (D.Kind == DirectiveKind::Renamed && I == 1)
@@ -343,6 +344,7 @@ void SchemaBuilder::addTranslationUnit(
         std::string Reason = IsSidecar ? "skipped by the annotation file"
                                        : "skipped by '#pragma symcr skip'";
         if (D.Kind != DirectiveKind::Include &&
+            D.Kind != DirectiveKind::NotOwner &&
             D.Kind != DirectiveKind::Range &&
             resolveTypeName(Index, Text, Keys, &Records, CanonicalName)) {
           Found = true;
@@ -367,6 +369,7 @@ void SchemaBuilder::addTranslationUnit(
               " '" + Text + "' in symcr " +
               (D.Kind == DirectiveKind::Skip      ? "skip"
                : D.Kind == DirectiveKind::Include ? "include"
+               : D.Kind == DirectiveKind::NotOwner ? "not_owner"
                : D.Kind == DirectiveKind::Range   ? "range"
                                                   : "renamed") +
               " directive");
@@ -405,6 +408,8 @@ void SchemaBuilder::addTranslationUnit(
             Select.SkippedFields[{K, Member}] = Reason;
           else if (D.Kind == DirectiveKind::Include)
             Select.IncludedFields.insert({K, Member});
+          else if (D.Kind == DirectiveKind::NotOwner)
+            Select.NotOwnerFields.insert({K, Member});
           else if (D.Kind == DirectiveKind::Range)
             Select.FieldRanges[{K, Member}] = {
                 std::strtod(D.Arguments[1].Text.c_str(), nullptr),

@@ -376,6 +376,27 @@ std::uint32_t TypeWalker::pointer(QualType Type, const PointerType *PT,
   return Index;
 }
 
+std::uint32_t TypeWalker::neverOwningPointer(QualType Type, const WalkContext &C) {
+  Type = Type.getCanonicalType().getUnqualifiedType();
+  QualType Pointee = Type->getAs<PointerType>()->getPointeeType();
+  if (!checkPointee(Pointee, C, "pointer"))
+    return symcr::kNoType;
+  TypeModel Model;
+  Model.Kind = symcr::Kind::Pointer;
+  Model.Flags = symcr::kTypeNeverOwns;
+  Model.Name = canonicalName(Type, C);
+  Model.Size = Context.getTypeSizeInChars(Type).getQuantity();
+  Model.Align = Context.getTypeAlignInChars(Type).getQuantity();
+  // Its own slot beside the owning pointer of the same name: the flag differs.
+  bool Fresh;
+  std::uint32_t Index = reserve(Model.Name + " (never owns)", Model.Name, Fresh);
+  Model.Element = walk(Pointee, intoPointee(C, Model.Name));
+  if (Model.Element == symcr::kNoType)
+    return symcr::kNoType;
+  store(Index, std::move(Model), C);
+  return Index;
+}
+
 std::string TypeWalker::whyNotCreatable(const CXXRecordDecl *Class) {
   std::string Why;
   if (isSkippedType(Class, Why))
@@ -595,7 +616,17 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
     }
     FieldModel Field;
     Field.Name = Name;
-    Field.Type = walk(FieldType, F);
+    bool NotOwner = hasAnnotation(FD, "not_owner") ||
+                    Lookup(Select.NotOwnerFields, Name) != Select.NotOwnerFields.end();
+    if (NotOwner && !FieldType.getCanonicalType()->isPointerType()) {
+      Sink->error(F.Where, "member '" + F.Path +
+                               "' is declared never to own a heap object "
+                               "(SYMCR_NOT_OWNER, not_owner), but it is not a raw "
+                               "pointer");
+      Ok = false;
+      continue;
+    }
+    Field.Type = NotOwner ? neverOwningPointer(FieldType, F) : walk(FieldType, F);
     if (Field.Type == symcr::kNoType) {
       Ok = false;
       continue;

@@ -41,6 +41,8 @@ struct Selections {
   std::map<std::string, std::vector<std::string>> TypeRenames;
   std::map<std::string, std::vector<std::string>> RootRenames;
   std::set<std::pair<std::string, std::string>> IncludedFields;
+  /// not_owner(Type::field): pointers declared never to own a heap object.
+  std::set<std::pair<std::string, std::string>> NotOwnerFields;
   /// range(Type::field, lo, hi) directives.
   std::map<std::pair<std::string, std::string>, std::pair<double, double>>
       FieldRanges;
@@ -122,6 +124,9 @@ private:
                       const WalkContext &C);
   std::uint32_t pointer(clang::QualType Type, const clang::PointerType *PT,
                         const WalkContext &C);
+  /// A raw pointer declared never to own a heap object (kTypeNeverOwns): its pointee is
+  /// walked, but no heap lifecycle or dynamic type is sought for it.
+  std::uint32_t neverOwningPointer(clang::QualType Type, const WalkContext &C);
   std::uint32_t synthesizedPair(clang::QualType Key, clang::QualType Value,
                                 const WalkContext &C);
   bool fillFields(const clang::RecordDecl *RD, TypeModel &Model, const WalkContext &C);

@@ -29,6 +29,7 @@
 #define SYMCR_SKIP __attribute__((annotate("symcr::skip")))
 #define SYMCR_RENAMED_FROM(old_name) __attribute__((annotate("symcr::renamed_from:" old_name)))
 #define SYMCR_RANGE(lo, hi) __attribute__((annotate("symcr::range:" #lo ":" #hi)))
+#define SYMCR_NOT_OWNER __attribute__((annotate("symcr::not_owner")))
 #else
 #define SYMCR_CHECKPOINT
 #define SYMCR_CHECKPOINT_SHALLOW
@@ -36,6 +37,7 @@
 #define SYMCR_SKIP
 #define SYMCR_RENAMED_FROM(old_name)
 #define SYMCR_RANGE(lo, hi)
+#define SYMCR_NOT_OWNER
 #endif
 
 namespace symcr {
