@@ -74,6 +74,11 @@ Status HostLayout::extent_of(std::uint32_t t, int depth) {
       }
       size = align_up(cursor == 0 ? 1 : cursor, align);
       ours.fields = fields.empty() ? nullptr : fields.data();
+      // Reference members lie among members this layout leaves out: they have no place in it,
+      // and a pointer to one is reported as not restored.
+      ours.flags &= ~std::uint32_t{kTypeReferenceMembers};
+      ours.reference_members = nullptr;
+      ours.reference_member_count = 0;
       break;
     }
     default:

@@ -170,6 +170,8 @@ static bool directiveKindFromName(const std::string &Name,
     Kind = DirectiveKind::Clock;
   else if (Name == "time")
     Kind = DirectiveKind::Time;
+  else if (Name == "not_owner")
+    Kind = DirectiveKind::NotOwner;
   else
     return false;
   return true;
@@ -236,7 +238,7 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
     Diags.error(At(NameBegin),
                 "unknown symcr directive '" + Name +
                     "' (expected checkpoint, skip, renamed, include, range, "
-                    "checkpoint_at, restore_at, store, clock or time)");
+                    "checkpoint_at, restore_at, store, clock, time or not_owner)");
     return false;
   }
   SkipSpace();

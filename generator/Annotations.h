@@ -36,6 +36,7 @@ enum class DirectiveKind {
                 ///< [, fallback_depth=N [, confirm_after=N]])
   Clock,        ///< clock([name,] function): a clock and its reading function
   Time,         ///< time(Type::field | typedef, clock [, never=N]): a time of a clock
+  NotOwner,     ///< not_owner(Type::field, ...): as SYMCR_NOT_OWNER
 };
 
 /// Parses SYMCR_TIME's text ("millis" or "millis, never=0xFFFFFFFF"); false with \p Error

@@ -189,6 +189,9 @@ struct TypeModel {
     std::string Why;
   };
   std::vector<LeftMember> LeftToNewBuild;
+  /// Members whose values are not saved but which a pointer may target (kTypeReferenceMembers:
+  /// a shallow root's unselected members, and the parts of them on the way to a pointee).
+  std::vector<FieldModel> ReferenceMembers;
 
   std::vector<std::string> leftToNewBuildNames() const {
     std::vector<std::string> Names;

@@ -15,6 +15,78 @@
 
 namespace symcr_gen {
 
+/// Whether an object of type \p T is, or has as a base, a \p Class object.
+static bool isA(const ProgramModel &Program, std::uint32_t T, std::uint32_t Class, int Depth) {
+  if (T == Class)
+    return true;
+  if (Depth > 64 || T >= Program.Types.size())
+    return false;
+  const TypeModel &Type = Program.Types[T];
+  for (const std::vector<FieldModel> *List : {&Type.Fields, &Type.ReferenceMembers})
+    for (const FieldModel &F : *List)
+      if ((F.Flags & symcr::kFieldBase) && isA(Program, F.Type, Class, Depth + 1))
+        return true;
+  return false;
+}
+
+/// The members and elements of the roots (selected or reference members) that are \p Class
+/// objects, by path ("vehicle.mode_auto", "vehicle.rtl_modes[]").
+static void collectPointees(const ProgramModel &Program, std::uint32_t T, std::uint32_t Class,
+                            const std::string &Path, int Depth, std::vector<std::string> &Out) {
+  if (Depth > 64 || T >= Program.Types.size())
+    return;
+  const TypeModel &Type = Program.Types[T];
+  if (Type.Kind == symcr::Kind::Array) {
+    if (isA(Program, Type.Element, Class, 0))
+      Out.push_back(Path + "[]");
+    else
+      collectPointees(Program, Type.Element, Class, Path + "[]", Depth + 1, Out);
+    return;
+  }
+  for (const std::vector<FieldModel> *List : {&Type.Fields, &Type.ReferenceMembers})
+    for (const FieldModel &F : *List) {
+      if (F.Flags & symcr::kFieldBase)
+        continue;
+      std::string Member = Path + "." + F.Name;
+      if (isA(Program, F.Type, Class, 0))
+        Out.push_back(Member);
+      else
+        collectPointees(Program, F.Type, Class, Member, Depth + 1, Out);
+    }
+}
+
+/// What the pointer type \p T may point at: the state's objects of its class, by path, and
+/// unless it never owns a heap object, the classes of the heap objects it may own.
+static void writePointees(std::ostream &OS, const ProgramModel &Program, std::uint32_t T) {
+  const TypeModel &Pointer = Program.Types[T];
+  std::vector<std::string> Paths;
+  for (const RootModel &Root : Program.Roots) {
+    if (isA(Program, Root.Type, Pointer.Element, 0))
+      Paths.push_back(Root.Name);
+    else
+      collectPointees(Program, Root.Type, Pointer.Element, Root.Name, 0, Paths);
+  }
+  OS << "    " << Pointer.Name << " may point at: ";
+  for (std::size_t I = 0; I < Paths.size(); ++I)
+    OS << (I ? ", " : "") << Paths[I];
+  if (Paths.empty())
+    OS << "no object of the state";
+  const TypeModel &Pointee = Program.Types[Pointer.Element];
+  if (Pointer.Flags & symcr::kTypeNeverOwns) {
+    OS << "; never a heap object (not_owner)";
+  } else if (Pointee.Flags & symcr::kTypePolymorphic) {
+    OS << "; heap objects of: ";
+    for (std::size_t D = 0; D < Pointee.DynamicTypes.size(); ++D)
+      OS << (D ? ", " : "") << Program.Types[Pointee.DynamicTypes[D]].Name;
+    if (Pointee.DynamicTypes.empty())
+      OS << "none";
+  } else {
+    OS << "; heap objects of: " << Pointee.Name;
+  }
+  OS << "\n";
+}
+
+
 std::string renderReport(const ProgramModel &Program) {
   std::ostringstream OS;
   OS << "symcr-gen report: " << Program.Roots.size() << " root(s), "
@@ -34,6 +106,8 @@ std::string renderReport(const ProgramModel &Program) {
         continue;
       Order.push_back(T);
       const TypeModel &Type = Program.Types[T];
+      for (auto It = Type.ReferenceMembers.rbegin(); It != Type.ReferenceMembers.rend(); ++It)
+        Pending.push_back(It->Type);
       for (auto It = Type.Fields.rbegin(); It != Type.Fields.rend(); ++It)
         Pending.push_back(It->Type);
       for (auto It = Type.Alternatives.rbegin(); It != Type.Alternatives.rend();
@@ -85,8 +159,14 @@ std::string renderReport(const ProgramModel &Program) {
              << (F.Never ? ", never " + std::to_string(F.Never) : std::string()) << ")";
         OS << "\n";
       }
+      for (const FieldModel &F : Type.ReferenceMembers)
+        OS << "    reference only " << (F.Flags & symcr::kFieldBase ? "base " : "")
+           << F.Name << ": " << Program.Types[F.Type].Name << " @" << F.Offset << "\n";
       for (const std::string &S : Type.Skipped)
         OS << "    skipped " << S << "\n";
+      if (Type.Kind == symcr::Kind::Pointer && Type.Element != symcr::kNoType &&
+          Program.Types[Type.Element].Kind == symcr::Kind::Struct)
+        writePointees(OS, Program, T);
       if (!Type.DynamicTypesReachedBy.empty()) {
         OS << "    heap objects behind a " << Type.Name
            << "* are saved as their class: ";

@@ -336,6 +336,7 @@ void SchemaBuilder::addTranslationUnit(
       }
       case DirectiveKind::Skip:
       case DirectiveKind::Include:
+      case DirectiveKind::NotOwner:
       case DirectiveKind::Range:
       case DirectiveKind::Time:
       case DirectiveKind::Renamed: {
@@ -365,6 +366,7 @@ void SchemaBuilder::addTranslationUnit(
         }
         if (D.Kind != DirectiveKind::Include &&
             D.Kind != DirectiveKind::Range && D.Kind != DirectiveKind::Time &&
+            D.Kind != DirectiveKind::NotOwner &&
             resolveTypeName(Index, Text, Keys, &Records, CanonicalName)) {
           Found = true;
           for (const std::string &K : Keys) {
@@ -388,6 +390,7 @@ void SchemaBuilder::addTranslationUnit(
               " '" + Text + "' in symcr " +
               (D.Kind == DirectiveKind::Skip      ? "skip"
                : D.Kind == DirectiveKind::Include ? "include"
+               : D.Kind == DirectiveKind::NotOwner ? "not_owner"
                : D.Kind == DirectiveKind::Range   ? "range"
                : D.Kind == DirectiveKind::Time    ? "time"
                                                   : "renamed") +
@@ -429,6 +432,8 @@ void SchemaBuilder::addTranslationUnit(
             Select.IncludedFields.insert({K, Member});
           else if (D.Kind == DirectiveKind::Time)
             Select.FieldTimes[{K, Member}] = Time;
+          else if (D.Kind == DirectiveKind::NotOwner)
+            Select.NotOwnerFields.insert({K, Member});
           else if (D.Kind == DirectiveKind::Range)
             Select.FieldRanges[{K, Member}] = {
                 std::strtod(D.Arguments[1].Text.c_str(), nullptr),
@@ -462,6 +467,8 @@ void SchemaBuilder::addTranslationUnit(
   TypeWalker Walker(Context, S, TUIndex, Program, Diags, Select);
   Walker.PolymorphicClasses = &Index.PolymorphicClasses;
   const SourceManager &SM = Context.getSourceManager();
+  std::vector<std::tuple<std::string, QualType, std::uint32_t>> ShallowRoots;
+  std::vector<std::uint32_t> RootTypes;
   for (auto &Entry : Index.Variables) {
     for (VarDecl *VD : Entry.second) {
       bool Annotated = hasAnnotation(VD, "checkpoint") ||
@@ -622,8 +629,12 @@ void SchemaBuilder::addTranslationUnit(
         }
       }
       Program.Roots.push_back(std::move(Root));
+      RootTypes.push_back(TypeIndex);
+      if (Shallow)
+        ShallowRoots.emplace_back(Name, Type, TypeIndex);
     }
   }
+  Walker.addReferenceMembers(ShallowRoots, RootTypes);
 }
 
 void SchemaBuilder::dropClassesWithoutVtable() {

@@ -173,6 +173,21 @@ private:
       }
       OS << "};\n";
     }
+    if (T.reference_member_count != 0) {
+      std::vector<std::string> MemberRenamed;
+      for (std::uint32_t M = 0; M < T.reference_member_count; ++M)
+        MemberRenamed.push_back(
+            names("reference_member_renamed_" + Index + "_" + std::to_string(M),
+                  T.reference_members[M].renamed_from));
+      OS << "const symcr::FieldInfo reference_members_" << I << "[] = {\n";
+      for (std::uint32_t M = 0; M < T.reference_member_count; ++M) {
+        const symcr::FieldInfo &Member = T.reference_members[M];
+        OS << "    {" << nameText(Member.name) << ", " << Member.type << "u, "
+           << Member.offset << "u, 0, 0, " << Member.flags << "u, "
+           << MemberRenamed[M] << ", nullptr},\n";
+      }
+      OS << "};\n";
+    }
     if (T.enumerator_count != 0 && !Device) {
       OS << "const symcr::EnumeratorInfo enumerators_" << I << "[] = {\n";
       for (std::uint32_t E = 0; E < T.enumerator_count; ++E) {
@@ -224,7 +239,9 @@ private:
          << ", " << TypeRenamed[I] << ", "
          << (hasMigrate(Program, Model) ? "&symcr_gen::migrate_" + Index
                                         : std::string("nullptr"))
-         << ", " << TypeLeft[I] << "},  // " << Index << "\n";
+         << ", " << TypeLeft[I] << ", "
+         << (T.reference_member_count ? "reference_members_" + Index : "nullptr")
+         << ", " << T.reference_member_count << "u},  // " << Index << "\n";
     }
     OS << "};\n";
   }

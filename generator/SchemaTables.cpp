@@ -62,6 +62,17 @@ SchemaTables::SchemaTables(const ProgramModel &Program) {
     Info.container_kind = T.ContainerKind;
     Info.renamed_from = aliases(T.RenamedFrom);
     Info.left_to_new_build = leftToNewBuild(T);
+    if (!T.ReferenceMembers.empty()) {
+      FieldTables.emplace_back();
+      std::vector<symcr::FieldInfo> &Members = FieldTables.back();
+      for (const FieldModel &Member : T.ReferenceMembers)
+        Members.push_back(symcr::FieldInfo{
+            Member.Name.c_str(), Member.Type,
+            static_cast<std::uint32_t>(Member.Offset), 0, 0, Member.Flags,
+            aliases(Member.RenamedFrom), nullptr, nullptr});
+      Info.reference_members = Members.data();
+      Info.reference_member_count = static_cast<std::uint32_t>(Members.size());
+    }
   }
   for (const RootModel &R : Program.Roots)
     Roots.push_back(symcr::RootInfo{R.Name.c_str(), R.Type, nullptr, R.Flags,

@@ -376,6 +376,27 @@ std::uint32_t TypeWalker::pointer(QualType Type, const PointerType *PT,
   return Index;
 }
 
+std::uint32_t TypeWalker::neverOwningPointer(QualType Type, const WalkContext &C) {
+  Type = Type.getCanonicalType().getUnqualifiedType();
+  QualType Pointee = Type->getAs<PointerType>()->getPointeeType();
+  if (!checkPointee(Pointee, C, "pointer"))
+    return symcr::kNoType;
+  TypeModel Model;
+  Model.Kind = symcr::Kind::Pointer;
+  Model.Flags = symcr::kTypeNeverOwns;
+  Model.Name = canonicalName(Type, C);
+  Model.Size = Context.getTypeSizeInChars(Type).getQuantity();
+  Model.Align = Context.getTypeAlignInChars(Type).getQuantity();
+  // Its own slot beside the owning pointer of the same name: the flag differs.
+  bool Fresh;
+  std::uint32_t Index = reserve(Model.Name + " (never owns)", Model.Name, Fresh);
+  Model.Element = walk(Pointee, intoPointee(C, Model.Name));
+  if (Model.Element == symcr::kNoType)
+    return symcr::kNoType;
+  store(Index, std::move(Model), C);
+  return Index;
+}
+
 std::string TypeWalker::whyNotCreatable(const CXXRecordDecl *Class) {
   std::string Why;
   if (isSkippedType(Class, Why))
@@ -595,7 +616,17 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
     }
     FieldModel Field;
     Field.Name = Name;
-    Field.Type = walk(FieldType, F);
+    bool NotOwner = hasAnnotation(FD, "not_owner") ||
+                    Lookup(Select.NotOwnerFields, Name) != Select.NotOwnerFields.end();
+    if (NotOwner && !FieldType.getCanonicalType()->isPointerType()) {
+      Sink->error(F.Where, "member '" + F.Path +
+                               "' is declared never to own a heap object "
+                               "(SYMCR_NOT_OWNER, not_owner), but it is not a raw "
+                               "pointer");
+      Ok = false;
+      continue;
+    }
+    Field.Type = NotOwner ? neverOwningPointer(FieldType, F) : walk(FieldType, F);
     if (Field.Type == symcr::kNoType) {
       Ok = false;
       continue;
@@ -761,6 +792,174 @@ std::uint32_t TypeWalker::record(QualType Type, const RecordDecl *Decl,
   }
   store(Index, std::move(Model), C);
   return Index;
+}
+
+/// The classes (Struct types) the raw pointers reachable from \p RootTypes point to.
+static std::set<std::uint32_t> pointeeClasses(const ProgramModel &Program,
+                                              const std::vector<std::uint32_t> &RootTypes) {
+  std::set<std::uint32_t> Seen, Pointees;
+  std::vector<std::uint32_t> Pending(RootTypes.begin(), RootTypes.end());
+  while (!Pending.empty()) {
+    std::uint32_t T = Pending.back();
+    Pending.pop_back();
+    if (T >= Program.Types.size() || !Seen.insert(T).second)
+      continue;
+    const TypeModel &Model = Program.Types[T];
+    for (const FieldModel &F : Model.Fields)
+      Pending.push_back(F.Type);
+    for (std::uint32_t A : Model.Alternatives)
+      Pending.push_back(A);
+    for (std::uint32_t D : Model.DynamicTypes)
+      Pending.push_back(D);
+    if (Model.Element != symcr::kNoType)
+      Pending.push_back(Model.Element);
+    if (Model.Kind == symcr::Kind::Pointer && Model.Element < Program.Types.size() &&
+        Program.Types[Model.Element].Kind == symcr::Kind::Struct)
+      Pointees.insert(Model.Element);
+  }
+  return Pointees;
+}
+
+void TypeWalker::addReferenceMembers(
+    const std::vector<std::tuple<std::string, QualType, std::uint32_t>> &ShallowRoots,
+    const std::vector<std::uint32_t> &RootTypes) {
+  if (ShallowRoots.empty())
+    return;
+  std::set<std::uint32_t> Pointees = pointeeClasses(Program, RootTypes);
+  if (Pointees.empty())
+    return;
+  for (const auto &Root : ShallowRoots) {
+    const std::string &Name = std::get<0>(Root);
+    std::uint32_t Index = std::get<2>(Root);
+    const RecordDecl *RD = completeDefinition(
+        std::get<1>(Root)->getAsRecordDecl(), SourceLocation());
+    if (!RD)
+      continue;
+    const ASTRecordLayout &Layout = Context.getASTRecordLayout(RD);
+    std::vector<std::string> Keys = recordKeys(RD);
+    std::vector<FieldModel> Members;
+    for (const FieldDecl *FD : RD->fields()) {
+      std::string Member = FD->getName().str();
+      if (Member.empty() || FD->isBitField() || leftToNewBuild(FD->getType()))
+        continue;
+      const std::vector<FieldModel> &Selected = Program.Types[Index].Fields;
+      if (std::any_of(Selected.begin(), Selected.end(),
+                      [&](const FieldModel &F) { return F.Name == Member; }))
+        continue;
+      WalkContext C;
+      C.Path = Name + "." + Member;
+      C.Where = locationOf(Context, FD->getLocation());
+      std::uint32_t Type = referenceView(FD->getType(), Pointees, Name, C, 0);
+      if (Type == symcr::kNoType)
+        continue;
+      FieldModel Field;
+      Field.Name = Member;
+      Field.Type = Type;
+      Field.Offset = Layout.getFieldOffset(FD->getFieldIndex()) / 8;
+      Field.RenamedFrom = renamedFromAnnotations(FD);
+      for (const std::string &K : Keys) {
+        auto It = Select.FieldRenames.find({K, Member});
+        if (It != Select.FieldRenames.end())
+          Field.RenamedFrom.insert(Field.RenamedFrom.end(), It->second.begin(),
+                                   It->second.end());
+      }
+      Members.push_back(std::move(Field));
+    }
+    if (Members.empty())
+      continue;
+    TypeModel &Model = Program.Types[Index];
+    Model.ReferenceMembers = std::move(Members);
+    Model.Flags |= symcr::kTypeReferenceMembers;
+  }
+}
+
+std::uint32_t TypeWalker::referenceView(QualType Type, const std::set<std::uint32_t> &Pointees,
+                                        const std::string &Root, const WalkContext &C,
+                                        int Depth) {
+  Type = Type.getCanonicalType().getUnqualifiedType();
+  if (Depth > 64)
+    return symcr::kNoType;
+  auto Done = Views.find({Type.getTypePtr(), Root});
+  if (Done != Views.end())
+    return Done->second;
+  std::uint32_t Result = symcr::kNoType;
+  // "ModeLoiter (references of vehicle)": a view is its root's, so that two roots selecting
+  // differently never describe one type two ways.
+  const std::string Suffix = " (references of " + Root + ")";
+  if (const auto *AT = Context.getAsConstantArrayType(Type)) {
+    std::uint32_t Element = referenceView(AT->getElementType(), Pointees, Root, C, Depth + 1);
+    if (Element == symcr::kNoType)
+      return symcr::kNoType;
+    if (Pointees.count(Element) && !(Program.Types[Element].Flags & symcr::kTypeShallow)) {
+      Result = walk(Type, C); // an array of a pointee class: described in full
+    } else {
+      TypeModel Model;
+      Model.Kind = symcr::Kind::Array;
+      Model.Flags = symcr::kTypeShallow;
+      Model.Name = canonicalName(Type, C);
+      Model.Size = Context.getTypeSizeInChars(Type).getQuantity();
+      Model.Align = Context.getTypeAlignInChars(Type).getQuantity();
+      Model.Count = AT->getSize().getZExtValue();
+      Model.Element = Element;
+      bool Fresh;
+      Result = reserve(Model.Name + Suffix, Model.Name, Fresh);
+      store(Result, std::move(Model), C);
+    }
+  } else if (const RecordDecl *Decl = Type->getAsRecordDecl()) {
+    auto Walked = this->Walked.find({Type.getTypePtr(), false});
+    if (Walked != this->Walked.end() && Pointees.count(Walked->second))
+      return Walked->second;
+    const RecordDecl *RD = completeDefinition(Decl, Decl->getLocation());
+    llvm::StringRef StdName;
+    const auto *CRD = dyn_cast_or_null<CXXRecordDecl>(RD);
+    if (!RD || RD->isUnion() || RD->isInvalidDecl() || RD->isDependentType() ||
+        isStdTemplate(RD, StdName) || (CRD && (CRD->isLambda() || CRD->getNumVBases() > 0)))
+      return symcr::kNoType;
+    const ASTRecordLayout &Layout = Context.getASTRecordLayout(RD);
+    TypeModel Model = describe(Type, C);
+    Model.Kind = symcr::Kind::Struct;
+    Model.Flags = symcr::kTypeShallow | symcr::kTypeReferenceMembers;
+    if (CRD) {
+      for (const CXXBaseSpecifier &Base : CRD->bases()) {
+        const CXXRecordDecl *BaseRD = Base.getType()->getAsCXXRecordDecl();
+        if (!BaseRD)
+          continue;
+        std::uint32_t BaseType = referenceView(Base.getType(), Pointees, Root, C, Depth + 1);
+        if (BaseType == symcr::kNoType)
+          continue;
+        FieldModel Field;
+        Field.Name = Program.Types[BaseType].Name;
+        Field.Type = BaseType;
+        Field.Flags = symcr::kFieldBase;
+        Field.Offset = Layout.getBaseClassOffset(BaseRD).getQuantity();
+        Model.ReferenceMembers.push_back(std::move(Field));
+      }
+    }
+    for (const FieldDecl *FD : RD->fields()) {
+      std::string Member = FD->getName().str();
+      if (Member.empty() || FD->isBitField() || leftToNewBuild(FD->getType()))
+        continue;
+      WalkContext F = C;
+      F.Path = C.Path + "." + Member;
+      std::uint32_t MemberType = referenceView(FD->getType(), Pointees, Root, F, Depth + 1);
+      if (MemberType == symcr::kNoType)
+        continue;
+      FieldModel Field;
+      Field.Name = Member;
+      Field.Type = MemberType;
+      Field.Offset = Layout.getFieldOffset(FD->getFieldIndex()) / 8;
+      Field.RenamedFrom = renamedFromAnnotations(FD);
+      Model.ReferenceMembers.push_back(std::move(Field));
+    }
+    if (Model.ReferenceMembers.empty())
+      return symcr::kNoType;
+    bool Fresh;
+    Result = reserve(Model.Name + Suffix, Model.Name, Fresh);
+    store(Result, std::move(Model), C);
+  }
+  if (Result != symcr::kNoType)
+    Views[{Type.getTypePtr(), Root}] = Result;
+  return Result;
 }
 
 } // namespace symcr_gen

@@ -25,6 +25,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace symcr_gen {
@@ -40,6 +41,8 @@ struct Selections {
   std::map<std::string, std::vector<std::string>> TypeRenames;
   std::map<std::string, std::vector<std::string>> RootRenames;
   std::set<std::pair<std::string, std::string>> IncludedFields;
+  /// not_owner(Type::field): pointers declared never to own a heap object.
+  std::set<std::pair<std::string, std::string>> NotOwnerFields;
   /// range(Type::field, lo, hi) directives.
   std::map<std::pair<std::string, std::string>, std::pair<double, double>>
       FieldRanges;
@@ -97,6 +100,14 @@ public:
     return recordName(RD, WalkContext());
   }
 
+  /// After every root of the TU is walked: lists, in each shallow root's type, the unselected
+  /// members at or inside which a pointer of the TU's state may point (kTypeReferenceMembers),
+  /// so that such a pointer is saved as a reference by path. \p ShallowRoots: each shallow
+  /// root's name, declared type and type index; \p RootTypes: every root's type index.
+  void addReferenceMembers(
+      const std::vector<std::tuple<std::string, clang::QualType, std::uint32_t>> &ShallowRoots,
+      const std::vector<std::uint32_t> &RootTypes);
+
   /// The TU's class definitions with virtual functions (NameIndex).
   const std::vector<const clang::CXXRecordDecl *> *PolymorphicClasses = nullptr;
 
@@ -117,6 +128,9 @@ private:
                       const WalkContext &C);
   std::uint32_t pointer(clang::QualType Type, const clang::PointerType *PT,
                         const WalkContext &C);
+  /// A raw pointer declared never to own a heap object (kTypeNeverOwns): its pointee is
+  /// walked, but no heap lifecycle or dynamic type is sought for it.
+  std::uint32_t neverOwningPointer(clang::QualType Type, const WalkContext &C);
   std::uint32_t synthesizedPair(clang::QualType Key, clang::QualType Value,
                                 const WalkContext &C);
   bool fillFields(const clang::RecordDecl *RD, TypeModel &Model, const WalkContext &C);
@@ -162,6 +176,14 @@ private:
   Diagnostics *Sink;
   const Selections &Select;
   std::unique_ptr<clang::PrintingPolicy> Policy;
+  /// The type a reference member of \p Type is: the type itself when it is a class some
+  /// pointer points to (\p Pointees), else a view (kTypeShallow) holding only the members on
+  /// the way to such a class; kNoType when it holds none.
+  std::uint32_t referenceView(clang::QualType Type, const std::set<std::uint32_t> &Pointees,
+                              const std::string &Root, const WalkContext &C, int Depth);
+  /// Views already made, by canonical Type* and root.
+  std::map<std::pair<const clang::Type *, std::string>, std::uint32_t> Views;
+
   /// Types already walked in this TU (by canonical Type* and shallowness).
   std::map<std::pair<const clang::Type *, bool>, std::uint32_t> Walked;
   std::map<const clang::RecordDecl *, std::string> AnonymousNames;

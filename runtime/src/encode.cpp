@@ -54,6 +54,11 @@ struct PointerTarget {
   std::uint32_t type;    // pointee type
   std::uint32_t region;  // after classification
   bool shared;           // some shared_ptr holds this target
+  bool may_own = false;  // some pointer not declared never-owning (kTypeNeverOwns) holds it
+  // The first never-owning pointer holding it (its address and Pointer type), to name it when
+  // the target turns out to be a heap object; kNoType when none.
+  std::uintptr_t never_owner_slot = 0;
+  std::uint32_t never_owner_type = kNoType;
 };
 
 struct HeapObject {
@@ -413,6 +418,7 @@ class Encoder {
       }
       case Kind::Pointer:
         encode_reference(type, *reinterpret_cast<const void* const*>(p), false);
+        if (ok() && (type.flags & kTypeNeverOwns)) note_never_owner(type_index, p);
         return;
       case Kind::SharedPtr:
         encode_reference(type, static_cast<const SharedPtrOps*>(type.ops)->get(p), true);
@@ -560,6 +566,7 @@ class Encoder {
         s_.references.push_back(PointerTarget{address, type.element, kNoRegion, shared});
       }
     }
+    if (entry != kOutside && !(type.flags & kTypeNeverOwns)) s_.references[entry].may_own = true;
     if (entry == kOutside) {
       if (shared) {
         return fail_unsupported("a shared_ptr into static storage or the stack (object %p)",
@@ -589,11 +596,72 @@ class Encoder {
     return kNoRegion;
   }
 
+  // A never-owning pointer's target: remembered until classified (only the last one written
+  // can be it: encode_reference appended or found it just before).
+  void note_never_owner(std::uint32_t pointer_type, const std::uint8_t* slot) {
+    const void* target = *reinterpret_cast<const void* const*>(slot);
+    if (!target) return;
+    bool inserted = false;
+    const std::uint32_t entry = s_.memo.find_or_insert(reinterpret_cast<std::uintptr_t>(target),
+                                                       types_[pointer_type].element, kNoRegion,
+                                                       inserted);
+    if (entry == kOutside || entry >= s_.references.size()) return;
+    PointerTarget& reference = s_.references[entry];
+    if (reference.never_owner_type != kNoType) return;
+    reference.never_owner_slot = reinterpret_cast<std::uintptr_t>(slot);
+    reference.never_owner_type = pointer_type;
+  }
+
+  // "vehicle.flightmode": the path of the pointer at `slot` (of Pointer type `type`), or its
+  // address when it lies in no indexed region.
+  __attribute__((cold)) void slot_path(std::uintptr_t slot, std::uint32_t type, char* out,
+                                       std::size_t size) {
+    std::snprintf(out, size, "the pointer at %p", reinterpret_cast<const void*>(slot));
+    const std::uint32_t region = find_region(slot);
+    Base base{};
+    s_.steps.clear();
+    if (region == kNoRegion || !resolve(region, slot, type, base, 0)) return;
+    std::string path;
+    std::uint32_t at = kNoType;
+    if (base.kind == kBaseObject && base.a < schema_.root_count) {
+      path = schema_.roots[base.a].name;
+      at = schema_.roots[base.a].type;
+    } else {
+      const Region& r = s_.regions[region];
+      char where[120];
+      describe(r, where, sizeof where);
+      path = where;
+      at = r.type;
+    }
+    for (std::uint32_t step : s_.steps) {
+      const TypeInfo& t = types_[at];
+      const FieldInfo* member = t.kind == Kind::Struct ? step_member(t, step) : nullptr;
+      if (member) {
+        path += ".";
+        path += member->name;
+        at = member->type;
+      } else {
+        path += "[" + std::to_string(step) + "]";
+        at = t.kind == Kind::Variant ? t.alternatives[step] : t.element;
+      }
+    }
+    s_.steps.clear();
+    std::snprintf(out, size, "%s", path.c_str());
+  }
+
   void classify(std::size_t i) {
     const PointerTarget reference = s_.references[i];
     // Without raw pointers every target is a shared_ptr's whole object, deduplicated by the
     // memo already: no region lookup is needed.
     std::uint32_t region = track_regions_ ? find_region(reference.address) : kNoRegion;
+    if (region == kNoRegion && !reference.may_own && reference.never_owner_type != kNoType) {
+      char path[160];
+      slot_path(reference.never_owner_slot, reference.never_owner_type, path, sizeof path);
+      return fail_unsupported(
+          "%s, declared never to own a heap object (SYMCR_NOT_OWNER / not_owner), points at a "
+          "%s at %p on the heap, outside the checkpointed state",
+          path, types_[reference.type].name, reinterpret_cast<const void*>(reference.address));
+    }
     if (region == kNoRegion) region = new_heap_object(reference);
     s_.references[i].region = region;
   }
@@ -797,8 +865,9 @@ class Encoder {
     const TypeInfo& type = types_[type_index];
     switch (type.kind) {
       case Kind::Struct:
-        for (std::uint32_t f = 0; f < type.field_count; ++f) {
-          const FieldInfo& field = type.fields[f];
+        // Fields, then the members a pointer may target without their values being saved.
+        for (std::uint32_t f = 0; f < type.field_count + type.reference_member_count; ++f) {
+          const FieldInfo& field = *step_member(type, f);
           if (field.bit_width) continue;
           const std::uintptr_t start = base + field.offset;
           if (target < start || target >= start + size_of(field.type)) continue;

@@ -254,16 +254,18 @@ bool PayloadReader::finish() {
   return fail("%zu bytes after the payload's references", in_.remaining());
 }
 
-// A step into a struct is a field index, into an array an element index, into an optional or
+// A step into a struct is a field index (then a reference member's: format.md §2), into an array an element index, into an optional or
 // unique_ptr 0 (its value), into a variant an alternative index, into a string a character
 // index (bounded by the string's length once restored).
 bool PayloadReader::step_into(std::uint32_t i, std::uint32_t& type, std::uint32_t step) {
   const TypeInfo& t = writer_.types[type];
   switch (t.kind) {
-    case Kind::Struct:
-      if (step >= t.field_count) return fail("reference %u: no field %u in %s", i, step, t.name);
-      type = t.fields[step].type;
+    case Kind::Struct: {
+      const FieldInfo* member = step_member(t, step);
+      if (!member) return fail("reference %u: no field %u in %s", i, step, t.name);
+      type = member->type;
       return true;
+    }
     case Kind::Array:
       if (step >= t.count) return fail("reference %u: index %u beyond %s", i, step, t.name);
       type = t.element;

@@ -81,6 +81,14 @@ constexpr std::uint32_t kNullCode = 0;
 constexpr std::uint32_t kOutsideCode = 1;
 constexpr std::uint32_t kFirstReference = 2;
 
+// The member a reference's step at a struct names: its fields first, then its reference
+// members (format.md §2); nullptr when there is no such member.
+inline const FieldInfo* step_member(const TypeInfo& type, std::uint32_t step) {
+  if (step < type.field_count) return &type.fields[step];
+  step -= type.field_count;
+  return step < type.reference_member_count ? &type.reference_members[step] : nullptr;
+}
+
 // What a reference starts from: a saved object (a root or heap object) or a container element.
 enum ReferenceBase : std::uint8_t { kBaseObject = 0, kBaseElement = 1 };
 

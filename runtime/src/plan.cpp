@@ -98,12 +98,18 @@ void Planner::find_dynamic_bases() {
 
 // ---- matching ------------------------------------------------------------------------
 std::uint32_t Planner::find_reader_type(const TypeInfo& writer) const {
+  // A restricted view (a shallow root's, or one of its reference members') shares its class's
+  // name but never stands for the class.
+  auto same_view = [&](const TypeInfo& reader) {
+    return ((reader.flags ^ writer.flags) & kTypeShallow) == 0;
+  };
   for (std::uint32_t t = 0; t < reader_.type_count; ++t) {
-    if (same_name(reader_.types[t].name, writer.name) && reader_.types[t].kind == writer.kind)
+    if (same_name(reader_.types[t].name, writer.name) && reader_.types[t].kind == writer.kind &&
+        same_view(reader_.types[t]))
       return t;
   }
   for (std::uint32_t t = 0; t < reader_.type_count; ++t) {
-    if (names_match(writer, reader_.types[t])) return t;
+    if (names_match(writer, reader_.types[t]) && same_view(reader_.types[t])) return t;
   }
   return kNoType;
 }

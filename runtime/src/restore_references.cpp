@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "report_access.hpp"
+#include "planner.hpp"
 #include "restorer.hpp"
 #include "schema_facts.hpp"
 
@@ -165,6 +166,82 @@ void Restorer::decide_materialisation() {
   }
 }
 
+namespace {
+
+// The reader's member (a field, or else a reference member) the writer's `member` maps to, by
+// name or the reader's renamed_from, bases to bases; kNoType when the reader has none. Its
+// offset and type go to `offset` and `type`.
+bool reader_member(const TypeInfo& reader, const FieldInfo& member, std::uint32_t& offset,
+                   std::uint32_t& type) {
+  const bool base = (member.flags & kFieldBase) != 0;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::uint32_t count = reader.field_count + reader.reference_member_count;
+    for (std::uint32_t m = 0; m < count; ++m) {
+      const FieldInfo& candidate = *step_member(reader, m);
+      if (((candidate.flags & kFieldBase) != 0) != base || candidate.bit_width != 0) continue;
+      if (pass == 0 ? planning::same_name(candidate.name, member.name)
+                    : planning::in_aliases(member.name, candidate.renamed_from)) {
+        offset = candidate.offset;
+        type = candidate.type;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+// The steps of `ref` from `from` on, which enter a member whose value is not saved (a
+// reference member): no plan node covers them, so each is matched by name in the reader's
+// types (fields and reference members alike), never by offset, like a plan would.
+void Restorer::map_by_names(RefRecord& ref, std::uint32_t writer, std::uint32_t reader,
+                            std::uint16_t from) {
+  for (std::uint16_t s = from; s < ref.step_count; ++s) {
+    const std::uint32_t step = steps_[ref.steps_at + s];
+    const std::uint32_t holder = reader;
+    const TypeInfo& wt = writer_.types[writer];
+    const TypeInfo& rt = reader_.types[reader];
+    if (wt.kind != rt.kind) {
+      ref.why = std::string("target's enclosing type ") + wt.name + " changed incompatibly";
+      return;
+    }
+    std::uint64_t offset = 0;
+    if (wt.kind == Kind::Struct) {
+      const FieldInfo* member = step_member(wt, step);
+      std::uint32_t member_offset = 0;
+      if (!member || !reader_member(rt, *member, member_offset, reader)) {
+        ref.why = std::string("target member ") + (member ? member->name : "?") + " of " +
+                  wt.name + " not in this build";
+        return;
+      }
+      writer = member->type;
+      offset = member_offset;
+    } else if (wt.kind == Kind::Array) {
+      if (step >= rt.count) {
+        ref.why = "target element " + std::to_string(step) + " beyond this build's array";
+        return;
+      }
+      offset = std::uint64_t{step} * reader_.types[rt.element].size;
+      writer = wt.element;
+      reader = rt.element;
+    } else {
+      ref.why = std::string("target lies inside a ") + wt.name +
+                " whose value is not checkpointed";
+      return;
+    }
+    mapped_.push_back({MappedStep::Kind::Offset, holder, offset});
+  }
+  if (!names_match(writer_.types[writer], reader_.types[reader])) {
+    ref.why = std::string("target is a ") + reader_.types[reader].name + " in this build, not a " +
+              writer_.types[writer].name;
+    return;
+  }
+  ref.mapped_count = static_cast<std::uint32_t>(mapped_.size()) - ref.mapped_at;
+  ref.reader_type = reader;
+  ref.resolved = true;
+}
+
 // Maps a reference's writer steps onto reader steps by name (via the plan), never offsets.
 void Restorer::map_reference(RefRecord& ref) {
   const PlanNode* node = nullptr;
@@ -196,6 +273,11 @@ void Restorer::map_reference(RefRecord& ref) {
     if (node->action == Action::Skip || node->action == Action::Reject) break;
     switch (node->action) {
       case Action::Struct: {
+        if (step >= node->fields.size()) {
+          // A member whose value is not saved: no plan node, matched by name from here on.
+          map_by_names(ref, node->writer, node->reader, s);
+          return;
+        }
         const FieldPlan& field = node->fields[step];
         if (field.reader_field == kNoType) {
           ref.why = std::string("target field ") + field.name + " removed in this build";

@@ -242,6 +242,8 @@ class Restorer {
 
   // Maps a reference's writer steps onto reader steps by name (via the plan), never offsets.
   void map_reference(RefRecord& ref);
+  void map_by_names(RefRecord& ref, std::uint32_t writer, std::uint32_t reader,
+                    std::uint16_t from);
 
   // Decides every pointer slot; the concrete paths of the few reported ones are rendered by a
   // third walk rather than remembered for every pointer of a large graph.

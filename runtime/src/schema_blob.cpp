@@ -77,6 +77,17 @@ void serialise_schema(const Schema& schema, std::vector<std::uint8_t>& out) {
             put_le(out, field.time->never);
           }
         }
+        if (type.flags & kTypeReferenceMembers) {
+          put_u32(out, type.reference_member_count);
+          for (std::uint32_t m = 0; m < type.reference_member_count; ++m) {
+            const FieldInfo& member = type.reference_members[m];
+            put_str(out, member.name);
+            put_u32(out, member.type);
+            put_u32(out, member.offset);
+            put_u32(out, member.flags & kFieldBase);
+            put_aliases(out, member.renamed_from);
+          }
+        }
         break;
       case Kind::Enum:
         put_u32(out, type.element);

@@ -47,6 +47,7 @@ constexpr std::uint32_t kMaxTypeSize = 0x7FFFFFFFu;
 // Minimum encoded sizes, used to bound counts by the bytes that remain.
 constexpr std::size_t kMinType = 1 + 4 + 4 + 4 + 2 + 1;
 constexpr std::size_t kMinField = 2 + 4 + 4 + 2 + 2 + 4 + 1;
+constexpr std::size_t kMinReferenceMember = 2 + 4 + 4 + 4 + 1;
 constexpr std::size_t kMinRoot = 2 + 4 + 4 + 1;
 constexpr std::size_t kMinEnumerator = 2 + 8;
 
@@ -54,6 +55,7 @@ constexpr std::size_t kMinEnumerator = 2 + 8;
 // still grow.
 struct TypeFixup {
   std::size_t name, aliases, left_to_new_build, fields, enumerators, alternatives;
+  std::size_t reference_members;
 };
 struct NamedFixup {
   std::size_t name, aliases;
@@ -147,7 +149,7 @@ class Parser {
 
   Status parse_type(std::uint32_t index, std::uint32_t type_count) {
     TypeInfo type{};
-    TypeFixup fixup{kNone, kNone, kNone, kNone, kNone, kNone};
+    TypeFixup fixup{kNone, kNone, kNone, kNone, kNone, kNone, kNone};
     std::uint8_t kind = 0;
     if (!in_.read(kind) || !in_.read(type.flags) || !in_.read(type.size) || !in_.read(type.align) ||
         !read_str(fixup.name) || !read_aliases(fixup.aliases) ||
@@ -218,6 +220,10 @@ class Parser {
           }
           s_.fields.push_back(field);
           field_fixups_.push_back(named);
+        }
+        if (type.flags & kTypeReferenceMembers) {
+          Status status = parse_reference_members(index, type_count, type, fixup);
+          if (!status.ok()) return status;
         }
         break;
       }
@@ -291,6 +297,37 @@ class Parser {
     return Status();
   }
 
+  // A struct's members that hold no value but may be a reference's target (format.md §2):
+  // kept with the fields, after them, as FieldInfo with only a name, type, offset and aliases.
+  Status parse_reference_members(std::uint32_t index, std::uint32_t type_count, TypeInfo& type,
+                                 TypeFixup& fixup) {
+    std::uint32_t count = 0;
+    if (!in_.read(count)) return truncated("reference member count");
+    if (count > in_.remaining() / kMinReferenceMember) {
+      return corrupt("type %u reference member count %u exceeds the schema's size", index, count);
+    }
+    fixup.reference_members = s_.fields.size();
+    type.reference_member_count = count;
+    for (std::uint32_t m = 0; m < count; ++m) {
+      FieldInfo member{};
+      NamedFixup named{};
+      if (!read_str(named.name) || !in_.read(member.type) || !in_.read(member.offset) ||
+          !in_.read(member.flags) || !read_aliases(named.aliases)) {
+        return truncated("reference member");
+      }
+      if (member.flags & ~std::uint32_t{kFieldBase}) {
+        return corrupt("reference member %u of type %u has flags %u", m, index, member.flags);
+      }
+      if (member.type >= type_count) {
+        return corrupt("reference member %u of type %u has type index %u out of range", m, index,
+                       member.type);
+      }
+      s_.fields.push_back(member);
+      field_fixups_.push_back(named);
+    }
+    return Status();
+  }
+
   // Checks that need every type: element kinds.
   Status check_types() {
     const std::uint32_t count = static_cast<std::uint32_t>(s_.types.size());
@@ -355,6 +392,9 @@ class Parser {
       type.renamed_from = aliases_at(fixup.aliases);
       type.left_to_new_build = aliases_at(fixup.left_to_new_build);
       if (fixup.fields != kNone) type.fields = s_.fields.data() + fixup.fields;
+      if (fixup.reference_members != kNone) {
+        type.reference_members = s_.fields.data() + fixup.reference_members;
+      }
       if (fixup.enumerators != kNone) type.enumerators = s_.enumerators.data() + fixup.enumerators;
       if (fixup.alternatives != kNone) {
         type.alternatives = s_.alternatives.data() + fixup.alternatives;

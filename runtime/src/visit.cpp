@@ -39,9 +39,14 @@ class Walker {
 
   // Each clock's reading at the checkpoint, as a value "(clock NAME)" after the objects.
   void emit_clock_readings(const ClockReadings& readings) {
-    static const TypeInfo kReading = {"int64", Kind::Int, 0, 8, 8, nullptr, 0, nullptr, 0,
-                                      kNoType, 0, nullptr, 0, 0, nullptr, nullptr, nullptr,
-                                      nullptr, nullptr, nullptr};
+    static const TypeInfo kReading = [] {
+      TypeInfo type{};
+      type.name = "int64";
+      type.kind = Kind::Int;
+      type.size = type.align = 8;
+      type.element = kNoType;
+      return type;
+    }();
     const std::vector<const ClockInfo*> clocks = schema_clocks(writer_);
     for (std::uint32_t c = 0; c < readings.count && c < clocks.size(); ++c) {
       const std::string path =
@@ -156,12 +161,13 @@ class Walker {
       };
       auto on_step = [&](std::uint32_t step) {
         const TypeInfo& t = writer_.types[type];
-        type = t.kind == Kind::Struct    ? t.fields[step].type
+        const FieldInfo* member = t.kind == Kind::Struct ? step_member(t, step) : nullptr;
+        type = member                    ? member->type
                : t.kind == Kind::Variant ? t.alternatives[step]
                                          : t.element;
-        if (t.kind == Kind::Struct) {
+        if (member) {
           text += '.';
-          text += t.fields[step].name;
+          text += member->name;
         } else if (t.kind == Kind::Array || t.kind == Kind::String) {  // an element or character
           append_path(text, PathFrame{PathFrame::Kind::Index, nullptr, step});
         } else if (t.kind == Kind::Variant) {

@@ -19,7 +19,7 @@ using symcr::kNoType;
 
 constexpr TypeInfo scalar(const char* name, Kind kind, std::uint32_t size) {
   return {name, kind, 0, size, size, nullptr, 0, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr};
+          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, 0};
 }
 constexpr TypeInfo record(const char* name, std::uint32_t size, std::uint32_t align,
                           const FieldInfo* fields, std::uint32_t count,
@@ -28,21 +28,21 @@ constexpr TypeInfo record(const char* name, std::uint32_t size, std::uint32_t al
                           const char* const* renamed_from = nullptr,
                           void (*migrate)(void*, const symcr::OldValues&) = nullptr) {
   return {name, Kind::Struct, 0, size, align, fields, count, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, lifecycle, validate, renamed_from, migrate, nullptr};
+          nullptr, 0, 0, nullptr, lifecycle, validate, renamed_from, migrate, nullptr, nullptr, 0};
 }
 constexpr TypeInfo union_of(const char* name, std::uint32_t size, std::uint32_t align) {
   return {name, Kind::Union, 0, size, align, nullptr, 0, nullptr, 0, kNoType, 0,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr};
+          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, 0};
 }
 constexpr TypeInfo enumeration(const char* name, std::uint32_t size, std::uint32_t underlying,
                                const symcr::EnumeratorInfo* enumerators, std::uint32_t count) {
   return {name, Kind::Enum, symcr::kTypeScopedEnum, size, size, nullptr, 0, enumerators, count,
-          underlying, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr};
+          underlying, 0, nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, 0};
 }
 constexpr TypeInfo array(const char* name, std::uint32_t element, std::uint64_t count,
                          std::uint32_t size, std::uint32_t align) {
   return {name, Kind::Array, 0, size, align, nullptr, 0, nullptr, 0, element, count,
-          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr};
+          nullptr, 0, 0, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, 0};
 }
 // Container, Optional, UniquePtr, SharedPtr, Pointer and String types: an element and ops.
 constexpr TypeInfo holder(const char* name, Kind kind, std::uint32_t size, std::uint32_t align,
@@ -51,13 +51,13 @@ constexpr TypeInfo holder(const char* name, Kind kind, std::uint32_t size, std::
                           const symcr::Lifecycle* lifecycle = nullptr) {
   return {name, kind, 0, size, align, nullptr, 0, nullptr, 0, element, 0, nullptr, 0,
           kind == Kind::Container ? static_cast<std::uint8_t>(container) : std::uint8_t{0},
-          ops, lifecycle, nullptr, nullptr, nullptr, nullptr};
+          ops, lifecycle, nullptr, nullptr, nullptr, nullptr, nullptr, 0};
 }
 constexpr TypeInfo variant_of(const char* name, std::uint32_t size, std::uint32_t align,
                               const std::uint32_t* alternatives, std::uint32_t count,
                               const void* ops) {
   return {name, Kind::Variant, 0, size, align, nullptr, 0, nullptr, 0, kNoType, 0,
-          alternatives, count, 0, ops, nullptr, nullptr, nullptr, nullptr, nullptr};
+          alternatives, count, 0, ops, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, 0};
 }
 
 constexpr FieldInfo field(const char* name, std::uint32_t type, std::size_t offset,

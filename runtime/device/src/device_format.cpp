@@ -172,8 +172,13 @@ bool follow_path(const Schema& schema, std::uint32_t root, const std::uint32_t* 
     if (t >= schema.type_count) return false;
     const TypeInfo& current = schema.types[t];
     if (current.kind == Kind::Struct) {
-      if (steps[i] >= current.field_count) return false;
-      const FieldInfo& field = current.fields[steps[i]];
+      // Fields, then reference members (docs/format.md §2): same build, same offsets.
+      const std::uint32_t member = steps[i] - current.field_count;
+      if (steps[i] >= current.field_count && member >= current.reference_member_count) {
+        return false;
+      }
+      const FieldInfo& field = steps[i] < current.field_count ? current.fields[steps[i]]
+                                                                : current.reference_members[member];
       if (field.bit_width != 0) return false;  // no address to point at
       at += field.offset;
       t = field.type;

@@ -169,8 +169,10 @@ class Saver {
       const TypeInfo& type = schema_.types[t];
       std::uint32_t step = kNoType;
       if (type.kind == Kind::Struct) {
-        for (std::uint32_t f = 0; f < type.field_count && step == kNoType; ++f) {
-          const FieldInfo& field = type.fields[f];
+        const std::uint32_t members = type.field_count + type.reference_member_count;
+        for (std::uint32_t f = 0; f < members && step == kNoType; ++f) {
+          const FieldInfo& field =
+              f < type.field_count ? type.fields[f] : type.reference_members[f - type.field_count];
           const std::uintptr_t start = base + field.offset;
           if (field.bit_width == 0 && target.address >= start &&
               target.address - start < schema_.types[field.type].size) {

@@ -68,6 +68,10 @@ enum : std::uint32_t {
   kTypeDynamicType = 1u << 7,   // a class restore can create as the dynamic type of a heap
                                 // object behind a pointer to one of its polymorphic bases: its
                                 // Lifecycle names its vtable, by which saving recognises it
+  kTypeReferenceMembers = 1u << 8,  // reference_members lists members a pointer may target
+                                    // although their values are not saved (format.md §2)
+  kTypeNeverOwns = 1u << 9,  // a Pointer declared never to own a heap object (SYMCR_NOT_OWNER):
+                             // it targets the state or lies outside it, never a heap object
 };
 
 // FieldInfo::flags
@@ -218,6 +222,12 @@ struct TypeInfo {
   // With kTypeLeavesMembers: the names of the members this build leaves to itself (const,
   // reference, function and member pointers); nullptr-terminated. They are not fields.
   const char* const* left_to_new_build;
+  // With kTypeReferenceMembers (Struct): members whose values are not saved but at or inside
+  // which a pointer may point (a shallow root's unselected members, and what they hold down to
+  // the pointees). Only name, type, offset and renamed_from are used. A reference's step at a
+  // struct numbers its fields first, then these: field_count + i is reference_members[i].
+  const FieldInfo* reference_members;
+  std::uint32_t reference_member_count;
 };
 
 struct RootInfo {

@@ -21,7 +21,9 @@
 // Annotations (generator/README.md). For an ordinary compiler they expand to nothing; symcr-gen
 // defines SYMCR_GENERATOR and reads them as Clang `annotate` attributes. Place them where a
 // GNU attribute goes: `SYMCR_CHECKPOINT Copter copter;`, `int raw SYMCR_SKIP;`,
-// `struct SYMCR_SKIP Buffer {...};`, `float yaw SYMCR_RENAMED_FROM("heading");`.
+// `struct SYMCR_SKIP Buffer {...};`, `float yaw SYMCR_RENAMED_FROM("heading");`,
+// `uint32_t last_ms SYMCR_TIME(millis);`, `typedef uint32_t time_ms SYMCR_TIME(millis);`.
+// SYMCR_CLOCK(millis) (a clock and its reading function) stands at namespace scope.
 #if defined(SYMCR_GENERATOR)
 #define SYMCR_CHECKPOINT __attribute__((annotate("symcr::checkpoint")))
 #define SYMCR_CHECKPOINT_SHALLOW __attribute__((annotate("symcr::checkpoint_shallow")))
@@ -29,6 +31,10 @@
 #define SYMCR_SKIP __attribute__((annotate("symcr::skip")))
 #define SYMCR_RENAMED_FROM(old_name) __attribute__((annotate("symcr::renamed_from:" old_name)))
 #define SYMCR_RANGE(lo, hi) __attribute__((annotate("symcr::range:" #lo ":" #hi)))
+#define SYMCR_NOT_OWNER __attribute__((annotate("symcr::not_owner")))
+#define SYMCR_TIME(...) __attribute__((annotate("symcr::time:" #__VA_ARGS__)))
+#define SYMCR_CLOCK_PRAGMA_(text) _Pragma(#text)
+#define SYMCR_CLOCK(...) SYMCR_CLOCK_PRAGMA_(symcr clock(__VA_ARGS__))
 #else
 #define SYMCR_CHECKPOINT
 #define SYMCR_CHECKPOINT_SHALLOW
@@ -36,6 +42,9 @@
 #define SYMCR_SKIP
 #define SYMCR_RENAMED_FROM(old_name)
 #define SYMCR_RANGE(lo, hi)
+#define SYMCR_NOT_OWNER
+#define SYMCR_TIME(...)
+#define SYMCR_CLOCK(...)
 #endif
 
 namespace symcr {
