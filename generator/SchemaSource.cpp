@@ -184,7 +184,7 @@ private:
         const symcr::FieldInfo &Member = T.reference_members[M];
         OS << "    {" << nameText(Member.name) << ", " << Member.type << "u, "
            << Member.offset << "u, 0, 0, " << Member.flags << "u, "
-           << MemberRenamed[M] << ", nullptr},\n";
+           << MemberRenamed[M] << ", nullptr, nullptr},\n";
       }
       OS << "};\n";
     }

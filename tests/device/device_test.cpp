@@ -250,7 +250,7 @@ TEST(DeviceProfile, ARangeFlagWithoutBoundsIsNoRange) {
   };
   static Gauge gauge;
   static const symcr::FieldInfo fields[] = {
-      {"level", 0, 0, 0, 0, symcr::kFieldHasRange, nullptr, nullptr}};
+      {"level", 0, 0, 0, 0, symcr::kFieldHasRange, nullptr, nullptr, nullptr}};
   static const symcr::TypeInfo types[] = {
       scalar("int32", Kind::Int, 4), record("Gauge", sizeof(Gauge), alignof(Gauge), fields, 1)};
   static const symcr::RootInfo roots[] = {{"gauge", 1, &gauge, 0, nullptr}};

@@ -79,7 +79,7 @@ constexpr symcr::FieldRange kTrimRange{-12.0, 12.0};
 constexpr symcr::FieldRange kAltitudeRange{-100, 5000};
 inline const symcr::FieldInfo kFlagsFields[] = {
     bit_field("armed", kU32, 0, 1),
-    {"trim", kI32, 0, 1, 5, symcr::kFieldHasRange, nullptr, &kTrimRange},  // ranged bit-field
+    {"trim", kI32, 0, 1, 5, symcr::kFieldHasRange, nullptr, &kTrimRange, nullptr},  // ranged bit-field
     bit_field("count", kU32, 6, 10)};
 inline const symcr::FieldInfo kVehicleFields[] = {
     field("flying", kBool, offsetof(Vehicle, flying)),
