@@ -794,11 +794,15 @@ class Encoder {
     if (!existing_heap || existing.start < added.start || existing.end > added.end) return false;
     if (!heap_object && encoding_heap_ == kNoRegion) return false;
     const Region& enclosing = heap_object ? added : s_.regions[encoding_heap_];
-    // Enclosures it encloses in turn are made by its own traversal.
+    // An enclosure inside it, or the enclosed object itself when an earlier pass learned it
+    // (an Item enclosing an int, in a heap Bag's vector), is made by its own traversal.
+    const auto inside = [](const Enclosure& e, const Region& region) {
+      return e.start >= region.start && e.start < region.end;
+    };
     auto& enclosures = s_.enclosures;
     enclosures.erase(std::remove_if(enclosures.begin(), enclosures.end(),
                                     [&](const Enclosure& e) {
-                                      return e.start >= enclosing.start && e.start < enclosing.end;
+                                      return inside(e, enclosing) || inside(e, existing);
                                     }),
                      enclosures.end());
     enclosures.push_back(Enclosure{enclosing.start, enclosing.type});

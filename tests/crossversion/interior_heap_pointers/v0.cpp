@@ -18,6 +18,15 @@ struct Outer {
   Node inner;
 };
 
+struct Item {
+  int a;
+  int b;
+};
+
+struct Bag {
+  std::vector<Item> items;
+};
+
 struct Link {
   int* field;
   Node* node;
@@ -34,6 +43,9 @@ struct Graph {
   int* deepest;             // &outer->inner.value: before the Node, itself before its Outer
   Node* inner;              // &outer->inner
   Outer* outer;
+  int* item_b;              // &bag->items[1].b: before the Item, itself before its Bag
+  Item* item;               // &bag->items[1]
+  Bag* bag;
 };
 
 SYMCR_CHECKPOINT Graph graph;
@@ -43,6 +55,7 @@ int main(int argc, char** argv) {
   Node* after = new Node{2, 20, {200}};
   Node* linked = new Node{3, 30, {}};
   Outer* outer = new Outer{4, Node{5, 50, {500, 501}}};
+  Bag* bag = new Bag{{Item{6, 60}, Item{7, 70}}};
   graph.value_before = &before->value;
   graph.id_before = &before->id;
   graph.sample_before = &before->samples[1];
@@ -53,10 +66,14 @@ int main(int argc, char** argv) {
   graph.deepest = &outer->inner.value;
   graph.inner = &outer->inner;
   graph.outer = outer;
+  graph.item_b = &bag->items[1].b;
+  graph.item = &bag->items[1];
+  graph.bag = bag;
   const int result = xv::save(argc, argv);
   delete before;
   delete after;
   delete linked;
   delete outer;
+  delete bag;
   return result;
 }

@@ -17,6 +17,15 @@ struct Outer {
   int tag = -1;
 };
 
+struct Item {
+  int b = -1;
+  int a = -1;
+};
+
+struct Bag {
+  std::vector<Item> items;
+};
+
 struct Link {
   Node* node = nullptr;
   int* field = nullptr;
@@ -33,6 +42,9 @@ struct Graph {
   Outer* outer = nullptr;
   Node* inner = nullptr;
   int* deepest = nullptr;
+  Bag* bag = nullptr;
+  Item* item = nullptr;
+  int* item_b = nullptr;
 };
 
 SYMCR_CHECKPOINT Graph graph;
@@ -66,6 +78,12 @@ int main(int argc, char** argv) {
     XV_CHECK((g.outer->inner.samples == std::vector<int>{500, 501}));
     XV_CHECK(g.inner == &g.outer->inner);
     XV_CHECK(g.deepest == &g.outer->inner.value);
+  }
+  XV_CHECK(g.bag && g.bag->items.size() == 2);
+  if (g.bag && g.bag->items.size() == 2) {
+    XV_CHECK(g.bag->items[0].a == 6 && g.bag->items[1].b == 70);
+    XV_CHECK(g.item == &g.bag->items[1]);
+    XV_CHECK(g.item_b == &g.bag->items[1].b);
   }
   // Each object once: no copy was made for a pointer into it.
   XV_CHECK(g.before != g.after && g.inner != g.before);
