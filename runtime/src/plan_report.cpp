@@ -236,7 +236,8 @@ void Planner::expand(const PlanNode* n, const std::string& path) {
       // fields added: pairs of the same type get a rename hint.
       const auto lost = [&](std::size_t f) {
         return n->fields[f].reader_field == kNoType && !n->migrates &&
-               !((rt.flags & kTypeLeavesMembers) && in_aliases(wt.fields[f].name, rt.left_to_new_build));
+               !((rt.flags & kTypeLeavesMembers) &&
+                 in_aliases(wt.fields[f].name, rt.left_to_new_build));
       };
       const auto same_type = [&](const FieldInfo& writer, const FieldInfo& reader) {
         const TypeInfo& a = writer_.types[writer.type];
@@ -282,7 +283,13 @@ void Planner::expand(const PlanNode* n, const std::string& path) {
           detail =
               std::string("renamed from ") + writer.name + (detail.empty() ? "" : "; ") + detail;
         }
-        const bool own_lossy = field.node->lossy && field.node->action != Action::Struct;
+        bool own_lossy = field.node->lossy && field.node->action != Action::Struct;
+        if (n->migrates && field.node->action == Action::Reject) {
+          // A kind change: like a removed field, its old value goes to the hook by name.
+          decision = Decision::Converted;
+          detail += "; the old value goes to symcr_migrate(" + std::string(rt.name) + ")";
+          own_lossy = false;
+        }
         note_migration(field.node, decision, detail);
         add(child, decision, detail, own_lossy);
         expand(field.node, child);

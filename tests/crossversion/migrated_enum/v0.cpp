@@ -16,11 +16,13 @@ struct Navigator {
   int waypoint;
   Leg last;                 // Leg has no hook: its values go to Navigator's
   std::vector<Mode> history;
+  Leg spare;                // v1: an int (its seconds), a kind change
 };
 
 SYMCR_CHECKPOINT Navigator nav;
 
 int main(int argc, char** argv) {
-  nav = Navigator{Mode::Return, 4, Leg{Mode::Return, 30}, {Mode::Auto, Mode::Return}};
+  nav = Navigator{Mode::Return, 4, Leg{Mode::Return, 30}, {Mode::Auto, Mode::Return},
+                 Leg{Mode::Manual, 12}};
   return xv::save(argc, argv);
 }

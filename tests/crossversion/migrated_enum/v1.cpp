@@ -1,7 +1,8 @@
 // v1: Mode::Return became Mode::Rtl. Navigator's symcr_migrate reads the removed enumerator by
 // its old name and maps it: the values the rules reject inside a migrated object (at any depth:
-// a field, a nested struct's field, a vector's elements) go to the hook instead of being lost,
-// so the restore (strict too), `symcr plan` and the STRICT gate agree that nothing is lost.
+// a field, a nested struct's field, a vector's elements, a field whose kind changed) go to the
+// hook instead of being lost, so the restore (strict too), `symcr plan` and the STRICT gate
+// agree that nothing is lost.
 #include <cstring>
 #include <string>
 #include <vector>
@@ -20,6 +21,7 @@ struct Navigator {
   int waypoint = 0;
   Leg last;
   std::vector<Mode> history;
+  int spare = -1;  // was a Leg: its seconds
 };
 
 namespace {
@@ -41,6 +43,8 @@ void symcr_migrate(Navigator& nav, const symcr::OldValues& old) {
   const symcr::OldValues last = old.child("last");
   if (last.enumerator("mode", name)) nav.last.mode = mapped(name, nav.last.mode);
   // The element v1 could not restore kept the new build's initial value; the hook sets it.
+  std::int64_t spare_seconds = 0;
+  if (old.child("spare").get("seconds", spare_seconds)) nav.spare = static_cast<int>(spare_seconds);
   for (std::size_t i = 0; i < nav.history.size() && i < old.count("history"); ++i) {
     if (old.element("history", i).enumerator(nullptr, name)) {
       nav.history[i] = mapped(name, nav.history[i]);
@@ -74,11 +78,19 @@ int main(int argc, char** argv) {
   XV_CHECK(nav.waypoint == 4);
   XV_CHECK(nav.last.mode == Mode::Rtl && nav.last.seconds == 30);
   XV_CHECK(nav.history.size() == 2);
-  if (nav.history.size() == 2) XV_CHECK(nav.history[0] == Mode::Auto && nav.history[1] == Mode::Rtl);
+  if (nav.history.size() == 2) {
+    XV_CHECK(nav.history[0] == Mode::Auto && nav.history[1] == Mode::Rtl);
+  }
   XV_CHECK(handed(report, "nav.mode", "enum Return not in this build"));
   XV_CHECK(handed(report, "nav.last.mode", "enum Return not in this build"));
   XV_CHECK(handed(report, "nav.history[1]", "enum Return not in this build"));
   XV_CHECK(xv::decided(report, "nav", symcr::Decision::Converted));
+  // A kind change inside the migrated object goes to the hook too.
+  XV_CHECK(nav.spare == 12);
+  const symcr::ReportEntry* spare = xv::entry(report, "nav.spare");
+  XV_CHECK(spare && spare->decision == symcr::Decision::Converted && !spare->lossy &&
+           spare->detail.find("; the old value goes to symcr_migrate(Navigator)") !=
+               std::string::npos);
   XV_CHECK(report.count(symcr::Decision::Rejected) == 0);
   XV_CHECK(report.lossless());
   return xv::verdict();
