@@ -41,7 +41,7 @@ namespace {
 
 int hand_over(symcr::Report&& report, symcr_report** out) {
   const int code = record_c_error(report.status());
-  if (out != nullptr) *out = new (std::nothrow) symcr_report{std::move(report), {}, {}};
+  if (out != nullptr) *out = new (std::nothrow) symcr_report{std::move(report), {}, {}, {}};
   return code;
 }
 
@@ -103,6 +103,10 @@ int symcr_report_ok(const symcr_report* report) {
   return report != nullptr && report->report.ok();
 }
 
+int symcr_report_lossless(const symcr_report* report) {
+  return report != nullptr && report->report.lossless();
+}
+
 int symcr_report_error(const symcr_report* report) {
   return report != nullptr ? static_cast<int>(report->report.status().error())
                            : SYMCR_ERROR_IO;
@@ -134,6 +138,12 @@ const char* symcr_report_json(symcr_report* report) {
   if (report == nullptr) return "";
   report->json = report->report.to_json();
   return report->json.c_str();
+}
+
+const char* symcr_report_losses_text(symcr_report* report) {
+  if (report == nullptr) return "";
+  report->losses = report->report.losses_to_text();
+  return report->losses.c_str();
 }
 
 void symcr_report_free(symcr_report* report) { delete report; }

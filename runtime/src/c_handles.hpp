@@ -13,6 +13,7 @@ struct symcr_report {
   symcr::Report report;
   std::string text;  // renderings kept alive for the caller
   std::string json;
+  std::string losses;
 };
 
 struct symcr_store {

@@ -76,6 +76,14 @@ struct Span {
   std::uintptr_t start, end;
 };
 
+// A heap object that encloses another object met before it (a pointer into a Node met before
+// the pointer to the Node): created first in the next pass, so the earlier pointer becomes a
+// path into it.
+struct Enclosure {
+  std::uintptr_t start;
+  std::uint32_t type;
+};
+
 struct EncodeScratch {
   AddressTable memo;     // (address, pointee type) -> reference index or kOutside
   AddressTable buckets;  // (address >> kBucketShift, 0) -> first ChainLink
@@ -87,6 +95,7 @@ struct EncodeScratch {
   std::vector<std::uint32_t> steps;
   std::vector<Span> spans;          // overlap check of the fast pass
   std::vector<Span> spans_scratch;  // its radix sort's other buffer
+  std::vector<Enclosure> enclosures;
   ProcessMemory memory;
 };
 
@@ -106,12 +115,25 @@ class Encoder {
   // Heap objects are first kept out of the region index (the index is what makes a large
   // graph slow); one sort at the end proves no heap object overlaps another region. When one
   // does (a pointer into an object met before any pointer to the object), the save runs again
-  // with every heap object indexed, which resolves it or refuses it.
+  // with every heap object indexed. A heap object found to enclose one made earlier is
+  // remembered, and the save runs again creating it first: the earlier pointer then refers
+  // into it. Each rerun learns at least one enclosure, and a chain of nested enclosures is
+  // learned from the inside out, so the reruns are bounded; overlaps that are not enclosures
+  // are refused.
   Status run() {
+    s_.enclosures.clear();
     Status status = run_pass();
     if (status.ok() && overlap_suspected_) {
       exact_ = true;
-      status = run_pass();
+      constexpr int kMaxReruns = 64;
+      for (int rerun = 0; (status = run_pass()).ok() && refold_; ++rerun) {
+        if (rerun == kMaxReruns) {
+          return Status(Error::Unsupported,
+                        "cannot save: pointers into heap objects nest more than %d levels of "
+                        "enclosing objects met after them",
+                        kMaxReruns);
+        }
+      }
     }
     return status;
   }
@@ -127,6 +149,8 @@ class Encoder {
     s_.heap.clear();
     memory_refreshed_ = false;
     overlap_suspected_ = false;
+    refold_ = false;
+    encoding_heap_ = kNoRegion;
     container_ordinal_ = 0;
     depth_ = 0;
     error_ = Status();
@@ -151,6 +175,13 @@ class Encoder {
 
     const std::size_t heap_count_at = pos_;
     put_u32(0);
+    // The enclosing objects learned by an earlier pass, before any pointer into them.
+    for (std::size_t e = 0; e < s_.enclosures.size() && ok(); ++e) {
+      const Enclosure enclosure = s_.enclosures[e];
+      if (find_region(enclosure.start) == kNoRegion) {
+        new_heap_object(PointerTarget{enclosure.start, enclosure.type, kNoRegion, false});
+      }
+    }
     // Breadth-first: classifying a target may create a heap object whose traversal appends
     // more references; the loop runs until no reference is left unclassified.
     for (std::size_t i = 0; i < s_.references.size() && ok(); ++i) {
@@ -163,7 +194,12 @@ class Encoder {
       classify(i);
     }
     if (!ok()) return finish_error();
-    if (!exact_ && track_regions_ && !s_.heap.empty() && heap_objects_overlap()) {
+    if (refold_) {
+      out_.resize(start_);
+      return Status();
+    }
+    if (!exact_ && (overlap_suspected_ ||
+                    (track_regions_ && !s_.heap.empty() && heap_objects_overlap()))) {
       overlap_suspected_ = true;
       out_.resize(start_);
       return Status();
@@ -662,7 +698,16 @@ class Encoder {
           "%s at %p on the heap, outside the checkpointed state",
           path, types_[reference.type].name, reinterpret_cast<const void*>(reference.address));
     }
-    if (region == kNoRegion) region = new_heap_object(reference);
+    if (region == kNoRegion) {
+      region = new_heap_object(reference);
+    } else if (exact_) {
+      // A heap object made earlier for a pointer to this object's first member: this object
+      // encloses it.
+      const Region& found = s_.regions[region];
+      const Region target{reference.address, reference.address + size_of(reference.type),
+                          reference.type, RegionKind::Object, 0, 0, 0, 0, 0};
+      if (found.end < target.end) fold(target, /*heap_object=*/true, found);
+    }
     s_.references[i].region = region;
   }
 
@@ -690,7 +735,9 @@ class Encoder {
     put_u32(type);
     s_.heap.push_back(HeapObject{region, pos_});
     put_u8(reference.shared ? 1 : 0);
+    encoding_heap_ = region;
     encode_object(type, reinterpret_cast<const std::uint8_t*>(start));
+    encoding_heap_ = kNoRegion;
     return region;
   }
 
@@ -791,7 +838,14 @@ class Encoder {
     }
     const std::uint32_t other = overlapping(region);
     if (other != kNoRegion) {
-      fail_overlap(region, s_.regions[other]);
+      // The fast pass may have made a heap object twice (its object unindexed), and after a
+      // fold a pass's later overlaps may be its side effects: the next pass judges.
+      if (!exact_ && !s_.heap.empty()) {
+        overlap_suspected_ = true;
+      } else if (!fold(region, heap_object, s_.regions[other]) && !refold_) {
+        fail_overlap(region, s_.regions[other]);
+      }
+      s_.regions.push_back(region);  // not indexed: this pass's output is discarded
       return index;
     }
     s_.regions.push_back(region);
@@ -809,6 +863,32 @@ class Encoder {
       head = link;
     }
     return index;
+  }
+
+  // `added` overlaps `existing`: when `existing` is a heap object wholly inside `added`, or
+  // inside the part (container elements, a unique_ptr's pointee, a string's characters) of the
+  // heap object being encoded that `added` is, the enclosing heap object is remembered for the
+  // next pass (run()) and true is returned.
+  bool fold(const Region& added, bool heap_object, const Region& existing) {
+    const bool existing_heap =
+        existing.kind == RegionKind::Object && existing.object >= schema_.root_count;
+    if (!existing_heap || existing.start < added.start || existing.end > added.end) return false;
+    if (!heap_object && encoding_heap_ == kNoRegion) return false;
+    const Region& enclosing = heap_object ? added : s_.regions[encoding_heap_];
+    // An enclosure inside it, or the enclosed object itself when an earlier pass learned it
+    // (an Item enclosing an int, in a heap Bag's vector), is made by its own traversal.
+    const auto inside = [](const Enclosure& e, const Region& region) {
+      return e.start >= region.start && e.start < region.end;
+    };
+    auto& enclosures = s_.enclosures;
+    enclosures.erase(std::remove_if(enclosures.begin(), enclosures.end(),
+                                    [&](const Enclosure& e) {
+                                      return inside(e, enclosing) || inside(e, existing);
+                                    }),
+                     enclosures.end());
+    enclosures.push_back(Enclosure{enclosing.start, enclosing.type});
+    refold_ = true;
+    return true;
   }
 
   void describe(const Region& region, char* buffer, std::size_t size) const {
@@ -839,8 +919,9 @@ class Encoder {
     describe(added, a, sizeof a);
     describe(existing, b, sizeof b);
     error_ = Status(Error::Unsupported,
-                    "cannot save: %s at %p overlaps %s at %p; a pointer to the inside of an "
-                    "object was met before any pointer to the object itself",
+                    "cannot save: %s at %p overlaps %s at %p, and neither encloses the other "
+                    "(pointers of different types into the same bytes, e.g. into two members of "
+                    "a union): mark all but one of those pointers SYMCR_SKIP",
                     a, reinterpret_cast<const void*>(added.start), b,
                     reinterpret_cast<const void*>(existing.start));
   }
@@ -1011,6 +1092,8 @@ class Encoder {
   bool memory_refreshed_ = false;
   bool exact_ = false;  // heap objects indexed too (the second pass)
   bool overlap_suspected_ = false;
+  bool refold_ = false;                     // an enclosure was learned: the pass runs again
+  std::uint32_t encoding_heap_ = kNoRegion;  // region of the heap object being encoded
   std::uint32_t container_ordinal_ = 0;
   int depth_ = 0;
   Status error_;
@@ -1033,7 +1116,8 @@ std::size_t encode_scratch_bytes() {
   return s.memo.capacity_bytes() + s.buckets.capacity_bytes() + capacity_bytes(s.chain) +
          capacity_bytes(s.regions) + capacity_bytes(s.large_regions) +
          capacity_bytes(s.references) + capacity_bytes(s.heap) + capacity_bytes(s.steps) +
-         capacity_bytes(s.spans) + capacity_bytes(s.spans_scratch);
+         capacity_bytes(s.spans) + capacity_bytes(s.spans_scratch) +
+         capacity_bytes(s.enclosures);
 }
 
 Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out) {

@@ -197,6 +197,16 @@ void Planner::build_report() {
   }
 }
 
+std::string Planner::rename_hint(const TypeInfo& reader_type, const char* old_name,
+                                 const char* new_name, std::size_t candidates) {
+  if (candidates == 0) return "";
+  const std::string annotation = std::string("SYMCR_RENAMED_FROM(\"") + old_name + "\") on " +
+                                 new_name + " / renamed(" + reader_type.name + "::" + new_name +
+                                 ", " + old_name + ")";
+  return "; did you mean " + annotation +
+         (candidates > 1 ? " (or another field of the same type)?" : "?");
+}
+
 void Planner::add(std::string path, Decision decision, std::string detail, bool lossy) {
   plan_.report_entries.push_back(ReportEntry{std::move(path), decision, std::move(detail), lossy});
 }
@@ -218,6 +228,22 @@ void Planner::expand(const PlanNode* n, const std::string& path) {
     case Action::Struct: {
       const TypeInfo& wt = writer_.types[n->writer];
       const TypeInfo& rt = reader_.types[n->reader];
+      std::vector<bool> reader_matched(rt.field_count, false);
+      for (const FieldPlan& field : n->fields) {
+        if (field.reader_field != kNoType) reader_matched[field.reader_field] = true;
+      }
+      // The fields whose value is lost (not handed to a hook, not left to this build) and the
+      // fields added: pairs of the same type get a rename hint.
+      const auto lost = [&](std::size_t f) {
+        return n->fields[f].reader_field == kNoType && !n->migrates &&
+               !((rt.flags & kTypeLeavesMembers) &&
+                 in_aliases(wt.fields[f].name, rt.left_to_new_build));
+      };
+      const auto same_type = [&](const FieldInfo& writer, const FieldInfo& reader) {
+        const TypeInfo& a = writer_.types[writer.type];
+        const TypeInfo& b = reader_.types[reader.type];
+        return a.kind == b.kind && same_name(a.name, b.name);
+      };
       for (std::size_t f = 0; f < n->fields.size(); ++f) {
         const FieldPlan& field = n->fields[f];
         const FieldInfo& writer = wt.fields[f];
@@ -229,15 +255,22 @@ void Planner::expand(const PlanNode* n, const std::string& path) {
                 "field removed in this build; its value goes to symcr_migrate(" +
                     std::string(rt.name) + ")",
                 false);
-          } else if ((rt.flags & kTypeLeavesMembers) &&
-                     in_aliases(writer.name, rt.left_to_new_build)) {
+          } else if (!lost(f)) {
             // Made const (or a reference, or a code pointer) by the patch: the value is this
             // build's on purpose, not lost.
             add(path + "." + writer.name, Decision::Kept,
                 "const, reference or code pointer in this build: this build's value is kept",
                 false);
           } else {
-            add(path + "." + writer.name, Decision::Dropped, "field removed in this build", true);
+            std::size_t candidates = 0;
+            const char* added = nullptr;
+            for (std::uint32_t r = 0; r < rt.field_count; ++r) {
+              if (reader_matched[r] || !same_type(writer, rt.fields[r])) continue;
+              if (candidates++ == 0) added = rt.fields[r].name;
+            }
+            add(path + "." + writer.name, Decision::Dropped,
+                "field removed in this build" + rename_hint(rt, writer.name, added, candidates),
+                true);
           }
           continue;
         }
@@ -251,6 +284,12 @@ void Planner::expand(const PlanNode* n, const std::string& path) {
               std::string("renamed from ") + writer.name + (detail.empty() ? "" : "; ") + detail;
         }
         bool own_lossy = field.node->lossy && field.node->action != Action::Struct;
+        if (n->migrates && field.node->action == Action::Reject) {
+          // A kind change: like a removed field, its old value goes to the hook by name.
+          decision = Decision::Converted;
+          detail += "; the old value goes to symcr_migrate(" + std::string(rt.name) + ")";
+          own_lossy = false;
+        }
         if (const FieldTime* time = reader_time(reader_, *n, field)) {
           const std::string clock =
               std::string("a time of clock '") + (time->clock->name ? time->clock->name : "?") + "'";
@@ -267,12 +306,17 @@ void Planner::expand(const PlanNode* n, const std::string& path) {
         add(child, decision, detail, own_lossy);
         expand(field.node, child);
       }
-      for (std::uint32_t f = 0; f < rt.field_count; ++f) {
-        bool matched = false;
-        for (const FieldPlan& field : n->fields) matched = matched || field.reader_field == f;
-        if (!matched) {
-          add(path + "." + rt.fields[f].name, Decision::Kept, "field added in this build", false);
+      for (std::uint32_t r = 0; r < rt.field_count; ++r) {
+        if (reader_matched[r]) continue;
+        std::size_t candidates = 0;
+        const char* removed = nullptr;
+        for (std::size_t f = 0; f < n->fields.size(); ++f) {
+          if (!lost(f) || !same_type(wt.fields[f], rt.fields[r])) continue;
+          if (candidates++ == 0) removed = wt.fields[f].name;
         }
+        add(path + "." + rt.fields[r].name, Decision::Kept,
+            "field added in this build" + rename_hint(rt, removed, rt.fields[r].name, candidates),
+            false);
       }
       break;
     }

@@ -180,6 +180,13 @@ class Planner {
 
   __attribute__((cold)) void expand(const PlanNode* n, const std::string& path);
 
+  // A field removed and one of the same type added in the same struct is most often a rename
+  // without its annotation: "; did you mean ..." naming the annotation for the pair, or ""
+  // when `candidates` (the other side's fields of that type) is empty.
+  __attribute__((cold)) static std::string rename_hint(const TypeInfo& reader_type,
+                                                       const char* old_name, const char* new_name,
+                                                       std::size_t candidates);
+
   Plan& plan_;
   const Schema& writer_;
   const Schema& reader_;

@@ -131,6 +131,39 @@ std::size_t Report::count(Decision decision) const {
                     [decision](const ReportEntry& entry) { return entry.decision == decision; }));
 }
 
+bool Report::lossless() const {
+  return ok() && std::none_of(entries().begin(), entries().end(),
+                              [](const ReportEntry& entry) { return entry.lossy; });
+}
+
+__attribute__((cold)) std::string Report::losses_to_text() const {
+  std::string out;
+  if (!ok()) {
+    out += "restore failed: ";
+    out += error_name(status_.error());
+    out += ": ";
+    out += status_.message();
+    out += '\n';
+  }
+  std::size_t lossy = 0;
+  for (const ReportEntry& entry : entries()) {
+    if (!entry.lossy) continue;
+    ++lossy;
+    out += entry.path;
+    out += "  ";
+    out += decision_name(entry.decision);
+    out += ": ";
+    out += entry.detail;
+    out += '\n';
+  }
+  if (lossy != 0) {
+    out += std::to_string(lossy);
+    out += lossy == 1 ? " lossy decision" : " lossy decisions";
+    out += ": checkpointed data this build does not hold (rejected values keep this build's)\n";
+  }
+  return out;
+}
+
 __attribute__((cold)) std::string Report::to_text() const {
   // Column widths from the content, with the path column capped so one deep path does not
   // push every line off the screen (longer paths simply overflow their column).

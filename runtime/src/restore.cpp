@@ -53,6 +53,7 @@ void Restorer::begin_pass(Mode mode) {
 Status Restorer::check() {
   begin_pass(Mode::Check);
   rejection_counts_.assign(plan_.counter_paths.size() + 1, 0);
+  handed_counts_.assign(plan_.counter_paths.size() + 1, 0);
   heap_counter_ = static_cast<std::uint32_t>(plan_.counter_paths.size());
   ClockReadings readings;
   if (!decode_objects() || !decode_references() || !in_.clock_readings(readings) ||
@@ -71,8 +72,8 @@ Status Restorer::check() {
 // Capacity of the decoding tables (thread_scratch_bytes).
 std::size_t Restorer::scratch_bytes() const {
   std::size_t bytes =
-      bytes_of(frames_) + bytes_of(rejection_counts_) + bytes_of(verdicts_) +
-      bytes_of(part_verdicts_) + bytes_of(slots_) + bytes_of(containers_) + bytes_of(heap_) +
+      bytes_of(frames_) + bytes_of(rejection_counts_) + bytes_of(handed_counts_) +
+      bytes_of(verdicts_) + bytes_of(part_verdicts_) + bytes_of(slots_) + bytes_of(containers_) + bytes_of(heap_) +
       bytes_of(refs_) + bytes_of(steps_) +
       bytes_of(mapped_) + bytes_of(claimed_) + materialisable_.capacity() / 8 +
       bytes_of(element_needed_) + bytes_of(heap_live_) + bytes_of(holders_) +

@@ -28,26 +28,53 @@ const Status& Restorer::corrupt(const char* format, ...) {
 
 // A value-level rejection: the reader keeps its value. Concrete paths are capped per field.
 void Restorer::reject_value(std::uint32_t counter, const char* format, ...) {
-  if (mode_ != Mode::Check) return;
-  ++value_rejections_;
-  if (++rejection_counts_[counter] > kMaxConcretePerField) return;
-  char buffer[240];
   va_list args;
   va_start(args, format);
-  std::vsnprintf(buffer, sizeof buffer, format, args);
+  report_value(migrating_, counter, format, args);
   va_end(args);
+}
+
+void Restorer::refuse_value(std::uint32_t counter, const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  report_value(nullptr, counter, format, args);
+  va_end(args);
+}
+
+void Restorer::report_value(const PlanNode* hook, std::uint32_t counter, const char* format,
+                            va_list args) {
+  if (mode_ != Mode::Check) return;
+  ++(hook ? values_handed_ : value_rejections_);
+  if (++(hook ? handed_counts_ : rejection_counts_)[counter] > kMaxConcretePerField) return;
+  char buffer[240];
+  std::vsnprintf(buffer, sizeof buffer, format, args);
+  if (hook) {
+    ReportAccess::add(report_, render_path(frames_.data(), frames_.size()), Decision::Converted,
+                      std::string(buffer) + "; the old value goes to symcr_migrate(" +
+                          reader_.types[hook->reader].name + ")",
+                      false);
+    return;
+  }
   ReportAccess::add(report_, render_path(frames_.data(), frames_.size()), Decision::Rejected,
                     buffer, true);
 }
 
 void Restorer::summarise_rejections() {
-  if (value_rejections_ <= kMaxConcretePerField) return;  // no counter can exceed the cap
+  // No counter can exceed the cap otherwise.
+  if (value_rejections_ + values_handed_ <= kMaxConcretePerField) return;
   for (std::size_t c = 0; c < rejection_counts_.size(); ++c) {
-    if (rejection_counts_[c] <= kMaxConcretePerField) continue;
-    ReportAccess::add(report_, counter_path(static_cast<std::uint32_t>(c)), Decision::Rejected,
-                      "and " + std::to_string(rejection_counts_[c] - kMaxConcretePerField) +
-                          " more values rejected",
-                      true);
+    if (rejection_counts_[c] > kMaxConcretePerField) {
+      ReportAccess::add(report_, counter_path(static_cast<std::uint32_t>(c)), Decision::Rejected,
+                        "and " + std::to_string(rejection_counts_[c] - kMaxConcretePerField) +
+                            " more values rejected",
+                        true);
+    }
+    if (handed_counts_[c] > kMaxConcretePerField) {
+      ReportAccess::add(report_, counter_path(static_cast<std::uint32_t>(c)), Decision::Converted,
+                        "and " + std::to_string(handed_counts_[c] - kMaxConcretePerField) +
+                            " more values for a migration hook",
+                        false);
+    }
   }
 }
 
@@ -176,7 +203,7 @@ bool Restorer::validated_value(const PlanNode* n, std::uint8_t* dst, const Field
   if (!passed) {
     ++refusals_;
     for (std::size_t s = first_slot; s < slots_.size(); ++s) slots_[s].node = nullptr;
-    reject_value(field ? field->counter : counter_, "%s %s", type.name, why);
+    refuse_value(field ? field->counter : counter_, "%s %s", type.name, why);
   }
   return true;
 }
@@ -203,7 +230,7 @@ void Restorer::end_part(const PlanNode* part, const PartMark& mark, bool element
   // An element refused as a whole already has its validator's entry at this path.
   const bool own = runs_validator(part) && verdicts_[mark.own_verdict] == 0;
   if (!own) {
-    reject_value(counter_, "left out of its container: a value in it failed its symcr_validate");
+    refuse_value(counter_, "left out of its container: a value in it failed its symcr_validate");
   }
 }
 
@@ -224,6 +251,8 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
     case Kind::Struct: {
       const std::uint32_t saved = counter_;
       const std::uint8_t* start = in_.position();
+      const PlanNode* outer_migration = migrating_;
+      if (n->migrates) migrating_ = n;
       // One path frame for all the fields, renamed per field.
       const std::size_t frame = frames_.size();
       frames_.push_back({PathFrame::Kind::Name, "", 0});
@@ -242,6 +271,7 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       time_ = outer_time;
       frames_.pop_back();
       counter_ = saved;
+      migrating_ = outer_migration;
       // The migration hook, once the mechanical rules wrote the object and everything in it
       // (so nested objects' hooks ran first). Also on a validator's staged copy, so that
       // symcr_validate judges the migrated value. Pointers are fixed up after all objects.

@@ -6,6 +6,7 @@
 #ifndef SYMCR_SRC_RESTORER_HPP
 #define SYMCR_SRC_RESTORER_HPP
 
+#include <cstdarg>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -143,8 +144,17 @@ class Restorer {
   __attribute__((format(printf, 2, 3))) const Status& corrupt(const char* format, ...);
 
   // A value-level rejection: the reader keeps its value. Concrete paths are capped per field.
+  // Inside an object whose migration hook runs, the value is the hook's to handle (it reads
+  // the old value by name): reported Converted, not lossy, and not counted as a rejection.
   __attribute__((format(printf, 3, 4), noinline)) void reject_value(std::uint32_t counter,
                                                                     const char* format, ...);
+  // A value a validator refused: rejected even inside a migrated object (its hook ran).
+  __attribute__((format(printf, 3, 4), noinline)) void refuse_value(std::uint32_t counter,
+                                                                    const char* format, ...);
+  // `hook`: the migrated object the value is handed to, or null for a rejection.
+  __attribute__((format(printf, 4, 0))) void report_value(const PlanNode* hook,
+                                                          std::uint32_t counter,
+                                                          const char* format, va_list args);
 
   void summarise_rejections();
 
@@ -282,6 +292,11 @@ class Restorer {
   std::uint32_t current_object_ = 0;
   std::vector<std::uint32_t> rejection_counts_;
   std::size_t value_rejections_ = 0;
+  // The innermost object being decoded whose migration hook runs (not across pointers: a
+  // pointee is an object of its own), or null.
+  const PlanNode* migrating_ = nullptr;
+  std::vector<std::uint32_t> handed_counts_;  // per field, as rejection_counts_
+  std::size_t values_handed_ = 0;
   std::size_t outside_count_ = 0;
 
   std::uint32_t container_ordinal_ = 0;

@@ -65,6 +65,8 @@ static void file_round_trip(const char* directory) {
   CHECK(symcr_report_count(report, SYMCR_REJECTED) == 0);
   CHECK(strlen(symcr_report_text(report)) > 0);
   CHECK(strstr(symcr_report_json(report), "\"ok\":true") != NULL);
+  CHECK(symcr_report_lossless(report));
+  CHECK(strcmp(symcr_report_losses_text(report), "") == 0);
   symcr_report_free(report);
 
   /* The same through an explicit schema handle, with fdatasync, and no report wanted. */
@@ -85,7 +87,11 @@ static void errors(const char* directory) {
   CHECK(!symcr_report_ok(report));
   CHECK(symcr_report_error(report) == SYMCR_ERROR_IO);
   CHECK(strstr(symcr_report_json(report), "\"ok\":false") != NULL);
+  CHECK(!symcr_report_lossless(report));
+  CHECK(strncmp(symcr_report_losses_text(report), "restore failed: Io: ", 20) == 0);
   symcr_report_free(report);
+  CHECK(!symcr_report_lossless(NULL));
+  CHECK(strcmp(symcr_report_losses_text(NULL), "") == 0);
   CHECK(strstr(symcr_last_error(), "missing.ckpt") != NULL);
   CHECK(holds(3));
 

@@ -356,7 +356,7 @@ const Schema& schema() {
 }
 }  // namespace c1
 
-namespace c_bad {
+namespace c_interior {
 Holder holder;
 const Schema& schema() {
   static const FieldInfo node_fields[] = {field("value", 0, offsetof(c0::Node, value)),
@@ -376,7 +376,7 @@ const Schema& schema() {
   static const Schema schema{types, SYMCR_COUNT(types), roots, SYMCR_COUNT(roots), nullptr};
   return schema;
 }
-}  // namespace c_bad
+}  // namespace c_interior
 
 // ---- World D ---------------------------------------------------------------------------------
 namespace d0 {

@@ -254,15 +254,15 @@ extern World world;
 const symcr::Schema& schema();
 }  // namespace c1
 
-// A world whose first pointer targets the inside of a heap object met only later: refused.
-namespace c_bad {
+// A world whose first pointer targets the inside of a heap object met only later.
+namespace c_interior {
 struct Holder {
   std::int32_t* into_node;  // met first: -> node->value
   c0::Node* node;
 };
 extern Holder holder;
 const symcr::Schema& schema();
-}  // namespace c_bad
+}  // namespace c_interior
 
 // =============================================================================================
 // World D: base classes.

@@ -397,6 +397,7 @@ Same same;
 
 std::vector<std::string> calls;  // hooks in call order: "Reading", "Batch", "Same"
 int reading_calls = 0;
+std::int64_t old_narrow = 0;  // what Batch's hook read of the old `narrow`
 
 void migrate_reading(void* object, const OldValues& old) {
   auto* reading = static_cast<Reading*>(object);
@@ -410,6 +411,7 @@ void migrate_batch(void* object, const OldValues& old) {
   calls.push_back("Batch");
   batch->readings_done = reading_calls;
   EXPECT_EQ(old.count("list"), batch->list.size());
+  old.get("narrow", old_narrow);
 }
 void migrate_same(void* object, const OldValues&) {
   calls.push_back("Same");
@@ -481,6 +483,7 @@ class MigrationTest : public ::testing::Test {
     m1::same.a = 0;
     m1::calls.clear();
     m1::reading_calls = 0;
+    m1::old_narrow = 0;
   }
 };
 
@@ -531,14 +534,63 @@ TEST_F(MigrationTest, NoHookRunsWhenTheTypesAreTheSame) {
 }
 
 TEST_F(MigrationTest, AFailedRestoreRunsNoHook) {
-  // Strict mode refuses the rejected value 300 of batch.narrow (int8): nothing is written.
-  m0::batch.narrow = 300;
-  const symcr::Report report = load(save(m0::schema()), m1::schema(m1::Variant::Plain),
-                                    /*strict=*/true);
+  // The payload ends inside batch.narrow: pass 1 fails, nothing is written.
+  const Saved saved = save(m0::schema());
+  const symcr::Report report =
+      load(saved, m1::schema(m1::Variant::Plain), false, saved.payload.size() - 5);
   EXPECT_FALSE(report.ok());
   EXPECT_TRUE(m1::calls.empty());
   EXPECT_TRUE(m1::batch.list.empty());
   EXPECT_EQ(m1::batch.one.alt_cm, 7);
+}
+
+TEST_F(MigrationTest, AValueTheRulesRejectGoesToTheHook) {
+  // 300 does not fit batch.narrow (int8): this build keeps its value, and Batch's hook reads
+  // the old one by name. Not a loss (the hook decides), so strict mode restores.
+  m0::batch.narrow = 300;
+  const symcr::Report report = load(save(m0::schema()), m1::schema(m1::Variant::Plain),
+                                    /*strict=*/true);
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_TRUE(report.lossless()) << report.to_text();
+  EXPECT_EQ(m1::batch.narrow, 0);
+  EXPECT_EQ(m1::old_narrow, 300);
+  EXPECT_EQ(m1::calls.back(), "Batch");
+  EXPECT_EQ(report.count(Decision::Rejected), 0u) << report.to_text();
+  // The value's own entry, besides the field's (converted int16 -> int8).
+  const auto handed = [](const symcr::Report& r) {
+    for (const symcr::ReportEntry& e : r.entries()) {
+      if (e.path == "batch.narrow" && e.decision == Decision::Converted && !e.lossy &&
+          e.detail == "300 out of range of int8; the old value goes to symcr_migrate(Batch)") {
+        return true;
+      }
+    }
+    return false;
+  };
+  EXPECT_TRUE(handed(report)) << report.to_text();
+  // The same from the schema alone (`symcr plan`): the hook is known by its flag.
+  const Saved saved = save(m0::schema());
+  symcr::detail::ParsedSchema writer;
+  ASSERT_TRUE(symcr::detail::parse_schema(saved.schema.data(), saved.schema.size(), writer).ok());
+  symcr::RestoreOptions strict;
+  strict.strict = true;
+  const symcr::Report plan =
+      symcr::detail::plan_payload(writer.schema(), saved.hash, saved.payload.data(),
+                                  saved.payload.size(), m1::schema(m1::Variant::FlagOnly), strict);
+  ASSERT_TRUE(plan.ok()) << plan.to_text();
+  EXPECT_TRUE(handed(plan)) << plan.to_text();
+}
+
+TEST_F(MigrationTest, AValueItsValidatorRefusesStaysRejected) {
+  // The hook makes alt_cm 0 from alt_m 0, which Reading's symcr_validate refuses: a rejection
+  // even inside migrated objects, so strict mode refuses and writes nothing.
+  m0::batch.one.alt_m = 0.0f;
+  const symcr::Report report = load(save(m0::schema()), m1::schema(m1::Variant::Validated),
+                                    /*strict=*/true);
+  EXPECT_FALSE(report.ok());
+  expect_entry(report, "batch.one", Decision::Rejected, "symcr_validate", 1);
+  EXPECT_TRUE(m1::batch.list.empty());
+  EXPECT_EQ(m1::batch.one.alt_cm, 7);
+  for (const std::string& call : m1::calls) EXPECT_NE(call, "Batch");  // only staged copies
 }
 
 TEST_F(MigrationTest, ValidatorsJudgeTheMigratedValue) {

@@ -169,18 +169,47 @@ TEST(WorldC, IdentityRestoreKeepsTheGraph) {
   w.s2.reset();
 }
 
-TEST(WorldC, PointerIntoAHeapObjectMetBeforeTheObjectIsRefused) {
+TEST(WorldC, PointerIntoAHeapObjectMetBeforeTheObjectIsFolded) {
+  // into_node (&node->value, the node's own address) is met before node: the save makes the
+  // Node the heap object and into_node a path into it, not an int32 object of its own.
+  auto* node = new c0::Node{41, nullptr, nullptr};
+  node->next = node;
+  c_interior::holder.node = node;
+  c_interior::holder.into_node = &node->value;
+  const Saved saved = save(c_interior::schema());
+  c_interior::holder = {};
+  const symcr::Report report = load(saved, c_interior::schema());
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(report.count(symcr::Decision::Rejected), 0u) << report.to_text();
+  c0::Node* restored = c_interior::holder.node;
+  ASSERT_NE(restored, nullptr);
+  EXPECT_NE(restored, node);
+  EXPECT_EQ(restored->value, 41);
+  EXPECT_EQ(restored->next, restored);
+  EXPECT_EQ(c_interior::holder.into_node, &restored->value);
+  delete restored;
+  delete node;
+  c_interior::holder = {};
+}
+
+TEST(WorldC, PointerBetweenAHeapObjectsMembersIsRefused) {
+  // An int32* two bytes into node->value: the Node encloses it, but no int32 member starts
+  // there, so it cannot be a path into the Node: refused, naming both, and nothing written.
   auto* node = new c0::Node{1, nullptr, nullptr};
-  c_bad::holder.node = node;
-  c_bad::holder.into_node = &node->value;
+  c_interior::holder.node = node;
+  c_interior::holder.into_node =
+      reinterpret_cast<std::int32_t*>(reinterpret_cast<char*>(&node->value) + 2);
   std::vector<std::uint8_t> payload;
-  const symcr::Status status = symcr::detail::encode_payload(c_bad::schema(), payload);
-  EXPECT_FALSE(status.ok());
+  const symcr::Status status = symcr::detail::encode_payload(c_interior::schema(), payload);
   EXPECT_EQ(status.error(), symcr::Error::Unsupported);
-  EXPECT_NE(std::string(status.message()).find("Node"), std::string::npos) << status.message();
+  EXPECT_NE(std::string(status.message()).find("a pointer to int32"), std::string::npos)
+      << status.message();
+  EXPECT_NE(std::string(status.message()).find("(Node) but not at a int32 subobject"),
+            std::string::npos)
+      << status.message();
   EXPECT_TRUE(payload.empty());
   delete node;
-  c_bad::holder = {};
+  c_interior::holder = {};
 }
 
 struct Leaves : symcr::detail::ValueVisitor {

@@ -50,6 +50,28 @@ TEST(EngineReport, CountsAndAlignsText) {
   EXPECT_NE(text.find("sequence 7, status: ok\n"), std::string::npos) << text;
 }
 
+TEST(EngineReport, LossesListOnlyWhatWasLost) {
+  symcr::Report report;
+  EXPECT_TRUE(report.lossless());
+  EXPECT_EQ(report.losses_to_text(), "");
+  symcr::detail::ReportAccess::add(report, "v.yaw", symcr::Decision::Kept, "field added in this build", false);
+  symcr::detail::ReportAccess::add(report, "v.speed", symcr::Decision::Converted, "float64 -> int32", false);
+  EXPECT_TRUE(report.lossless());
+  EXPECT_EQ(report.losses_to_text(), "");
+  symcr::detail::ReportAccess::add(report, "v.speed", symcr::Decision::Rejected, "12.5 is not an integer for int32", true);
+  symcr::detail::ReportAccess::add(report, "v.old", symcr::Decision::Dropped, "field removed in this build", true);
+  EXPECT_TRUE(report.ok());
+  EXPECT_FALSE(report.lossless());
+  EXPECT_EQ(report.losses_to_text(),
+            "v.speed  rejected: 12.5 is not an integer for int32\n"
+            "v.old  dropped: field removed in this build\n"
+            "2 lossy decisions: checkpointed data this build does not hold (rejected values keep "
+            "this build's)\n");
+  symcr::detail::ReportAccess::set_status(report, symcr::Status(symcr::Error::Strict, "refused"));
+  EXPECT_EQ(report.losses_to_text().rfind("restore failed: Strict: refused\nv.speed  rejected", 0), 0u)
+      << report.losses_to_text();
+}
+
 TEST(EngineReport, JsonEscapesEverything) {
   symcr::Report report;
   symcr::detail::ReportAccess::add(report, "a\"b\\c\n\x01", symcr::Decision::Rejected, "bad \xff byte, ok \xc3\xa9", true);

@@ -88,6 +88,22 @@ TEST_F(WorldA, RuleFieldRemovedIsDroppedAndLossy) {
   expect_entry(report_, "basic.removed", Decision::Dropped, "removed", 1);
 }
 
+TEST_F(WorldA, ARemovedAndAnAddedFieldOfOneTypeGetARenameHint) {
+  // basic.removed and basic.added are both int32: perhaps a rename without its annotation.
+  const char* hint =
+      "; did you mean SYMCR_RENAMED_FROM(\"removed\") on added / renamed(Basic::added, removed)?";
+  const symcr::ReportEntry* removed = entry(report_, "basic.removed");
+  ASSERT_NE(removed, nullptr);
+  EXPECT_EQ(removed->detail, std::string("field removed in this build") + hint);
+  const symcr::ReportEntry* added = entry(report_, "basic.added");
+  ASSERT_NE(added, nullptr);
+  EXPECT_EQ(added->detail, std::string("field added in this build") + hint);
+  // Inner gained an int32 but lost nothing: no hint there.
+  const symcr::ReportEntry* inner = entry(report_, "basic.inner.added_inner");
+  ASSERT_NE(inner, nullptr);
+  EXPECT_EQ(inner->detail, "field added in this build");
+}
+
 TEST_F(WorldA, RuleReorderedFieldsMatchByName) {
   EXPECT_EQ(a1::basic.inner.first, 10);
   EXPECT_EQ(a1::basic.inner.second, 20);

@@ -10,6 +10,11 @@
 //   double alt_m;
 //   if (old.get("alt_m", alt_m)) nav.alt_cm = static_cast<std::int32_t>(alt_m * 100.0);
 //
+// A value the rules could not restore anywhere inside the object (an enumerator this build
+// removed, 12.5 for an int) kept this build's value and is the hook's to handle, here by its
+// old name: `old.enumerator("mode", name)` gives "Return", and the report does not count it as
+// lost.
+//
 // Every query returns false (or an invalid view, or 0) and leaves its output untouched when the
 // field is absent or of a kind the query cannot convert; nothing here crashes on any schema the
 // checkpoint parser accepted. A view is only valid during the hook call. Fields of base classes

@@ -3,8 +3,9 @@
  *   if (symcr_checkpoint("copter.ckpt") != SYMCR_OK) fprintf(stderr, "%s\n", symcr_last_error());
  *
  *   symcr_report* report = NULL;
- *   if (symcr_restore("copter.ckpt", 0, &report) != SYMCR_OK)
- *     fprintf(stderr, "%s\n", symcr_report_text(report));
+ *   symcr_restore("copter.ckpt", 0, &report);
+ *   if (!symcr_report_lossless(report))
+ *     fputs(symcr_report_losses_text(report), stderr);
  *   symcr_report_free(report);
  *
  * Functions taking a `const symcr_schema*` use the program's generated schema when it is NULL.
@@ -95,6 +96,9 @@ int symcr_restore_with(const symcr_schema* schema, const char* path, int flags,
                        symcr_report** report);
 
 int symcr_report_ok(const symcr_report* report);
+/* 1 when the restore was applied and lost nothing (Report::lossless): no value rejected, no
+ * field or root dropped; symcr_report_losses_text then is "". */
+int symcr_report_lossless(const symcr_report* report);
 int symcr_report_error(const symcr_report* report);
 uint64_t symcr_report_sequence(const symcr_report* report);
 size_t symcr_report_count(const symcr_report* report, int decision);
@@ -104,6 +108,8 @@ size_t symcr_report_skipped(const symcr_report* report);
 /* Text and JSON renderings, owned by the report, valid until symcr_report_free. */
 const char* symcr_report_text(symcr_report* report);
 const char* symcr_report_json(symcr_report* report);
+/* The failure and the lossy entries only (Report::losses_to_text), "" when lossless. */
+const char* symcr_report_losses_text(symcr_report* report);
 void symcr_report_free(symcr_report* report);
 
 /* The checkpoint store: a preallocated ring of slots in one file. */

@@ -3,7 +3,7 @@
 //   SYMCR_CHECKPOINT Copter copter;                     // a root: saved with all it reaches
 //   symcr::checkpoint("copter.ckpt");                   // at a known-good point
 //   symcr::Report r = symcr::restore("copter.ckpt");    // in a patched build, by names
-//   if (!r.ok()) fprintf(stderr, "%s\n", r.to_text().c_str());
+//   if (!r.lossless()) fputs(r.losses_to_text().c_str(), stderr);  // failed, or lost data
 //
 // Builds with -fno-exceptions -fno-rtti. Errors are values (Status, Report), never throws.
 #ifndef SYMCR_SYMCR_HPP
@@ -146,6 +146,13 @@ class Report {
   // True when the restore was applied. A report can be ok() and still hold Rejected entries
   // in default mode; strict mode turns every lossy entry into a failure.
   bool ok() const { return status_.ok(); }
+  // True when the restore was applied and lost nothing: no entry is lossy (no value rejected,
+  // no field or root dropped, no array shrunk, no float rounded). Fields this build added
+  // (kept) and values handed to a migration hook are not losses.
+  bool lossless() const;
+  // What a program should print after a restore: the failure, if any, and each lossy entry,
+  // then a count ("" when lossless()). Skipped store slots and warnings are in to_text().
+  std::string losses_to_text() const;
   const Status& status() const { return status_; }
   // The schema-level entries are written when first asked for, not during the restore.
   const std::vector<ReportEntry>& entries() const;
