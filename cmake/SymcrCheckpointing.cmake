@@ -194,7 +194,9 @@ function(symcr_add_checkpointing target)
     COMMAND "${generator}" -p "${CMAKE_BINARY_DIR}" --out-dir "${out_dir}"
             --schema-file "${schema_file}" --program "${program}" --profile "${profile}"
             --depfile "${out_dir}/symcr-gen.d" --depfile-target "${schema}"
-            --report-file "${out_dir}/report.txt" ${annotation_args} ${previous_args}
+            --report-file "${out_dir}/report.txt"
+            --shown-notes "${CMAKE_BINARY_DIR}/symcr/shown-notes.txt"
+            ${annotation_args} ${previous_args}
             ${library_args} ${inputs}
     DEPENDS ${generator_dependency} ${inputs} ${library_inputs} ${annotations}
             ${previous_schemas}
