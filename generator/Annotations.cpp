@@ -8,7 +8,9 @@
 #include "clang/Basic/SourceManager.h"
 #include "clang/Lex/Pragma.h"
 #include "clang/Lex/Preprocessor.h"
+#include "llvm/Support/FileSystem.h"
 #include "llvm/Support/MemoryBuffer.h"
+#include "llvm/Support/Path.h"
 #include "llvm/Support/raw_ostream.h"
 
 #include <cctype>
@@ -50,7 +52,13 @@ void Diagnostics::releaseNotes() {
   if (Notes.empty())
     return;
   // The file is shared by the generation steps that a parallel build runs at once.
-  int Fd = Errors ? -1 : ::open(ShownNotesFile.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  int Fd = -1;
+  if (!Errors) {
+    llvm::StringRef Parent = llvm::sys::path::parent_path(ShownNotesFile);
+    if (!Parent.empty())
+      llvm::sys::fs::create_directories(Parent);
+    Fd = ::open(ShownNotesFile.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  }
   if (Fd < 0 || ::flock(Fd, LOCK_EX) != 0) {
     if (Fd >= 0)
       ::close(Fd);

@@ -3,7 +3,7 @@
 #   cmake -DGEN=<symcr-gen> -DDIAG=<diagnostics dir> -DFLAGS=<compiler flags> -DWORK=<dir>
 #         -P shown_notes.cmake
 file(REMOVE_RECURSE "${WORK}")
-set(shown "${WORK}/shown-notes.txt")
+set(shown "${WORK}/symcr/shown-notes.txt")  # in a directory the steps create
 
 # generate(<out> <source> <expected exit code>): the output of one generation step in <out>.
 function(generate out source expected_result)
