@@ -14,9 +14,10 @@
 # by find_package(symcr), whose sdk component installs it), or `symcr` found on PATH.
 #
 # add_test() is silently ignored where testing is not enabled, so the function enables testing
-# (enable_testing()) in the calling directory and every directory above it, at their end: the gate exists
-# whether or not the project calls enable_testing() or include(CTest). Only a project that turned
-# testing off with BUILD_TESTING=OFF gets no gate, and a configure message says so.
+# (enable_testing()) at the end of the calling directory and of every directory above it: the
+# gate exists whether or not the project calls enable_testing() or include(CTest). Only a
+# project that turned testing off with BUILD_TESTING=OFF gets no gate, and a configure message
+# says so.
 include_guard(GLOBAL)
 include(${CMAKE_CURRENT_LIST_DIR}/SymcrCheckpointing.cmake)  # _symcr_tool_missing
 
