@@ -38,7 +38,8 @@ def _fmt(value, spec):
 
 # What the Version column's names mean, printed under the table for those that appear.
 VERSION_LEGEND = (
-    ({"V0"}, "V0: the build that took the checkpoint, restored into itself (the control)"),
+    ({"V0"}, "V0: the released build; baseline: it flies the whole mission without a stop; with "
+             "a method: its checkpoint restored into V0 itself (the control)"),
     ({"V1", "V2", "V3", "V4"}, "V1-V4: the patched builds (specimen/README.md, versions)"),
     ({"RT"}, "RT: red team: the vulnerable build, crashed by an exploit frame, restored into "
              "its one-line repair"),

@@ -52,7 +52,7 @@ class TableLegend(unittest.TestCase):
         self.assertIn("version RT: red team: the vulnerable build, crashed by an exploit frame, "
                       "restored into its one-line repair", table)
         self.assertIn("version RT0: red team, CRIU only", table)
-        self.assertIn("version V0: the build that took the checkpoint", table)
+        self.assertIn("version V0: the released build; baseline: it flies the whole mission", table)
         self.assertNotIn("V1-V4", table)
 
     def test_only_names_in_the_table_are_explained(self):
