@@ -108,7 +108,7 @@ Status load_record_file(const std::string& path, LoadedCheckpoint& out,
 
 Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slot,
                        LoadedCheckpoint& out, const std::string& writer_schema) {
-  FileKind kind;
+  FileKind kind = FileKind::Record;  // set on success; g++ -O3 cannot tell it is
   Status status = detect_file_kind(path, kind);
   if (!status.ok()) return status;
   if (kind == FileKind::Record) {

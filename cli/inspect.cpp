@@ -187,7 +187,7 @@ int run_inspect(const InspectArgs& args) {
     print_error(status.message());
     return kExitError;
   }
-  FileKind kind;
+  FileKind kind = FileKind::Record;  // set on success; g++ -O3 cannot tell it is
   status = detect_file_kind(args.path, kind);
   if (!status.ok()) {
     print_error(status.message());

@@ -190,7 +190,7 @@ int run_verify(const VerifyArgs& args) {
     print_error(keys.message());
     return kExitError;
   }
-  FileKind kind;
+  FileKind kind = FileKind::Record;  // set on success; g++ -O3 cannot tell it is
   const Status status = detect_file_kind(args.path, kind);
   if (!status.ok()) {
     if (status.error() == Error::Io) {

@@ -54,9 +54,31 @@
 # started process reads it instead of planning. Other checkpoints are planned when restored, as
 # without the option. Editing a listed file regenerates.
 #
+# A build runs one symcr-gen per checkpointed target, often over the same sources: the notes it
+# prints (not its warnings or errors) are printed once per build tree, by the first target whose
+# generation reaches them, and listed in <build>/symcr/shown-notes.txt (delete it to see them
+# again). A generation step that fails prints all of its notes.
+#
 # `#pragma symcr` lines are unknown to g++, which warns under -Wall (-Wunknown-pragmas): the
 # function adds -Wno-unknown-pragmas to the annotated target (only there).
 include_guard(GLOBAL)
+
+# Stops the configuration because <function> needs <tool>, with the advice that fits where symcr
+# comes from: an installed package (found with find_package) was built without the tool, while in
+# this build tree the option builds it. Either way <variable> may name a prebuilt executable.
+function(_symcr_tool_missing function tool option variable)
+  if(TARGET symcr::runtime)
+    get_target_property(installed symcr::runtime IMPORTED)
+  endif()
+  if(installed)
+    message(FATAL_ERROR "${function}: the symcr package found at ${symcr_DIR} has no ${tool}: "
+                        "it was built with ${option}=OFF. Build symcr with ${option}=ON and "
+                        "install it again (cmake --install <build> --component sdk), or set "
+                        "${variable} to a ${tool} executable.")
+  endif()
+  message(FATAL_ERROR "${function}: no ${tool}. Build it (${option}=ON) or set ${variable} to a "
+                      "${tool} executable.")
+endfunction()
 
 function(symcr_add_checkpointing target)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "PROGRAM;PROFILE" "ANNOTATIONS;PREVIOUS_SCHEMA")
@@ -74,8 +96,8 @@ function(symcr_add_checkpointing target)
     set(generator "$<TARGET_FILE:symcr::gen>")
     set(generator_dependency symcr::gen)
   else()
-    message(FATAL_ERROR "symcr_add_checkpointing: no symcr-gen. Build it "
-                        "(SYMCR_BUILD_GENERATOR=ON) or set SYMCR_GEN_EXECUTABLE.")
+    _symcr_tool_missing(symcr_add_checkpointing symcr-gen SYMCR_BUILD_GENERATOR
+                        SYMCR_GEN_EXECUTABLE)
   endif()
   set(profile host)
   if(arg_PROFILE)
@@ -194,7 +216,9 @@ function(symcr_add_checkpointing target)
     COMMAND "${generator}" -p "${CMAKE_BINARY_DIR}" --out-dir "${out_dir}"
             --schema-file "${schema_file}" --program "${program}" --profile "${profile}"
             --depfile "${out_dir}/symcr-gen.d" --depfile-target "${schema}"
-            --report-file "${out_dir}/report.txt" ${annotation_args} ${previous_args}
+            --report-file "${out_dir}/report.txt"
+            --shown-notes "${CMAKE_BINARY_DIR}/symcr/shown-notes.txt"
+            ${annotation_args} ${previous_args}
             ${library_args} ${inputs}
     DEPENDS ${generator_dependency} ${inputs} ${library_inputs} ${annotations}
             ${previous_schemas}

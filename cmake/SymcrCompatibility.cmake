@@ -10,9 +10,16 @@
 # and a patch that cannot restore them fails the build's tests.
 #
 # The test is named symcr.compatibility.<target> unless NAME is given. The CLI is, in order: the
-# cache variable SYMCR_CLI_EXECUTABLE, the target symcr::cli (built in this project), or `symcr`
-# found on PATH.
+# cache variable SYMCR_CLI_EXECUTABLE, the target symcr::cli (built in this project, or imported
+# by find_package(symcr), whose sdk component installs it), or `symcr` found on PATH.
+#
+# add_test() is silently ignored where testing is not enabled, so the function enables testing
+# (enable_testing()) at the end of the calling directory and of every directory above it: the
+# gate exists whether or not the project calls enable_testing() or include(CTest). Only a
+# project that turned testing off with BUILD_TESTING=OFF gets no gate, and a configure message
+# says so.
 include_guard(GLOBAL)
+include(${CMAKE_CURRENT_LIST_DIR}/SymcrCheckpointing.cmake)  # _symcr_tool_missing
 
 function(symcr_add_compatibility_test target)
   cmake_parse_arguments(PARSE_ARGV 1 arg "STRICT" "CHECKPOINTS;NAME" "")
@@ -42,8 +49,8 @@ function(symcr_add_compatibility_test target)
   else()
     find_program(SYMCR_CLI_FOUND symcr)
     if(NOT SYMCR_CLI_FOUND)
-      message(FATAL_ERROR "symcr_add_compatibility_test: no symcr CLI. Build it "
-                          "(SYMCR_BUILD_CLI=ON) or set SYMCR_CLI_EXECUTABLE.")
+      _symcr_tool_missing(symcr_add_compatibility_test "symcr CLI" SYMCR_BUILD_CLI
+                          SYMCR_CLI_EXECUTABLE)
     endif()
     set(cli "${SYMCR_CLI_FOUND}")
   endif()
@@ -52,6 +59,19 @@ function(symcr_add_compatibility_test target)
   if(arg_NAME)
     set(name "${arg_NAME}")
   endif()
+  if(DEFINED BUILD_TESTING AND NOT BUILD_TESTING)
+    message(STATUS "symcr_add_compatibility_test: BUILD_TESTING is OFF: no test ${name}")
+    return()
+  endif()
+  # enable_testing() called here would only set a variable of this function's scope: it is
+  # deferred to the end of this directory and of each one above it (still being configured,
+  # this one being inside their add_subdirectory), so that ctest in the top build directory
+  # reaches the test.
+  set(directory "${CMAKE_CURRENT_SOURCE_DIR}")
+  while(directory)
+    cmake_language(DEFER DIRECTORY "${directory}" CALL enable_testing)
+    get_directory_property(directory DIRECTORY "${directory}" PARENT_DIRECTORY)
+  endwhile()
   set(strict)
   if(arg_STRICT)
     set(strict --strict)

@@ -1,6 +1,7 @@
-# Install and export rules: the runtime library and headers, symcr-gen, and the CMake
-# package (symcrConfig.cmake with symcr_add_checkpointing). All in the component "sdk", so
-# `cmake --install <build> --component sdk` installs what a consuming project needs.
+# Install and export rules: the runtime library and headers, symcr-gen, the symcr CLI (which
+# symcr_add_compatibility_test runs) and the CMake package (symcrConfig.cmake with
+# symcr_add_checkpointing). All in the component "sdk", so `cmake --install <build> --component
+# sdk` installs what a consuming project needs.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -13,6 +14,11 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/runtime/include/symcr
 if(TARGET symcr-gen)
   set_target_properties(symcr-gen PROPERTIES EXPORT_NAME gen)
   install(TARGETS symcr-gen EXPORT symcrTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
+          COMPONENT sdk)
+endif()
+if(TARGET symcr-cli)
+  set_target_properties(symcr-cli PROPERTIES EXPORT_NAME cli)
+  install(TARGETS symcr-cli EXPORT symcrTargets RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
           COMPONENT sdk)
 endif()
 install(EXPORT symcrTargets NAMESPACE symcr:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/symcr

@@ -8,11 +8,17 @@
 #include "clang/Basic/SourceManager.h"
 #include "clang/Lex/Pragma.h"
 #include "clang/Lex/Preprocessor.h"
+#include "llvm/Support/FileSystem.h"
 #include "llvm/Support/MemoryBuffer.h"
+#include "llvm/Support/Path.h"
 #include "llvm/Support/raw_ostream.h"
 
 #include <cctype>
 #include <cstdlib>
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 namespace symcr_gen {
 
@@ -27,10 +33,55 @@ void Diagnostics::print(const Location &Loc, const char *Severity,
   Line += std::string(Severity) + ": " + Message;
   if (!Seen.emplace(Line, true).second)
     return;
+  if (!Quiet && !ShownNotesFile.empty() && std::string(Severity) == "note") {
+    HeldNotes.push_back(Line);
+    return;
+  }
   if (Quiet)
     Collected.push_back(Message);
   else
     llvm::errs() << Line << "\n";
+}
+
+void Diagnostics::releaseNotes() {
+  std::vector<std::string> Notes;
+  {
+    std::lock_guard<std::mutex> Guard(Lock);
+    Notes.swap(HeldNotes);
+  }
+  if (Notes.empty())
+    return;
+  // The file is shared by the generation steps that a parallel build runs at once.
+  int Fd = -1;
+  if (!Errors) {
+    llvm::StringRef Parent = llvm::sys::path::parent_path(ShownNotesFile);
+    if (!Parent.empty())
+      llvm::sys::fs::create_directories(Parent);
+    Fd = ::open(ShownNotesFile.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  }
+  if (Fd < 0 || ::flock(Fd, LOCK_EX) != 0) {
+    if (Fd >= 0)
+      ::close(Fd);
+    for (const std::string &Line : Notes)
+      llvm::errs() << Line << "\n";
+    return;
+  }
+  std::string Shown;
+  char Buffer[4096];
+  for (ssize_t N; (N = ::read(Fd, Buffer, sizeof Buffer)) > 0;)
+    Shown.append(Buffer, static_cast<std::size_t>(N));
+  std::string Added;
+  for (const std::string &Line : Notes) {
+    if (("\n" + Shown).find("\n" + Line + "\n") != std::string::npos)
+      continue;
+    llvm::errs() << Line << "\n";
+    Shown += Line + "\n";
+    Added += Line + "\n";
+  }
+  // Appended where the read ended; should it fail, a later step prints the note again.
+  ssize_t Written = ::write(Fd, Added.data(), Added.size());
+  (void)Written;
+  ::close(Fd);
 }
 
 std::string Diagnostics::firstProblem() const {

@@ -67,6 +67,15 @@ public:
   /// the skip lines that remove every unrestorable error.
   void flushUnrestorable();
 
+  /// Holds notes back until releaseNotes(), which prints only those not yet in
+  /// \p File and adds them there. A build runs one symcr-gen per checkpointed
+  /// target, often over the same sources: the build passes one file for all of
+  /// them, so that a note is printed once per build tree, not once per target.
+  void printNotesOnceIn(const std::string &File) { ShownNotesFile = File; }
+  /// Prints the notes held back. After an error every one is printed, since a
+  /// note may explain it.
+  void releaseNotes();
+
 private:
   void print(const Location &Loc, const char *Severity,
              const std::string &Message);
@@ -85,6 +94,8 @@ private:
   unsigned Errors = 0;
   std::map<std::string, Group> Groups; ///< by the member's skip hint
   std::vector<std::string> Fixes;      ///< skip lines, in order of first need
+  std::string ShownNotesFile;          ///< see printNotesOnceIn()
+  std::vector<std::string> HeldNotes;  ///< whole lines, in order
 };
 
 /// Which symcr::ops template a type's operation table comes from.

@@ -114,6 +114,11 @@ static llvm::cl::opt<symcr_gen::RuntimeProfile> Profile(
                    "the device profile (runtime/device): no heap; a type it "
                    "cannot hold is an error naming the member and the fix")),
     llvm::cl::init(symcr_gen::RuntimeProfile::Host), llvm::cl::cat(Category));
+static llvm::cl::opt<std::string> ShownNotes(
+    "shown-notes",
+    llvm::cl::desc("Print a note only if this file, shared by the build's "
+                   "generation steps, does not list it yet, and list it"),
+    llvm::cl::value_desc("file"), llvm::cl::cat(Category));
 static llvm::cl::opt<bool>
     Timing("time", llvm::cl::desc("Print the time spent per source"),
            llvm::cl::cat(Category));
@@ -360,6 +365,13 @@ int main(int argc, const char **argv) {
     return 2;
   }
   Diagnostics Diags;
+  if (!ShownNotes.empty())
+    Diags.printNotesOnceIn(ShownNotes);
+  // Every return below prints the notes held back.
+  struct NotesRelease {
+    Diagnostics &Diags;
+    ~NotesRelease() { Diags.releaseNotes(); }
+  } ReleaseNotesOnReturn{Diags};
   std::vector<Directive> Sidecar;
   for (const std::string &File : AnnotationFiles)
     parseSidecarFile(File, Sidecar, Diags);
@@ -476,6 +488,7 @@ int main(int argc, const char **argv) {
   if (!UnparsedSources && !Diags.errorCount())
     planPreviousSchemas(Program, PreviousSchemas, Diags);
   if (UnparsedSources || Diags.errorCount()) {
+    Diags.releaseNotes(); // before the closing line
     llvm::errs() << "symcr-gen: " << Diags.errorCount() + UnparsedSources
                  << " error(s)";
     if (UnparsedSources)

@@ -36,6 +36,18 @@ def _fmt(value, spec):
     return "-" if value is None else format(value, spec)
 
 
+# What the Version column's names mean, printed under the table for those that appear.
+VERSION_LEGEND = (
+    ({"V0"}, "V0: the released build; baseline: it flies the whole mission without a stop; with "
+             "a method: its checkpoint restored into V0 itself (the control)"),
+    ({"V1", "V2", "V3", "V4"}, "V1-V4: the patched builds (specimen/README.md, versions)"),
+    ({"RT"}, "RT: red team: the vulnerable build, crashed by an exploit frame, restored into "
+             "its one-line repair"),
+    ({"RT0"}, "RT0: red team, CRIU only: restored into the vulnerable build itself (the only "
+              "executable CRIU accepts), which the exploit's second try crashes again"),
+)
+
+
 def format_table(rows, notes):
     header = ("Mission", "Version", "Method", "Runs", "Time (s)", "Ckpt (B)", "Ckpt (us)",
               "Restore (us)", "Success")
@@ -55,6 +67,8 @@ def format_table(rows, notes):
     out = ["Table 1: resuming a mission after a checkpoint, kill -9 and restart into a patched build",
            render(header), render(["-" * w for w in widths])]
     out += [render(l) for l in lines]
+    versions = {r["version"] for r in rows}
+    out += ["version " + text for names, text in VERSION_LEGEND if names & versions]
     out += ["note: " + n for n in notes]
     return "\n".join(out)
 

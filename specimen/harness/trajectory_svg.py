@@ -38,6 +38,35 @@ def read_track(path):
     return rows
 
 
+CHAR_WIDTH = 7.0  # px per character of the 12 px sans-serif labels, a little generous
+TEXT_HEIGHT = 12.0
+
+
+def text_box(x, y, text):
+    """The box (left, top, right, bottom) a label drawn at baseline (x, y) covers."""
+    return (x, y - TEXT_HEIGHT + 1, x + CHAR_WIDTH * len(text), y + 3)
+
+
+def overlaps(a, b):
+    return a[0] < b[2] and b[0] < a[2] and a[1] < b[3] and b[1] < a[3]
+
+
+def place_label(x, y, text, occupied, width):
+    """A baseline for `text` next to the point (x, y), as near as it goes without covering a
+    box of `occupied` or leaving the picture: to the right first, then to the left, further
+    up or down each time."""
+    label_width = CHAR_WIDTH * len(text)
+    candidates = []
+    for dy in (4, -12, 20, -28, 36, -44, 52, -60, 68, -76, 84, -92):
+        candidates += [(x + 10, y + dy), (x - 10 - label_width, y + dy)]
+    for tx, ty in candidates:
+        box = text_box(tx, ty, text)
+        if box[0] >= 0 and box[2] <= width and box[1] >= 24 and not any(
+                overlaps(box, other) for other in occupied):
+            return tx, ty
+    return candidates[0]
+
+
 def draw(mission_path, track_path, flight, title, out_path, size=720):
     home, route = _route_ne(read_mission(mission_path))
     track = read_track(track_path)
@@ -62,13 +91,16 @@ def draw(mission_path, track_path, flight, title, out_path, size=720):
            '<rect width="100%" height="100%" fill="white"/>\n',
            '<text x="10" y="20" font-size="14">%s</text>\n' % title]
     svg.append(polyline(route, 'stroke="#999" stroke-width="2" stroke-dasharray="6,4"'))
+    occupied = []  # the boxes of the labels drawn so far
     for i, (n, e) in enumerate(route):
         x, y = xy(n, e)
         svg.append('<circle cx="%.1f" cy="%.1f" r="4" fill="#999"/>'
                    '<text x="%.1f" y="%.1f" fill="#666">%d</text>\n' % (x, y, x + 6, y - 6, i + 1))
+        occupied.append(text_box(x + 6, y - 6, str(i + 1)))
     hx, hy = xy(*home)
     svg.append('<rect x="%.1f" y="%.1f" width="8" height="8" fill="black"/>'
                '<text x="%.1f" y="%.1f">home</text>\n' % (hx - 4, hy - 4, hx + 8, hy + 12))
+    occupied.append(text_box(hx + 8, hy + 12, "home"))
     colours = {0: 'stroke="#1f77b4" stroke-width="2"', 1: 'stroke="#d62728" stroke-width="3"',
                2: 'stroke="#2ca02c" stroke-width="2"'}
     for segment in (0, 1, 2):
@@ -80,16 +112,24 @@ def draw(mission_path, track_path, flight, title, out_path, size=720):
         if first > 0:
             points.insert(0, track[first - 1][:2])
         svg.append(polyline(points, colours[segment]))
-    # The points are often close together: their labels go on separate lines.
-    for key, colour, label, dy in (("checkpoint_point", "#1f77b4", "checkpoint", -12),
-                                   ("resume_point", "#2ca02c", "resume", 20),
-                                   ("exploit_point", "#d62728", "exploit", 36)):
+    # The points are often close together and near a waypoint: each label goes where it covers
+    # no waypoint's number and no other label, joined to its point by a line when moved away.
+    for key, colour, label in (("checkpoint_point", "#1f77b4", "checkpoint"),
+                               ("resume_point", "#2ca02c", "resume"),
+                               ("exploit_point", "#d62728", "exploit")):
         p = flight.get(key)
         if p:
             x, y = xy(p["north"], p["east"])
+            text = "%s (t=%.1f s)" % (label, p["t"])
+            tx, ty = place_label(x, y, text, occupied, size)
+            occupied.append(text_box(tx, ty, text))
             svg.append('<circle cx="%.1f" cy="%.1f" r="7" fill="none" stroke="%s" stroke-width="3"/>'
-                       '<text x="%.1f" y="%.1f" fill="%s">%s (t=%.1f s)</text>\n'
-                       % (x, y, colour, x + 10, y + dy, colour, label, p["t"]))
+                       % (x, y, colour))
+            if abs(ty - 4 - y) > 8:
+                near_x = tx if tx > x else tx + CHAR_WIDTH * len(text)
+                svg.append('<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" '
+                           'stroke-width="1"/>' % (x, y, near_x, ty - 4, colour))
+            svg.append('<text x="%.1f" y="%.1f" fill="%s">%s</text>\n' % (tx, ty, colour, text))
     legend = [("#999", "planned route"), ("#1f77b4", "flown before the checkpoint (V0)"),
               ("#d62728", "autopilot down (motors hold)"), ("#2ca02c", "flown after the resume")]
     for i, (colour, text) in enumerate(legend):
