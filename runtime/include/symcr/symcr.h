@@ -44,7 +44,8 @@ enum {
   SYMCR_ERROR_NO_VALID_SLOT = 12,
   SYMCR_ERROR_TOO_LARGE = 13,
   SYMCR_ERROR_UNAUTHENTICATED = 14,
-  SYMCR_ERROR_STORE_FULL = 15
+  SYMCR_ERROR_STORE_FULL = 15,
+  SYMCR_ERROR_ROLLED_BACK = 16
 };
 
 /* Restore decisions: the values of symcr::Decision. */

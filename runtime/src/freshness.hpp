@@ -1,0 +1,61 @@
+// Internal: what makes an authenticated store's state fresh (docs/format.md §4 "Freshness",
+// docs/threat-model.md): the store's identity, in its header page, and the default
+// FreshnessCounter, an authenticated file beside (or away from) the store.
+#ifndef SYMCR_SRC_FRESHNESS_HPP
+#define SYMCR_SRC_FRESHNESS_HPP
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "authentication.hpp"
+#include "symcr/symcr.hpp"
+
+namespace symcr::detail {
+
+// The store's identity: 16 random bytes drawn when the store is created (or first opened for
+// writing by a build that knows of it), kept in the header page after the journal copies.
+inline constexpr std::uint64_t kStoreIdOffset = 400;
+inline constexpr std::size_t kStoreIdRecordSize = 8 + kStoreIdSize + 4;  // magic, id, CRC
+inline constexpr std::size_t kStoreHeaderPageRead = kStoreIdOffset + kStoreIdRecordSize;
+
+// Draws a new identity (getrandom, else /dev/urandom, else time and process id mixed).
+void new_store_id(std::uint8_t (&id)[kStoreIdSize]);
+void encode_store_id(const std::uint8_t (&id)[kStoreIdSize], std::uint8_t* out);
+// The identity in the first `size` bytes of a store; false (and `id` all zero) when it has
+// none or it is damaged.
+bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id)[kStoreIdSize]);
+
+// The default counter: a 256-byte file holding two copies of (magic, key id, value, store id,
+// MAC), both written with one write, so that a cut write leaves the previous value or the new
+// one. The MAC is made with the signing key of the keys in force; a copy verifies with any key
+// the program holds. Never lowered. Through detail::file_system(), like the store.
+class FileFreshnessCounter final : public FreshnessCounter {
+ public:
+  FileFreshnessCounter(std::string path, const std::uint8_t (&store_id)[kStoreIdSize],
+                       Durability durability);
+  // The keys to sign and verify with: the store's snapshot for the operation under way.
+  void use_keys(const KeyRing* keys) { keys_ = keys; }
+  Status read(std::uint64_t& value) override;
+  Status advance(std::uint64_t value) override;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::uint8_t store_id_[kStoreIdSize];
+  Durability durability_;
+  const KeyRing* keys_ = nullptr;
+  bool known_ = false;  // `value_` is what the file holds (read or written by this object)
+  std::uint64_t value_ = 0;
+};
+
+// Decodes a counter file's bytes (at most 256) for `store_id` with `keys`: the higher value of
+// the copies that verify. Corrupt or Unauthenticated, saying why, when none does.
+Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
+                           const std::uint8_t* store_id, const KeyRing& keys,
+                           std::uint64_t& value);
+inline constexpr std::size_t kCounterFileSize = 256;
+
+}  // namespace symcr::detail
+
+#endif  // SYMCR_SRC_FRESHNESS_HPP
