@@ -112,6 +112,15 @@ Status check_authentication(const KeyRing* keys, const std::uint8_t* record,
   return Status();
 }
 
+Status check_standalone_authentication(const KeyRing* keys, const std::uint8_t* record,
+                                       const RecordView& view) {
+  RecordBinding standalone;
+  if (keys != nullptr && view.schema != nullptr) {
+    schema_digest(view.schema, view.header.schema_size, standalone.schema_digest);
+  }
+  return check_authentication(keys, record, view, standalone);
+}
+
 void store_item_mac(const OwnedKey& key, const char* domain, const std::uint8_t* store_id,
                     const std::uint8_t* bytes, std::size_t size,
                     std::uint8_t (&mac)[kSha256Size]) {

@@ -62,6 +62,11 @@ void sign_record(const KeyRing& keys, std::uint8_t* record, std::size_t size,
 Status check_authentication(const KeyRing* keys, const std::uint8_t* record,
                             const RecordView& view, const RecordBinding& binding);
 
+// check_authentication for a standalone checkpoint (a file or a buffer): bound to no store and
+// to the SHA-256 of its inline schema.
+Status check_standalone_authentication(const KeyRing* keys, const std::uint8_t* record,
+                                       const RecordView& view);
+
 // The MAC of a store's restore journal copy or freshness counter (`bytes`, `size`), made with
 // `key` for the store `store_id`; `domain` tells the kinds apart.
 void store_item_mac(const OwnedKey& key, const char* domain, const std::uint8_t* store_id,

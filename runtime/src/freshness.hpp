@@ -26,6 +26,12 @@ void encode_store_id(const std::uint8_t (&id)[kStoreIdSize], std::uint8_t* out);
 // none or it is damaged.
 bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id)[kStoreIdSize]);
 
+// The freshness rule (keys set): a store is fresh when its newest authenticated checkpoint
+// (`newest`, a sequence) or its authenticated journal (`journal_freshness`) is at least the
+// counter's `counted` value; RolledBack, saying what is older than what, otherwise.
+Status freshness_verdict(const char* path, std::uint64_t newest, std::uint64_t journal_freshness,
+                         std::uint64_t counted);
+
 // The default counter: a 256-byte file holding two copies of (magic, key id, value, store id,
 // MAC), both written with one write, so that a cut write leaves the previous value or the new
 // one. The MAC is made with the signing key of the keys in force; a copy verifies with any key

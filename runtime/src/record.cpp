@@ -270,12 +270,7 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size, con
                     "no schema of its own",
                     static_cast<unsigned long long>(record.header.schema_hash));
   }
-  if (status.ok()) {
-    const KeySnapshot keys = current_keys();
-    RecordBinding standalone;
-    if (keys) schema_digest(record.schema, record.header.schema_size, standalone.schema_digest);
-    status = check_authentication(keys.get(), data, record, standalone);
-  }
+  if (status.ok()) status = check_standalone_authentication(current_keys().get(), data, record);
   if (!status.ok()) {
     ReportAccess::set_status(report, status);
     return report;

@@ -165,10 +165,7 @@ struct Store::Impl {
   // checkpoint, as the authenticated journal directs).
   Status check_freshness() {
     if (!keys || counter == nullptr) return Status();
-    std::uint64_t newest = 0;
-    for (const Slot& slot : slots) {
-      if (slot.state == StoreSlotState::Valid) newest = std::max(newest, slot.sequence);
-    }
+    const std::uint64_t newest = newest_authentic_sequence();
     std::uint64_t counted = 0;
     Status read = counter->read(counted);
     if (!read.ok()) {
@@ -179,22 +176,33 @@ struct Store::Impl {
                     path.c_str(), read.message());
     }
     counter_value = std::max(counter_value, counted);
-    if (std::max(newest, journal.freshness) < counted) {
-      return Status(Error::RolledBack,
-                    "%s: rolled back: its newest authenticated checkpoint is sequence %llu and "
-                    "its journal's freshness %llu, but the freshness counter says %llu was "
-                    "written (an older copy of the store, or its newest checkpoints damaged or "
-                    "removed): nothing restored",
-                    path.c_str(), static_cast<unsigned long long>(newest),
-                    static_cast<unsigned long long>(journal.freshness),
-                    static_cast<unsigned long long>(counted));
+    return detail::freshness_verdict(path.c_str(), newest, journal.freshness, counted);
+  }
+
+  // The highest sequence of an authenticated (with keys set: every Valid) slot.
+  std::uint64_t newest_authentic_sequence() const {
+    std::uint64_t newest = 0;
+    for (const Slot& slot : slots) {
+      if (slot.state == StoreSlotState::Valid) newest = std::max(newest, slot.sequence);
     }
-    return Status();
+    return newest;
+  }
+
+  // Reads the journal as empty, `why` it is not trusted, keeping `floor` as its freshness: the
+  // checkpoints saved from now on carry it, so that the distrusted journal put back again is
+  // still older than they were saved under (an empty journal excludes nothing, so ignoring one
+  // never restores an older state).
+  void distrust_journal(const char* why, std::uint64_t floor) {
+    journal_distrust = why;
+    const std::uint64_t generation = recorded.generation;
+    journal = detail::RestoreJournal();
+    journal.generation = generation;
+    journal.freshness = floor;
+    recorded = journal;
   }
 
   // With keys set, a journal older than the one the newest authenticated checkpoint was saved
-  // under is an older copy put back: it is not trusted (an empty journal excludes nothing, so
-  // ignoring one never restores an older state).
+  // under is an older copy put back.
   void distrust_stale_journal() {
     if (!keys) return;
     std::uint64_t newest = 0, saved_under = 0;
@@ -205,11 +213,9 @@ struct Store::Impl {
       }
     }
     if (journal.freshness < saved_under) {
-      journal_distrust = "it is older than the journal the newest checkpoint was saved under "
-                         "(an older copy put back)";
-      journal = detail::RestoreJournal();
-      journal.generation = recorded.generation;
-      recorded = journal;
+      distrust_journal("it is older than the journal the newest checkpoint was saved under (an "
+                       "older copy put back)",
+                       saved_under);
     }
   }
 
@@ -1048,6 +1054,13 @@ Status Store::save() {
     Status rescan = impl.scan_slots(fd_);
     if (!rescan.ok()) return rescan;
   }
+  // A save into a store older than its counter (keys set) does not trust its journal: saved
+  // under the counter's value, the new checkpoint makes the old journal stale for good.
+  if (impl.keys && std::max(impl.newest_authentic_sequence(), impl.journal.freshness) <
+                       impl.counter_value) {
+    impl.distrust_journal("it is older than the freshness counter (an older copy put back)",
+                          impl.counter_value);
+  }
   // Above every sequence the store holds (authenticated, with keys set), its journal names and
   // the freshness counter has seen, so that no older record and no exclusion can outrank or
   // cover it.
@@ -1158,11 +1171,18 @@ Report Store::restore_latest(const RestoreOptions& options) {
     if (status.ok()) impl.distrust_stale_journal();
   }
   impl.scan_current = false;
-  // Freshness first: a rolled-back store is refused before anything (the journal included) is
-  // written.
-  if (status.ok()) status = impl.check_freshness();
   if (!status.ok()) {
     detail::ReportAccess::set_status(report, status);
+    return report;
+  }
+  // Freshness first: a rolled-back store is refused before anything (the journal included) is
+  // written; the report lists the slots that could not count, and why.
+  status = impl.check_freshness();
+  if (!status.ok()) {
+    detail::ReportAccess::set_status(report, status);
+    std::vector<SkippedCheckpoint> unusable;
+    impl.list_unrestorable_slots(unusable);
+    detail::ReportAccess::skipped(report) = std::move(unusable);
     return report;
   }
   impl.newest_first.clear();
