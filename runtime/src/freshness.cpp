@@ -87,16 +87,25 @@ bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id
   return true;
 }
 
-Status freshness_verdict(const char* path, std::uint64_t newest, std::uint64_t journal_freshness,
+Status freshness_verdict(const char* path, std::uint64_t newest, const RestoreJournal& journal,
                          std::uint64_t counted) {
-  if (newest >= counted || journal_freshness >= counted) return Status();
+  if (newest >= counted) return Status();
+  if (journal.freshness >= counted) {
+    if (newest >= journal.newest) return Status();
+    return Status(Error::RolledBack,
+                  "%s: rolled back: its newest authenticated checkpoint is sequence %llu, but "
+                  "its restore journal was written when it held sequence %llu (its newest "
+                  "checkpoints damaged or removed): nothing restored",
+                  path, static_cast<unsigned long long>(newest),
+                  static_cast<unsigned long long>(journal.newest));
+  }
   return Status(Error::RolledBack,
                 "%s: rolled back: its newest authenticated checkpoint is sequence %llu and its "
                 "journal's freshness %llu, but the freshness counter says %llu was written (an "
                 "older copy of the store, or its newest checkpoints damaged or removed): "
                 "nothing restored",
                 path, static_cast<unsigned long long>(newest),
-                static_cast<unsigned long long>(journal_freshness),
+                static_cast<unsigned long long>(journal.freshness),
                 static_cast<unsigned long long>(counted));
 }
 

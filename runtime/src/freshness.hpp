@@ -9,6 +9,7 @@
 #include <string>
 
 #include "authentication.hpp"
+#include "restore_journal.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {
@@ -27,9 +28,11 @@ void encode_store_id(const std::uint8_t (&id)[kStoreIdSize], std::uint8_t* out);
 bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id)[kStoreIdSize]);
 
 // The freshness rule (keys set): a store is fresh when its newest authenticated checkpoint
-// (`newest`, a sequence) or its authenticated journal (`journal_freshness`) is at least the
-// counter's `counted` value; RolledBack, saying what is older than what, otherwise.
-Status freshness_verdict(const char* path, std::uint64_t newest, std::uint64_t journal_freshness,
+// (`newest`, a sequence) is at least the counter's `counted` value, or when its authenticated
+// journal is (the last thing written was the journal) and the store still holds the newest
+// checkpoint it held when that journal was written (`journal.newest`); RolledBack, saying what
+// is older than what, otherwise.
+Status freshness_verdict(const char* path, std::uint64_t newest, const RestoreJournal& journal,
                          std::uint64_t counted);
 
 // The default counter: a 256-byte file holding two copies of (magic, key id, value, store id,

@@ -17,8 +17,11 @@ constexpr std::size_t kChecked = kRestoreJournalSize - 4;  // the CRC covers wha
 constexpr std::uint8_t kLegacyMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'J', 'N', 'L'};
 constexpr std::size_t kLegacyChecked = kLegacyRestoreJournalSize - 4;
 
+// The seal: u32 key id, u32 1 (sealed), u64 freshness, u64 newest, the first 24 bytes of the
+// HMAC-SHA-256 of the journal and those fields (192 bits; truncated to fit between the copies).
 constexpr char kSealDomain[] = "symcr restore journal";
-constexpr std::size_t kSealSigned = kRestoreJournalSize + 16;  // the journal, key id, freshness
+constexpr std::size_t kSealSigned = kRestoreJournalSize + 24;
+constexpr std::size_t kSealMacSize = kRestoreJournalSealSize - 24;
 
 bool ranges_hold(const RestoreJournal& journal) {
   return journal.suspect_low <= journal.suspect_high &&
@@ -28,7 +31,7 @@ bool ranges_hold(const RestoreJournal& journal) {
 
 // Whether the copy at `data` carries a seal that verifies for `seal`; `why` says otherwise.
 bool seal_holds(const std::uint8_t* data, const JournalSeal& seal, std::uint64_t& freshness,
-                std::string& why) {
+                std::uint64_t& newest, std::string& why) {
   const std::uint8_t* s = data + kRestoreJournalSize;
   if (le::load32(s + 4) != 1) {
     why = "it carries no MAC (written without keys)";
@@ -42,12 +45,13 @@ bool seal_holds(const std::uint8_t* data, const JournalSeal& seal, std::uint64_t
   }
   std::uint8_t mac[kSha256Size];
   store_item_mac(*key, kSealDomain, seal.store_id, data, kSealSigned, mac);
-  if (!equal_macs(mac, s + 16, kSha256Size)) {
+  if (!equal_macs(mac, s + 24, kSealMacSize)) {
     why = "its MAC does not verify (forged, or another store's)";
     return false;
   }
   freshness = le::load64(s + 8);
-  if (freshness > kMaxRecordSequence) {
+  newest = le::load64(s + 16);
+  if (freshness > kMaxRecordSequence || newest > kMaxRecordSequence) {
     why = "its freshness value is beyond the sequence range";
     return false;
   }
@@ -189,9 +193,10 @@ void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out,
   le::store32(s, key.id);
   le::store32(s + 4, 1);
   le::store64(s + 8, journal.freshness);
+  le::store64(s + 16, journal.newest);
   std::uint8_t mac[kSha256Size];
   store_item_mac(key, kSealDomain, seal->store_id, out, kSealSigned, mac);
-  std::memcpy(s + 16, mac, sizeof mac);
+  std::memcpy(s + 24, mac, kSealMacSize);
 }
 
 RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size,
@@ -206,7 +211,7 @@ RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size,
     if (verify) {
       std::string copy_why;
       if (offset + kRestoreJournalCopySize > size ||
-          !seal_holds(page + offset, *seal, copy.freshness, copy_why)) {
+          !seal_holds(page + offset, *seal, copy.freshness, copy.newest, copy_why)) {
         if (!copy.empty()) why = copy_why;
         continue;
       }

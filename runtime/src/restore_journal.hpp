@@ -51,8 +51,10 @@ struct RestoreJournal {
   // The fallback depth of the program that wrote the journal: how deep its next start goes.
   std::uint32_t depth = 0;
   // With keys: the freshness value the journal was sealed with (drawn from the store's
-  // sequence space, so that saves after it number above it); 0 without keys.
+  // sequence space, so that saves after it number above it), and the newest authenticated
+  // checkpoint the store held when it was written; 0 without keys.
   std::uint64_t freshness = 0;
+  std::uint64_t newest = 0;
 
   bool empty() const {
     return unconfirmed == 0 && suspect_high == 0 && given_up_through == 0 && crashed_high == 0 &&

@@ -176,7 +176,7 @@ struct Store::Impl {
                     path.c_str(), read.message());
     }
     counter_value = std::max(counter_value, counted);
-    return detail::freshness_verdict(path.c_str(), newest, journal.freshness, counted);
+    return detail::freshness_verdict(path.c_str(), newest, journal, counted);
   }
 
   // The highest sequence of an authenticated (with keys set: every Valid) slot.
@@ -236,8 +236,10 @@ struct Store::Impl {
                       path.c_str());
       }
       journal.freshness = fresh;
+      journal.newest = newest_authentic_sequence();
     } else {
       journal.freshness = 0;
+      journal.newest = 0;
     }
     const detail::JournalSeal seal = journal_seal();
     constexpr std::uint64_t kFirst = detail::kRestoreJournalOffsets[0];
@@ -961,7 +963,9 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
     impl.own_counter->use_keys(impl.keys.get());
     impl.counter = impl.own_counter.get();
   }
-  if (impl.keys) (void)impl.counter->read(impl.counter_value);  // checked again at restore
+  // Read for numbering; checked again by each restore.
+  const Status counter_read =
+      impl.keys ? impl.counter->read(impl.counter_value) : Status(Error::NoValidSlot, "no keys");
   impl.adopt_journal(header, got);
   got = std::min(got, detail::kStoreHeaderSize);
   Status header_status;
@@ -1025,6 +1029,13 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
   }
   impl.own_area = impl.area_for_hash(blob.hash);
   impl.distrust_stale_journal();
+  if (impl.keys && can_write && impl.read_only_reason.empty() && !counter_read.ok() &&
+      impl.newest_authentic_sequence() == 0 && impl.journal.freshness == 0) {
+    // Nothing authenticated yet: the counter is created now, before the first checkpoint, so
+    // that a crash while it is first written never leaves a checkpoint without a counter. A
+    // counter that cannot be written yet is reported by the first save.
+    (void)impl.advance_counter(impl.highest_known_sequence());
+  }
   impl.scan_current = impl.newest_scanned >= 0 || impl.newest_valid_slot() < 0;
   if (impl.newest_scanned >= 0) {
     // A build opens its store while it initialises and restores where time counts (a restore
@@ -1056,8 +1067,9 @@ Status Store::save() {
   }
   // A save into a store older than its counter (keys set) does not trust its journal: saved
   // under the counter's value, the new checkpoint makes the old journal stale for good.
-  if (impl.keys && std::max(impl.newest_authentic_sequence(), impl.journal.freshness) <
-                       impl.counter_value) {
+  if (impl.keys && !detail::freshness_verdict(impl.path.c_str(), impl.newest_authentic_sequence(),
+                                              impl.journal, impl.counter_value)
+                        .ok()) {
     impl.distrust_journal("it is older than the freshness counter (an older copy put back)",
                           impl.counter_value);
   }

@@ -90,7 +90,7 @@ Status StoreReader::check_freshness(std::uint64_t counter_value,
   for (std::uint32_t i = 0; i < slots_.size() && i < authentic.size(); ++i) {
     if (authentic[i]) newest = std::max(newest, slots_[i].header.sequence);
   }
-  return freshness_verdict(path_.c_str(), newest, journal_.freshness, counter_value);
+  return freshness_verdict(path_.c_str(), newest, journal_, counter_value);
 }
 
 std::vector<std::uint32_t> StoreReader::valid_slots_newest_first() const {

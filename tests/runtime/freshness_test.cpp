@@ -154,6 +154,29 @@ TEST_F(FreshnessTest, TheNewestSlotDamagedIsRefusedNotFallenBackFrom) {
   expect_a(9);
 }
 
+// After a start recorded its restore (the journal written last), the newest slot damaged: the
+// journal says which checkpoint the store held then, so the fallback to an older one is refused.
+TEST_F(FreshnessTest, TheNewestSlotDamagedAfterARecordedRestoreIsRefused) {
+  options.fallback_depth = 1;
+  save_seeds(1, 4);
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, options, store).ok());
+    ASSERT_TRUE(store.restore_latest().ok());
+    ASSERT_TRUE(store.confirm().ok());
+  }
+  std::vector<std::uint8_t> bytes = read_file(path);
+  const std::uint64_t newest = slot_of(bytes, 4);
+  ASSERT_NE(newest, 0u);
+  bytes[newest + 130] ^= 1;
+  write_file(path, bytes);
+  const symcr::Report report = restore();
+  expect_error(report, symcr::Error::RolledBack,
+               "its restore journal was written when it held sequence 4");
+  expect_untouched();
+  EXPECT_EQ(read_file(path), bytes);
+}
+
 TEST_F(FreshnessTest, AForgedJournalIsReportedAndNeverDisablesRestores) {
   save_seeds(1, 4);
   std::vector<std::uint8_t> bytes = read_file(path);
