@@ -87,16 +87,16 @@ bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id
   return true;
 }
 
-Status freshness_verdict(const char* path, std::uint64_t newest, const RestoreJournal& journal,
-                         std::uint64_t counted) {
+Status freshness_verdict(const char* path, std::uint64_t newest, std::uint64_t allowed,
+                         const RestoreJournal& journal, std::uint64_t counted) {
   if (newest >= counted) return Status();
   if (journal.freshness >= counted) {
-    if (newest >= journal.newest) return Status();
+    if (allowed >= journal.newest) return Status();
     return Status(Error::RolledBack,
-                  "%s: rolled back: its newest authenticated checkpoint is sequence %llu, but "
-                  "its restore journal was written when it held sequence %llu (its newest "
-                  "checkpoints damaged or removed): nothing restored",
-                  path, static_cast<unsigned long long>(newest),
+                  "%s: rolled back: the newest authenticated checkpoint its restore journal lets "
+                  "a start restore is sequence %llu, but the journal was written when it held "
+                  "sequence %llu (its newest checkpoints damaged or removed): nothing restored",
+                  path, static_cast<unsigned long long>(allowed),
                   static_cast<unsigned long long>(journal.newest));
   }
   return Status(Error::RolledBack,

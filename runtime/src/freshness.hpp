@@ -30,10 +30,20 @@ bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id
 // The freshness rule (keys set): a store is fresh when its newest authenticated checkpoint
 // (`newest`, a sequence) is at least the counter's `counted` value, or when its authenticated
 // journal is (the last thing written was the journal) and the store still holds the newest
-// checkpoint it held when that journal was written (`journal.newest`); RolledBack, saying what
-// is older than what, otherwise.
-Status freshness_verdict(const char* path, std::uint64_t newest, const RestoreJournal& journal,
-                         std::uint64_t counted);
+// checkpoint that journal lets a start restore (`newest_allowed`, the newest authenticated one
+// it does not exclude, at least `journal.newest`); RolledBack, saying what is older than what,
+// otherwise.
+Status freshness_verdict(const char* path, std::uint64_t newest, std::uint64_t newest_allowed,
+                         const RestoreJournal& journal, std::uint64_t counted);
+// The newest of `sequences` (authenticated checkpoints) that `journal` does not exclude.
+template <typename Sequences>
+std::uint64_t newest_allowed(const Sequences& sequences, const RestoreJournal& journal) {
+  std::uint64_t newest = 0;
+  for (const std::uint64_t sequence : sequences) {
+    if (!journal.excludes(sequence) && sequence > newest) newest = sequence;
+  }
+  return newest;
+}
 
 // The default counter: a 256-byte file holding two copies of (magic, key id, value, store id,
 // MAC), both written with one write, so that a cut write leaves the previous value or the new

@@ -52,7 +52,7 @@ struct RestoreJournal {
   std::uint32_t depth = 0;
   // With keys: the freshness value the journal was sealed with (drawn from the store's
   // sequence space, so that saves after it number above it), and the newest authenticated
-  // checkpoint the store held when it was written; 0 without keys.
+  // checkpoint it does not exclude that the store held when it was written; 0 without keys.
   std::uint64_t freshness = 0;
   std::uint64_t newest = 0;
 

@@ -160,9 +160,9 @@ struct Store::Impl {
     return Status();
   }
 
-  // With keys set: RolledBack unless the newest authenticated checkpoint or the journal is at
-  // least as fresh as the counter (the crash-loop fallback may then still restore an older
-  // checkpoint, as the authenticated journal directs).
+  // With keys set: RolledBack unless the store is as fresh as its counter (freshness_verdict;
+  // the crash-loop fallback may then still restore an older checkpoint, as the authenticated
+  // journal directs).
   Status check_freshness() {
     if (!keys || counter == nullptr) return Status();
     const std::uint64_t newest = newest_authentic_sequence();
@@ -176,16 +176,28 @@ struct Store::Impl {
                     path.c_str(), read.message());
     }
     counter_value = std::max(counter_value, counted);
-    return detail::freshness_verdict(path.c_str(), newest, journal, counted);
+    return freshness_against(counted);
   }
 
-  // The highest sequence of an authenticated (with keys set: every Valid) slot.
-  std::uint64_t newest_authentic_sequence() const {
-    std::uint64_t newest = 0;
+  // The sequences of the authenticated (with keys set: every Valid) slots.
+  std::vector<std::uint64_t> authentic_sequences() const {
+    std::vector<std::uint64_t> sequences;
     for (const Slot& slot : slots) {
-      if (slot.state == StoreSlotState::Valid) newest = std::max(newest, slot.sequence);
+      if (slot.state == StoreSlotState::Valid) sequences.push_back(slot.sequence);
     }
-    return newest;
+    return sequences;
+  }
+  std::uint64_t newest_authentic_sequence() const {
+    const std::vector<std::uint64_t> sequences = authentic_sequences();
+    return sequences.empty() ? 0 : *std::max_element(sequences.begin(), sequences.end());
+  }
+  // restore_latest()'s freshness rule for the store as this Store sees it.
+  Status freshness_against(std::uint64_t counted) const {
+    const std::vector<std::uint64_t> sequences = authentic_sequences();
+    const std::uint64_t newest =
+        sequences.empty() ? 0 : *std::max_element(sequences.begin(), sequences.end());
+    return detail::freshness_verdict(path.c_str(), newest,
+                                     detail::newest_allowed(sequences, journal), journal, counted);
   }
 
   // Reads the journal as empty, `why` it is not trusted, keeping `floor` as its freshness: the
@@ -236,7 +248,7 @@ struct Store::Impl {
                       path.c_str());
       }
       journal.freshness = fresh;
-      journal.newest = newest_authentic_sequence();
+      journal.newest = detail::newest_allowed(authentic_sequences(), journal);
     } else {
       journal.freshness = 0;
       journal.newest = 0;
@@ -513,6 +525,7 @@ struct Store::Impl {
     areas[target].valid = true;
     areas[target].hash = blob.hash;
     areas[target].size = static_cast<std::uint32_t>(blob.size);
+    std::memcpy(areas[target].digest, own_digest, sizeof own_digest);
     own_area = target;
     return Status();
   }
@@ -1067,11 +1080,9 @@ Status Store::save() {
   }
   // A save into a store older than its counter (keys set) does not trust its journal: saved
   // under the counter's value, the new checkpoint makes the old journal stale for good.
-  if (impl.keys && !detail::freshness_verdict(impl.path.c_str(), impl.newest_authentic_sequence(),
-                                              impl.journal, impl.counter_value)
-                        .ok()) {
+  if (impl.keys && !impl.freshness_against(impl.counter_value).ok()) {
     impl.distrust_journal("it is older than the freshness counter (an older copy put back)",
-                          impl.counter_value);
+                          std::max(impl.counter_value, impl.journal.freshness) + 1);
   }
   // Above every sequence the store holds (authenticated, with keys set), its journal names and
   // the freshness counter has seen, so that no older record and no exclusion can outrank or
@@ -1139,7 +1150,11 @@ Status Store::save() {
   if (options_.durability == Durability::Fdatasync && detail::file_system().fdatasync(fd_) != 0) {
     return detail::io_error("cannot fdatasync", impl.path.c_str(), errno);
   }
-  // After the record: a crash in between leaves the counter one save behind, never ahead.
+  // After the record: a crash in between leaves the counter one save behind, never ahead. A
+  // checkpoint saved while a restore waits for confirm() is suspect to the crash-loop fallback
+  // until then, and the slot it is in may be the next save's (slot_to_overwrite): the counter
+  // passes it when confirm() writes the journal.
+  if (impl.journal.unconfirmed != 0) return Status();
   return impl.advance_counter(sequence);
 }
 

@@ -86,11 +86,14 @@ RecordBinding StoreReader::binding(std::uint32_t index, int area) const {
 
 Status StoreReader::check_freshness(std::uint64_t counter_value,
                                     const std::vector<bool>& authentic) const {
-  std::uint64_t newest = 0;
+  std::vector<std::uint64_t> sequences;
   for (std::uint32_t i = 0; i < slots_.size() && i < authentic.size(); ++i) {
-    if (authentic[i]) newest = std::max(newest, slots_[i].header.sequence);
+    if (authentic[i]) sequences.push_back(slots_[i].header.sequence);
   }
-  return freshness_verdict(path_.c_str(), newest, journal_, counter_value);
+  const std::uint64_t newest =
+      sequences.empty() ? 0 : *std::max_element(sequences.begin(), sequences.end());
+  return freshness_verdict(path_.c_str(), newest, newest_allowed(sequences, journal_), journal_,
+                           counter_value);
 }
 
 std::vector<std::uint32_t> StoreReader::valid_slots_newest_first() const {
