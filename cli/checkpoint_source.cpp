@@ -136,7 +136,8 @@ Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slo
     out.skipped = survey.skipped;
     if (!survey.restore_latest_slot) {
       out.restores_nothing = survey.restores_nothing_by_choice;
-      return Status(Error::NoValidSlot, "%s: %s", path.c_str(), survey.nothing_restored.c_str());
+      return Status(survey.rolled_back ? Error::RolledBack : Error::NoValidSlot, "%s: %s",
+                    path.c_str(), survey.nothing_restored.c_str());
     }
     index = *survey.restore_latest_slot;
   }

@@ -93,17 +93,16 @@ Status freshness_verdict(const char* path, std::uint64_t newest, std::uint64_t a
   if (journal.freshness >= counted) {
     if (allowed >= journal.newest) return Status();
     return Status(Error::RolledBack,
-                  "%s: rolled back: the newest authenticated checkpoint its restore journal lets "
-                  "a start restore is sequence %llu, but the journal was written when it held "
-                  "sequence %llu (its newest checkpoints damaged or removed): nothing restored",
+                  "%s: rolled back: the newest authenticated checkpoint its journal lets a start "
+                  "restore is sequence %llu, but the journal was written when it held sequence "
+                  "%llu: its newest checkpoints damaged; nothing restored",
                   path, static_cast<unsigned long long>(allowed),
                   static_cast<unsigned long long>(journal.newest));
   }
   return Status(Error::RolledBack,
-                "%s: rolled back: its newest authenticated checkpoint is sequence %llu and its "
-                "journal's freshness %llu, but the freshness counter says %llu was written (an "
-                "older copy of the store, or its newest checkpoints damaged or removed): "
-                "nothing restored",
+                "%s: rolled back: its newest authenticated checkpoint is sequence %llu (journal "
+                "freshness %llu), the freshness counter says %llu was written: an older copy, "
+                "or its newest checkpoints damaged; nothing restored",
                 path, static_cast<unsigned long long>(newest),
                 static_cast<unsigned long long>(journal.freshness),
                 static_cast<unsigned long long>(counted));

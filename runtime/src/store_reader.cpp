@@ -92,7 +92,7 @@ Status StoreReader::check_freshness(std::uint64_t counter_value,
   }
   const std::uint64_t newest =
       sequences.empty() ? 0 : *std::max_element(sequences.begin(), sequences.end());
-  return freshness_verdict(path_.c_str(), newest, newest_allowed(sequences, journal_), journal_,
+  return freshness_verdict("the store", newest, newest_allowed(sequences, journal_), journal_,
                            counter_value);
 }
 
