@@ -3,7 +3,7 @@
 // read-only file system), saves, confirm(), a second writer, a damaged byte, and a crash at any
 // mutating file call with a write torn at any byte — run by the real Store over an in-memory
 // file system (simulated_file_system.hpp), and checked after every step against a small model
-// of the guarantees docs/format.md §4 numbers S1–S8. Every other sequence runs with keys set,
+// of the guarantees docs/format.md §4 numbers S1–S9. Every other sequence runs with keys set,
 // so that the freshness counter (a file beside the store, written through the same file system)
 // is crashed and torn too: S9, a restore refuses (RolledBack) exactly when the store is older
 // than its counter, and a crash never makes it so.
@@ -349,8 +349,8 @@ class Simulation {
     if (stale) {
       // S9: refused before anything is written; a save makes the store fresh again.
       log_ << "restore -> " << symcr::error_name(report.status().error()) << " (stale)\n";
-      if (!newest_damaged_) {
-        fail("S9: crashes alone left the store older than its counter");
+      if (!damaged_since_save_) {
+        fail("S9: crashes alone (no damage) left the store older than its counter");
       } else if (crashed) {
         fail("S9: a restore of a stale store crashed: it wrote something");
       } else if (report.status().error() != symcr::Error::RolledBack || !state_holds(-1)) {
@@ -491,7 +491,7 @@ class Simulation {
         models_ = {Model()};
         stale_ = false;
       }
-      newest_damaged_ = false;
+      damaged_since_save_ = false;
       damaged_.erase(sequence);
       gone_.erase(sequence);
       for (Model& m : models_) m.abandoned.erase(sequence);  // a number reused for a new save
@@ -569,6 +569,7 @@ class Simulation {
                                static_cast<std::uint64_t>(pick(0, static_cast<int>(copy_size) - 1));
       file[at] ^= static_cast<std::uint8_t>(1u << pick(0, 7));
       fs_.set_contents(path_, file);
+      damaged_since_save_ = true;
       log_ << "damage a journal copy\n";
       return;
     }
@@ -580,7 +581,7 @@ class Simulation {
     const auto before = intact_checkpoints(file);
     file[at] ^= static_cast<std::uint8_t>(1u << pick(0, 7));
     fs_.set_contents(path_, file);
-    newest_damaged_ = true;  // perhaps: the store may now be older than its counter
+    damaged_since_save_ = true;
     const auto after = intact_checkpoints(file);
     for (const auto& [sequence, counter] : before) {
       (void)counter;
@@ -654,7 +655,9 @@ class Simulation {
   std::int64_t counter_ = 0;
   bool keyed_ = false;
   bool stale_ = false;  // the last restore found the store older than its counter
-  bool newest_damaged_ = false;  // a slot was damaged since the last save
+  // Something was damaged from outside since the last save (a slot, or a journal copy that a
+  // torn write of the other may then take with it): the store may be older than its counter.
+  bool damaged_since_save_ = false;
   std::set<std::uint64_t> ok_saves_;
   std::set<std::uint64_t> gone_;  // Ok saves overwritten after newer ones landed
   std::set<std::uint64_t> damaged_;
