@@ -13,9 +13,9 @@
 //        byte 40, when present, bit 0: the reader authenticates checkpoints (fuzz_worlds.hpp's
 //        key), and with bit 4 of the control byte slot records are signed again; byte 41,
 //        when present, the crash-loop fallback depth of the writable open (bits 0-2; 0: off);
-//        bytes 64..427, when present, the restore journal of earlier versions (64..111), the
+//        bytes 64..459, when present, the restore journal of earlier versions (64..111), the
 //        journal's two copies (128..251, 256..379: 76 bytes and a 48-byte seal) and the
-//        store's identity (400..427) at those file offsets (their CRCs fixed, and with keys
+//        store's identity's two copies (400..427, 432..459) at those file offsets (their CRCs fixed, and with keys
 //        the journal copies sealed again, with bit 4 of the control byte); bytes 512..767,
 //        when present, the freshness counter file beside the store (its copies signed again
 //        with bit 4 and keys; absent: no counter file)
@@ -27,7 +27,8 @@
 // foreign geometry, grow a truncated file back), it restores what the read-only one restores
 // and, when that was a checkpoint, changes no byte of the file past its header but the
 // journal; with a fallback depth, the journal then names the checkpoint restored as
-// unconfirmed (and none when nothing was restored).
+// unconfirmed (and none when nothing was restored), unless the store was refused as rolled
+// back (keys set), which writes nothing.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -127,7 +128,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       le::store32(header.data() + at + size - 4, symcr::detail::crc32c(header.data() + at, size - 4));
     };
     seal(symcr::detail::kLegacyRestoreJournalOffset, symcr::detail::kLegacyRestoreJournalSize);
-    seal(kIdAt, symcr::detail::kStoreIdRecordSize);
+    seal(kIdAt, symcr::detail::kStoreIdCopySize);
+    seal(symcr::detail::kStoreIdSecondCopy, symcr::detail::kStoreIdCopySize);
     std::uint8_t id[symcr::detail::kStoreIdSize];
     symcr::detail::read_store_id(header.data(), header.size(), id);
     for (const std::uint64_t copy : symcr::detail::kRestoreJournalOffsets) {
@@ -203,10 +205,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::uint64_t slot = s - 3;
     if (slot >= slot_count) break;
     std::vector<std::uint8_t>& record = sections[s];
-    if (fix) {
-      // A slot's MAC binds the store, the slot's offset and its area's schema digest.
-      symcr::detail::RecordBinding binding;
-      symcr::detail::read_store_id(header.data(), header.size(), binding.store_id);
+    symcr::detail::RecordBinding binding;
+    // A slot's MAC binds the store, the slot's offset and its area's schema digest; a store
+    // without an identity gets a new one from a writable open, so its slots are not signed.
+    const bool has_id =
+        symcr::detail::read_store_id(header.data(), header.size(), binding.store_id);
+    if (fix && !has_id) {
+      fuzz::use_fuzz_key(false);
+      fuzz::fix_record_integrity(record.data(), record.size());
+      fuzz::use_fuzz_key(keys != nullptr);
+    } else if (fix) {
       binding.location = slots_offset + slot * slot_size;
       for (int a = 0; a < 2 && record.size() >= 40; ++a) {
         const std::vector<std::uint8_t>* area =
@@ -260,7 +268,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const symcr::Report report = store.restore_latest(restore_options);
       restored = report.ok();
       (void)report.to_json();
-      if (fallback_depth != 0 && !store.read_only()) {
+      // A store refused as rolled back (keys set) is written nothing, its journal included.
+      if (fallback_depth != 0 && !store.read_only() &&
+          report.status().error() != symcr::Error::RolledBack) {
         const std::vector<std::uint8_t> now = read_whole(path);
         const symcr::detail::RestoreJournal journal =
             symcr::detail::read_restore_journal(now.data(), now.size());
@@ -295,7 +305,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   };
   // A writable open gives a store without an identity one.
   std::uint8_t id_before[symcr::detail::kStoreIdSize];
-  const bool had_id = symcr::detail::read_store_id(file_before.data(), file_before.size(), id_before);
+  bool had_id = false;
+  symcr::detail::read_store_id(file_before.data(), file_before.size(), id_before, &had_id);
   if (restorable && !(same_range(36, kJournalAt) &&
                       (fallback_depth != 0 || same_range(kJournalAt, kJournalEnd)) &&
                       same_range(kJournalEnd, kIdAt) && (!had_id || same_range(kIdAt, kPageEnd)) &&

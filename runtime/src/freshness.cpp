@@ -70,21 +70,31 @@ void new_store_id(std::uint8_t (&id)[kStoreIdSize]) {
 }
 
 void encode_store_id(const std::uint8_t (&id)[kStoreIdSize], std::uint8_t* out) {
-  std::memcpy(out, kStoreIdMagic, sizeof kStoreIdMagic);
-  std::memcpy(out + 8, id, kStoreIdSize);
-  le::store32(out + 8 + kStoreIdSize, crc32c(out, 8 + kStoreIdSize));
+  std::memset(out, 0, kStoreIdBlockSize);
+  for (const std::uint64_t at : {kStoreIdOffset, kStoreIdSecondCopy}) {
+    std::uint8_t* copy = out + (at - kStoreIdOffset);
+    std::memcpy(copy, kStoreIdMagic, sizeof kStoreIdMagic);
+    std::memcpy(copy + 8, id, kStoreIdSize);
+    le::store32(copy + 8 + kStoreIdSize, crc32c(copy, 8 + kStoreIdSize));
+  }
 }
 
-bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id)[kStoreIdSize]) {
+bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id)[kStoreIdSize],
+                   bool* both) {
   std::memset(id, 0, sizeof id);
-  if (size < kStoreIdOffset + kStoreIdRecordSize) return false;
-  const std::uint8_t* p = page + kStoreIdOffset;
-  if (std::memcmp(p, kStoreIdMagic, sizeof kStoreIdMagic) != 0 ||
-      le::load32(p + 8 + kStoreIdSize) != crc32c(p, 8 + kStoreIdSize)) {
-    return false;
+  int holding = 0;
+  for (const std::uint64_t at : {kStoreIdSecondCopy, kStoreIdOffset}) {  // the first one last
+    if (size < at + kStoreIdCopySize) continue;
+    const std::uint8_t* copy = page + at;
+    if (std::memcmp(copy, kStoreIdMagic, sizeof kStoreIdMagic) != 0 ||
+        le::load32(copy + 8 + kStoreIdSize) != crc32c(copy, 8 + kStoreIdSize)) {
+      continue;
+    }
+    std::memcpy(id, copy + 8, kStoreIdSize);
+    ++holding;
   }
-  std::memcpy(id, p + 8, kStoreIdSize);
-  return true;
+  if (both != nullptr) *both = holding == 2;
+  return holding != 0;
 }
 
 Status freshness_verdict(const char* path, std::uint64_t newest, std::uint64_t allowed,

@@ -15,17 +15,22 @@
 namespace symcr::detail {
 
 // The store's identity: 16 random bytes drawn when the store is created (or first opened for
-// writing by a build that knows of it), kept in the header page after the journal copies.
+// writing by a build that knows of it), kept in the header page after the journal copies, in
+// two copies (magic, id, CRC each), so that one damaged byte does not cost every checkpoint.
 inline constexpr std::uint64_t kStoreIdOffset = 400;
-inline constexpr std::size_t kStoreIdRecordSize = 8 + kStoreIdSize + 4;  // magic, id, CRC
-inline constexpr std::size_t kStoreHeaderPageRead = kStoreIdOffset + kStoreIdRecordSize;
+inline constexpr std::size_t kStoreIdCopySize = 8 + kStoreIdSize + 4;
+inline constexpr std::uint64_t kStoreIdSecondCopy = 432;
+inline constexpr std::size_t kStoreIdBlockSize = kStoreIdSecondCopy + kStoreIdCopySize - kStoreIdOffset;
+inline constexpr std::size_t kStoreHeaderPageRead = kStoreIdOffset + kStoreIdBlockSize;
 
 // Draws a new identity (getrandom, else /dev/urandom, else time and process id mixed).
 void new_store_id(std::uint8_t (&id)[kStoreIdSize]);
+// Both copies, kStoreIdBlockSize bytes to be written at kStoreIdOffset.
 void encode_store_id(const std::uint8_t (&id)[kStoreIdSize], std::uint8_t* out);
-// The identity in the first `size` bytes of a store; false (and `id` all zero) when it has
-// none or it is damaged.
-bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id)[kStoreIdSize]);
+// The identity in the first `size` bytes of a store, from the first copy that holds; false
+// (and `id` all zero) when neither does. `both`, when given: whether both copies hold.
+bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id)[kStoreIdSize],
+                   bool* both = nullptr);
 
 // The freshness rule (keys set): a store is fresh when its newest authenticated checkpoint
 // (`newest`, a sequence) is at least the counter's `counted` value, or when its authenticated

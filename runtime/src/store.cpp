@@ -569,10 +569,10 @@ struct Store::Impl {
     }
   }
 
-  // Adds the store's identity (encoded into `buffer`, kStoreIdRecordSize bytes) to `copies`.
+  // Adds the store's identity (encoded into `buffer`, kStoreIdBlockSize bytes) to `copies`.
   void add_store_id(std::vector<Copy>& copies, std::uint8_t* buffer) const {
     detail::encode_store_id(store_id, buffer);
-    copies.push_back({detail::kStoreIdOffset, buffer, detail::kStoreIdRecordSize});
+    copies.push_back({detail::kStoreIdOffset, buffer, detail::kStoreIdBlockSize});
   }
 
   // The signing of a record for the slot at `offset` (keys set).
@@ -683,7 +683,7 @@ struct Store::Impl {
     }
     std::uint8_t journal_copy[detail::kRestoreJournalCopySize];
     add_journal_copy(copies, journal_copy);
-    std::uint8_t id_copy[detail::kStoreIdRecordSize];
+    std::uint8_t id_copy[detail::kStoreIdBlockSize];
     add_store_id(copies, id_copy);
 
     char temp[PATH_MAX];
@@ -962,7 +962,8 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
   impl.allow_unrecorded_restore = options.allow_unrecorded_restore;
   // A store without an identity (new, or written by an earlier version) gets one before this
   // Store writes anything into it; one opened read-only keeps the all-zero identity.
-  const bool id_missing = !detail::read_store_id(header, got, impl.store_id);
+  bool id_whole = false;
+  const bool id_missing = !detail::read_store_id(header, got, impl.store_id, &id_whole);
   if (id_missing && can_write) detail::new_store_id(impl.store_id);
   detail::schema_digest(blob.data, blob.size, impl.own_digest);
   impl.take_keys();
@@ -1004,15 +1005,15 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
     std::vector<Impl::Copy> copies;
     std::uint8_t journal_copy[detail::kRestoreJournalCopySize];
     impl.add_journal_copy(copies, journal_copy);
-    std::uint8_t id_copy[detail::kStoreIdRecordSize];
+    std::uint8_t id_copy[detail::kStoreIdBlockSize];
     impl.add_store_id(copies, id_copy);
     status = impl.initialise(fd, path, wanted, copies);
     if (status.ok() && created) status = detail::sync_parent_directory(path);
     if (!status.ok()) return creation_failed(status);
     impl.become_empty(wanted);
   } else if (header_status.ok()) {
-    if (id_missing && can_write) {
-      std::uint8_t id_copy[detail::kStoreIdRecordSize];
+    if (!id_whole && can_write) {  // a new identity, or a damaged copy written again
+      std::uint8_t id_copy[detail::kStoreIdBlockSize];
       detail::encode_store_id(impl.store_id, id_copy);
       status = detail::pwrite_all(fd, id_copy, sizeof id_copy,
                                   static_cast<off_t>(detail::kStoreIdOffset), path);

@@ -76,7 +76,7 @@ TEST_F(CrashLoopTest, WithoutADepthNothingIsRecordedAndTheNewestIsAlwaysRestored
     EXPECT_EQ(report.sequence(), 4u);
     EXPECT_TRUE(report.skipped().empty());
   }
-  // Nothing past the header but the store's identity.
+  // Nothing past the header but the store's identity (two copies).
   const std::vector<std::uint8_t> bytes = read_file(path);
   for (std::size_t i = 36; i < 4096; ++i) {
     if (i >= symcr::detail::kStoreIdOffset && i < symcr::detail::kStoreHeaderPageRead) continue;

@@ -186,14 +186,18 @@ struct CheckpointOptions {
   Durability durability = Durability::PageCache;
 };
 
-// Authenticated checkpoints. After set_checkpoint_keys, every checkpoint this process writes
-// (single files, buffers, store slots) carries an HMAC-SHA-256 of its header, schema and payload,
-// made with keys[0] and naming that key's id; every restore refuses (Error::Unauthenticated) a
+// Authenticated checkpoints (docs/threat-model.md). After set_checkpoint_keys, every checkpoint
+// this process writes (single files, buffers, store slots) carries an HMAC-SHA-256 of its
+// header, schema and payload, bound to its store and slot and to its schema's SHA-256, made
+// with keys[0] and naming that key's id; every restore refuses (Error::Unauthenticated) a
 // checkpoint without a MAC, with a key id not among `keys`, or whose MAC does not verify, and a
-// store passes over such a slot to an older one. The keys are copied, never written anywhere.
-// Several keys allow rotation: the new one first signs, the old ones still verify. A count of 0
-// turns authentication off. Against an attacker who can write the checkpoint file; the CRC
-// stays for accidental damage. Set the keys before checkpointing or restoring on other threads.
+// store counts such a slot for nothing. A store also keeps a freshness counter and refuses
+// (Error::RolledBack) a store older than it (FreshnessCounter, below). The keys are copied,
+// never written anywhere, and wiped once no save or restore uses them. Several keys allow
+// rotation: the new one first signs, the old ones still verify. A count of 0 turns
+// authentication off. Against an attacker who can write the checkpoint file; the CRC stays for
+// accidental damage. Keys may be set, rotated or cleared while other threads checkpoint and
+// restore: each save and restore reads one consistent set.
 struct CheckpointKey {
   std::uint32_t id;
   const std::uint8_t* bytes;
