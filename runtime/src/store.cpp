@@ -170,7 +170,7 @@ struct Store::Impl {
     Status read = counter->read(counted);
     if (!read.ok()) {
       if (newest == 0 && journal.freshness == 0) return Status();  // nothing to roll back
-      return Status(Error::RolledBack,
+      return Status(read.error() == Error::Io ? Error::Io : Error::RolledBack,
                     "%s: %s, and the store holds authenticated checkpoints, so their freshness "
                     "cannot be told: nothing restored (the next save sets the counter again)",
                     path.c_str(), read.message());
@@ -558,7 +558,7 @@ struct Store::Impl {
   }
 
   // Adds the journal the file holds to `copies`, both of them (encoded into `buffer`,
-  // kRestoreJournalSize bytes): the crash-loop fallback's memory, and the sequences it names,
+  // kRestoreJournalCopySize bytes, sealed with keys set): the crash-loop fallback's memory, and the sequences it names,
   // move with the store.
   void add_journal_copy(std::vector<Copy>& copies, std::uint8_t* buffer) const {
     if (recorded.empty() && recorded.freshness == 0) return;

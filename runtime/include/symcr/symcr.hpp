@@ -193,7 +193,8 @@ struct CheckpointOptions {
 // checkpoint without a MAC, with a key id not among `keys`, or whose MAC does not verify, and a
 // store counts such a slot for nothing. A store also keeps a freshness counter and refuses
 // (Error::RolledBack) a store older than it (FreshnessCounter, below). The keys are copied,
-// never written anywhere, and wiped once no save or restore uses them. Several keys allow
+// never written anywhere, and wiped once nothing uses them (an open Store keeps the set its last
+// operation took). Several keys allow
 // rotation: the new one first signs, the old ones still verify. A count of 0 turns
 // authentication off. Against an attacker who can write the checkpoint file; the CRC stays for
 // accidental damage. Keys may be set, rotated or cleared while other threads checkpoint and
