@@ -178,6 +178,62 @@ void BM_StoreRestoreLatestAndConfirmWithFallback(benchmark::State& state) {
 }
 BENCHMARK(BM_StoreRestoreLatestAndConfirmWithFallback);
 
+// ---- authenticated stores (docs/threat-model.md) ------------------------------------------------
+// Each iteration is a save and a restore_latest() (which verifies every slot's MAC): without
+// keys; with keys and a counter in memory (what a hardware counter costs symcr: the MACs); and
+// with keys and the default freshness counter, a file written after every save.
+class MemoryCounter : public symcr::FreshnessCounter {
+ public:
+  symcr::Status read(std::uint64_t& value) override {
+    value = value_;
+    return symcr::Status();
+  }
+  symcr::Status advance(std::uint64_t value) override {
+    if (value > value_) value_ = value;
+    return symcr::Status();
+  }
+
+ private:
+  std::uint64_t value_ = 0;
+};
+
+enum class Freshness { NoKeys, KeysMemoryCounter, KeysFileCounter };
+
+void BM_StoreSaveAndRestore(benchmark::State& state, Freshness freshness) {
+  const std::string path = scratch_path("store-auth");
+  ::unlink(path.c_str());
+  ::unlink((path + ".fresh").c_str());
+  static const std::uint8_t key[32] = {7};
+  const symcr::CheckpointKey keys{1, key, sizeof key};
+  (void)symcr::set_checkpoint_keys(&keys, freshness == Freshness::NoKeys ? 0 : 1);
+  MemoryCounter counter;
+  symcr::StoreOptions options;
+  options.slot_size = 4096;
+  if (freshness == Freshness::KeysMemoryCounter) options.freshness_counter = &counter;
+  {
+    symcr::Store store;
+    symcr::Status status = symcr::Store::open(path.c_str(), schema, options, store);
+    if (!status.ok()) return fail(state, "open", status.message());
+    std::uint32_t tick = 0;
+    for (auto _ : state) {
+      fill_state(++tick);
+      status = store.save();
+      const symcr::Report report = store.restore_latest();
+      if (!status.ok() || !report.ok()) {
+        fail(state, "save and restore", status.ok() ? report.status().message() : status.message());
+        break;
+      }
+    }
+  }
+  state.counters["bytes"] = store_record_bytes();
+  (void)symcr::set_checkpoint_keys(nullptr, 0);
+  ::unlink(path.c_str());
+  ::unlink((path + ".fresh").c_str());
+}
+BENCHMARK_CAPTURE(BM_StoreSaveAndRestore, no_keys, Freshness::NoKeys);
+BENCHMARK_CAPTURE(BM_StoreSaveAndRestore, keys_memory_counter, Freshness::KeysMemoryCounter);
+BENCHMARK_CAPTURE(BM_StoreSaveAndRestore, keys_freshness_file, Freshness::KeysFileCounter);
+
 void BM_CheckpointFile(benchmark::State& state) {
   const std::string path = scratch_path("single.ckpt");
   fill_state(1);

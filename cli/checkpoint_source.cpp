@@ -136,7 +136,8 @@ Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slo
     out.skipped = survey.skipped;
     if (!survey.restore_latest_slot) {
       out.restores_nothing = survey.restores_nothing_by_choice;
-      return Status(Error::NoValidSlot, "%s: %s", path.c_str(), survey.nothing_restored.c_str());
+      return Status(survey.rolled_back ? Error::RolledBack : Error::NoValidSlot, "%s: %s",
+                    path.c_str(), survey.nothing_restored.c_str());
     }
     index = *survey.restore_latest_slot;
   }
@@ -147,6 +148,7 @@ Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slo
     out.writer = &area.schema();
     out.writer_hash = area.hash;
     out.slot = index;
+    out.area = area_index;
     status = check_payload(*out.writer, out.record.payload, out.record.payload_size);
   }
   if (!status.ok()) {
@@ -168,6 +170,44 @@ Status use_key_files(const std::vector<KeyFile>& keys) {
   }
   const Status set = set_checkpoint_keys(ring.data(), ring.size());
   if (!set.ok()) return Status(set.error(), "--key-file: %s", set.message());
+  return Status();
+}
+
+Status read_key_ring(const std::string& path, std::vector<KeyFile>& keys) {
+  std::vector<std::uint8_t> bytes;
+  const Status read = detail::read_regular_file(resolve_links(path).c_str(), 1 << 20, bytes);
+  if (!read.ok()) return Status(read.error(), "--key-ring: %s", read.message());
+  const std::string text(bytes.begin(), bytes.end());
+  const std::size_t slash = path.rfind('/');
+  const std::string directory = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+  std::size_t line_start = 0;
+  for (unsigned line = 1; line_start < text.size(); ++line) {
+    std::size_t end = text.find('\n', line_start);
+    if (end == std::string::npos) end = text.size();
+    std::string entry = text.substr(line_start, end - line_start);
+    line_start = end + 1;
+    const std::size_t hash = entry.find('#');
+    if (hash != std::string::npos) entry.erase(hash);
+    const std::size_t first = entry.find_first_not_of(" \t\r");
+    if (first == std::string::npos) continue;
+    const std::size_t id_end = entry.find_first_of(" \t", first);
+    const std::size_t file = id_end == std::string::npos
+                                 ? std::string::npos
+                                 : entry.find_first_not_of(" \t", id_end);
+    const std::string id = entry.substr(first, id_end - first);
+    char* parsed_end = nullptr;
+    const unsigned long value = std::strtoul(id.c_str(), &parsed_end, 10);
+    if (file == std::string::npos || id.empty() || *parsed_end != '\0' || value > UINT32_MAX) {
+      return Status(Error::Corrupt,
+                    "--key-ring %s: line %u is not \"<id> <key file>\" (an id of 0 to "
+                    "4294967295)",
+                    path.c_str(), line);
+    }
+    std::string key_path = entry.substr(file);
+    key_path.erase(key_path.find_last_not_of(" \t\r") + 1);
+    if (key_path[0] != '/') key_path = directory + key_path;
+    keys.push_back({static_cast<std::uint32_t>(value), key_path});
+  }
   return Status();
 }
 

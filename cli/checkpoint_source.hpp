@@ -35,6 +35,7 @@ struct LoadedCheckpoint {
   std::string path;
   bool from_store = false;
   std::uint32_t slot = 0;                  // from_store: which slot
+  int area = -1;                           // from_store: the schema area of its record
   std::vector<std::uint8_t> bytes;         // the record
   detail::RecordView record;               // views into `bytes`
   detail::ParsedSchema inline_schema;      // single file: its own schema
@@ -53,6 +54,9 @@ struct LoadedCheckpoint {
 // set_checkpoint_keys) and sets the keys: checkpoints are then authenticated as by a program
 // that holds them. No keys: nothing is set.
 Status use_key_files(const std::vector<KeyFile>& keys);
+// Appends the keys of a key ring file to `keys`: one key a line, "<id> <key file>" (a relative
+// key file is taken from the ring file's directory); blank lines and "#" comments are skipped.
+Status read_key_ring(const std::string& path, std::vector<KeyFile>& keys);
 
 // A single-file checkpoint, or from a store the chosen slot or else the one the program's next
 // start would restore (store_survey.hpp: the journal applied, the keys set checked, corrupt

@@ -11,8 +11,10 @@
 #include <string>
 #include <vector>
 
+#include "checkpoint_source.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "store_survey.hpp"
 
 namespace cl = llvm::cl;
 
@@ -61,6 +63,18 @@ cl::list<unsigned> key_ids(
     cl::desc("The id of a --key-file key: the first --key-id is the first --key-file's, and so "
              "on (default 0 for a single key)"),
     cl::value_desc("N"), cl::sub(inspect_command), cl::sub(verify_command),
+    cl::sub(plan_command), cl::cat(symcr_category));
+cl::opt<std::string> key_ring(
+    "key-ring",
+    cl::desc("A file naming the program's keys, one a line: \"<id> <key file>\" (relative key "
+             "files are taken from the ring's directory); with --key-file, both count"),
+    cl::value_desc("file"), cl::sub(inspect_command), cl::sub(verify_command),
+    cl::sub(plan_command), cl::cat(symcr_category));
+cl::opt<std::string> counter_file(
+    "counter",
+    cl::desc("With keys: the store's freshness counter file (default: the store's path with "
+             ".fresh appended, when it exists); a store older than it is reported rolled back"),
+    cl::value_desc("file"), cl::sub(inspect_command), cl::sub(verify_command),
     cl::sub(plan_command), cl::cat(symcr_category));
 cl::opt<std::string> diff_a(cl::Positional, cl::Required, cl::desc("<checkpoint a>"),
                             cl::sub(diff_command), cl::cat(symcr_category));
@@ -140,6 +154,14 @@ bool given_keys(std::vector<symcr::cli::KeyFile>& keys) {
   for (std::size_t i = 0; i < key_files.size(); ++i) {
     keys.push_back({key_ids.empty() ? 0u : static_cast<std::uint32_t>(key_ids[i]), key_files[i]});
   }
+  if (!key_ring.empty()) {
+    const symcr::Status ring = symcr::cli::read_key_ring(key_ring, keys);
+    if (!ring.ok()) {
+      llvm::errs() << "symcr: error: " << ring.message() << "\n";
+      return false;
+    }
+  }
+  symcr::cli::use_counter_file(counter_file);
   return true;
 }
 

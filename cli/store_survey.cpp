@@ -1,15 +1,46 @@
 // survey_store and its renderings.
 #include "store_survey.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
 
 #include "authentication.hpp"
+#include "file_io.hpp"
+#include "freshness.hpp"
 #include "header_fields.hpp"
 #include "values.hpp"
 
 namespace symcr::cli {
 
 namespace {
+
+std::string& counter_file_given() {
+  static std::string path;
+  return path;
+}
+
+// The counter's value for `store` (keys set), or why it cannot be known; `checked` false when
+// no counter was given and the default one does not exist.
+Status read_counter(const detail::StoreReader& store, const detail::KeyRing& keys,
+                    std::uint64_t& value, bool& checked, std::string& path) {
+  checked = true;
+  path = counter_file_given().empty() ? store.path() + ".fresh" : counter_file_given();
+  if (counter_file_given().empty() && ::access(path.c_str(), F_OK) != 0) {
+    checked = false;
+    return Status();
+  }
+  std::vector<std::uint8_t> bytes;
+  Status status = detail::read_regular_file(path.c_str(), detail::kCounterFileSize, bytes);
+  if (!status.ok()) return status;
+  status = detail::decode_counter_file(bytes.data(), bytes.size(), store.store_id(), keys, value);
+  if (!status.ok()) {
+    return Status(Error::RolledBack, "the freshness counter %s cannot be trusted: %s",
+                  path.c_str(), status.message());
+  }
+  return Status();
+}
 
 std::string count_text(std::size_t count, const char* what) {
   return std::to_string(count) + (count == 1 ? " checkpoint " : " checkpoints ") + what;
@@ -49,8 +80,11 @@ std::string nothing_restored_text(const StoreSurvey& survey, std::uint64_t pendi
 
 }  // namespace
 
+void use_counter_file(const std::string& path) { counter_file_given() = path; }
+
 StoreSurvey survey_store(const detail::StoreReader& store) {
   StoreSurvey survey;
+  const detail::KeySnapshot keys = detail::current_keys();
   survey.next_start_journal = store.journal_at_next_start(&survey.counts_crash);
   const detail::RestoreJournal& journal = survey.next_start_journal;
   // count_crash() leaves fallbacks at 0 only when it gave up.
@@ -76,9 +110,11 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
       detail::RecordView view;
       int area = -1;
       Status status = store.read_record(i, bytes, view, area);
-      // Every slot's MAC is checked with the keys given, as a restore checks the one it takes.
+      // Every slot's MAC is checked with the keys given, as a restore's scan checks them.
       const Status authentic =
-          status.ok() ? detail::check_authentication(bytes.data(), view) : Status();
+          status.ok() ? detail::check_authentication(keys.get(), bytes.data(), view,
+                                                     store.binding(i, area))
+                      : Status();
       if (status.ok() && authentic.ok()) {
         status = check_payload(store.area(area).schema(), view.payload, view.payload_size);
       }
@@ -100,7 +136,38 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
     }
     survey.slots.push_back(std::move(s));
   }
+  if (keys) {
+    std::vector<bool> authentic(survey.slots.size(), false);
+    for (const SlotSurvey& s : survey.slots) {
+      authentic[s.index] = s.has_header && !s.unauthenticated && s.area >= 0 &&
+                           slots[s.index].state == detail::StoreSlotState::Valid;
+    }
+    std::uint64_t counted = 0;
+    bool checked = false;
+    std::string path;
+    Status status = read_counter(store, *keys, counted, checked, path);
+    const bool holds_authentic =
+        std::find(authentic.begin(), authentic.end(), true) != authentic.end() ||
+        store.journal().freshness != 0;
+    if (!checked) {
+      survey.freshness = "not checked: no counter given, and " + path + " does not exist";
+    } else if (!status.ok()) {
+      survey.freshness = status.message();
+      survey.rolled_back = holds_authentic;
+    } else {
+      status = store.check_freshness(counted, authentic);
+      survey.rolled_back = !status.ok();
+      survey.freshness = status.ok() ? "fresh: the counter " + path + " says " +
+                                           std::to_string(counted) + " was written"
+                                     : status.message();
+    }
+    if (!store.journal_distrust().empty()) {
+      survey.freshness += "; the restore journal is not trusted (" + store.journal_distrust() +
+                          ") and reads as empty";
+    }
+  }
   for (const std::uint32_t i : store.valid_slots_newest_first()) {
+    if (survey.rolled_back) break;
     const SlotSurvey& s = survey.slots[i];
     if (s.restorable && !s.passed_over) {
       survey.restore_latest_slot = i;
@@ -115,7 +182,10 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
           SkippedCheckpoint{i, s.has_header ? s.header.sequence : 0, s.problem});
     }
   }
-  if (!survey.restore_latest_slot) {
+  if (survey.rolled_back) {
+    survey.restores_nothing_by_choice = true;
+    survey.nothing_restored = "nothing would be restored: " + survey.freshness;
+  } else if (!survey.restore_latest_slot) {
     for (const SlotSurvey& s : survey.slots) {
       survey.restores_nothing_by_choice |= s.passed_over || s.unauthenticated;
     }
@@ -215,6 +285,9 @@ void print_store_overview(const std::string& path, const detail::StoreReader& st
   }
   header.add({{"restore_journal"}, {journal_text(store.journal())}});
   if (!store.journal().empty()) header.add({{"next_start"}, {next_start_text(store, survey)}});
+  if (!survey.freshness.empty()) {
+    header.add({{"freshness"}, {survey.freshness, survey.rolled_back ? Colour::Red : Colour::None}});
+  }
   std::string restore_text = "none (" + survey.nothing_restored + ")";
   if (survey.restore_latest_slot) {
     const SlotSurvey& s = survey.slots[*survey.restore_latest_slot];
@@ -281,6 +354,14 @@ void write_store_json(JsonWriter& json, const detail::StoreReader& store,
   json.key_begin("restore_journal");
   write_journal_json(json, store.journal());
   json.key_end();
+  if (!survey.freshness.empty()) {
+    json.key_begin("freshness");
+    json.object_begin();
+    json.field("rolled_back", survey.rolled_back);
+    json.field("detail", survey.freshness);
+    json.object_end();
+    json.key_end();
+  }
   // The journal as the next start applies it, before it chooses a slot.
   json.key_begin("next_start");
   json.object_begin();

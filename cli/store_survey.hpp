@@ -48,10 +48,19 @@ struct StoreSurvey {
   // Nothing would be restored although a slot holds a sound checkpoint: the crash-loop fallback
   // or the keys exclude it, as a restore that fails (not a store that cannot be read).
   bool restores_nothing_by_choice = false;
+  // With keys: the freshness check against the counter (restore_latest()'s), in words, and
+  // whether it finds the store rolled back (then nothing would be restored).
+  std::string freshness;
+  bool rolled_back = false;
 };
 
+// The freshness counter file the surveys check a store against (keys set): `path`, or when
+// empty the program's default, the store's path with ".fresh" appended, when that exists.
+void use_counter_file(const std::string& path);
+
 // Authentication uses the keys set with set_checkpoint_keys (none: any MAC is accepted, as by
-// a program without keys).
+// a program without keys), each slot bound to its store and place as a restore binds it; the
+// journal counts only when its MAC verifies, and the store is checked against its counter.
 StoreSurvey survey_store(const detail::StoreReader& store);
 
 // Geometry, schema areas and the slot table, `selected` marked.

@@ -41,8 +41,9 @@ std::vector<Check> check_record_file(const std::vector<std::uint8_t>& bytes, std
                         std::to_string(record.record_size) + " bytes, checksum ok (crc32c " +
                         hex32(h.checksum) + ")"});
   // With --key-file the MAC must verify; without, an authenticated record is only described.
-  if (detail::keys_set()) {
-    status = detail::check_authentication(bytes.data(), record);
+  const detail::KeySnapshot keys = detail::current_keys();
+  if (keys) {
+    status = detail::check_standalone_authentication(keys.get(), bytes.data(), record);
     if (!status.ok()) {
       checks.push_back({"authentication", false, status.message()});
       return checks;

@@ -13,9 +13,12 @@
 //        byte 40, when present, bit 0: the reader authenticates checkpoints (fuzz_worlds.hpp's
 //        key), and with bit 4 of the control byte slot records are signed again; byte 41,
 //        when present, the crash-loop fallback depth of the writable open (bits 0-2; 0: off);
-//        bytes 64..331, when present, the restore journal of earlier versions (64..111) and
-//        the journal's two copies (128..203, 256..331) at those file offsets (their CRCs fixed
-//        with bit 4 of the control byte)
+//        bytes 64..459, when present, the restore journal of earlier versions (64..111), the
+//        journal's two copies (128..251, 256..379: 76 bytes and a 48-byte seal) and the
+//        store's identity's two copies (400..427, 432..459) at those file offsets (their CRCs fixed, and with keys
+//        the journal copies sealed again, with bit 4 of the control byte); bytes 512..767,
+//        when present, the freshness counter file beside the store (its copies signed again
+//        with bit 4 and keys; absent: no counter file)
 //     1: schema area 0 (at 4096): u64 hash, u32 size, u32 crc32c, schema bytes
 //     2: schema area 1 (at 4096 + schema_area_size)
 //     3...: slot i's bytes (a record), at slots_offset + i * slot_size, cut at slot_size
@@ -24,7 +27,8 @@
 // foreign geometry, grow a truncated file back), it restores what the read-only one restores
 // and, when that was a checkpoint, changes no byte of the file past its header but the
 // journal; with a fallback depth, the journal then names the checkpoint restored as
-// unconfirmed (and none when nothing was restored).
+// unconfirmed (and none when nothing was restored), unless the store was refused as rolled
+// back (keys set), which writes nothing.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -37,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "freshness.hpp"
 #include "fuzz_worlds.hpp"
 #include "restore_journal.hpp"
 #include "store_reader.hpp"
@@ -107,20 +112,66 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<std::uint8_t> header(4096, 0);
   for (std::size_t i = 0; i < sections[0].size() && i < 36; ++i) header[i] = sections[0][i];
   if (fix) le::store32(header.data() + 32, symcr::detail::crc32c(header.data(), 32));
-  // The journal's bytes: the earlier versions' single journal and both copies.
+  // The journal's bytes (the earlier versions' single journal and both copies) and the store's
+  // identity after them.
   constexpr std::size_t kJournalAt = symcr::detail::kLegacyRestoreJournalOffset;
   constexpr std::size_t kJournalEnd = symcr::detail::kRestoreJournalEnd;
+  constexpr std::size_t kIdAt = symcr::detail::kStoreIdOffset;
+  constexpr std::size_t kPageEnd = symcr::detail::kStoreHeaderPageRead;
   const std::uint32_t fallback_depth = sections[0].size() > 41 ? sections[0][41] & 7u : 0;
-  for (std::size_t i = kJournalAt; i < sections[0].size() && i < kJournalEnd; ++i) {
+  for (std::size_t i = kJournalAt; i < sections[0].size() && i < kPageEnd; ++i) {
     header[i] = sections[0][i];
   }
+  const symcr::detail::KeySnapshot keys = symcr::detail::current_keys();
   if (fix) {
     const auto seal = [&header](std::size_t at, std::size_t size) {
       le::store32(header.data() + at + size - 4, symcr::detail::crc32c(header.data() + at, size - 4));
     };
     seal(symcr::detail::kLegacyRestoreJournalOffset, symcr::detail::kLegacyRestoreJournalSize);
+    seal(kIdAt, symcr::detail::kStoreIdCopySize);
+    seal(symcr::detail::kStoreIdSecondCopy, symcr::detail::kStoreIdCopySize);
+    std::uint8_t id[symcr::detail::kStoreIdSize];
+    symcr::detail::read_store_id(header.data(), header.size(), id);
     for (const std::uint64_t copy : symcr::detail::kRestoreJournalOffsets) {
       seal(copy, symcr::detail::kRestoreJournalSize);
+      // With keys, a copy that decodes is sealed again (its freshness as mutated).
+      if (keys) {
+        std::vector<std::uint8_t> alone(kJournalEnd, 0);
+        std::copy(header.begin() + static_cast<std::ptrdiff_t>(copy),
+                  header.begin() + static_cast<std::ptrdiff_t>(copy + symcr::detail::kRestoreJournalSize),
+                  alone.begin() + static_cast<std::ptrdiff_t>(symcr::detail::kRestoreJournalOffsets[0]));
+        symcr::detail::RestoreJournal journal =
+            symcr::detail::read_restore_journal(alone.data(), alone.size());
+        if (journal.empty() && journal.generation == 0) continue;
+        journal.freshness = le::load64(header.data() + copy + symcr::detail::kRestoreJournalSize + 8);
+        symcr::detail::JournalSeal journal_seal;
+        journal_seal.keys = keys.get();
+        journal_seal.store_id = id;
+        symcr::detail::encode_restore_journal(journal, header.data() + copy, &journal_seal);
+      }
+    }
+  }
+  // The freshness counter file (none unless given).
+  const std::string counter_path = store_path() + ".fresh";
+  ::unlink(counter_path.c_str());
+  if (sections[0].size() > 512) {
+    std::vector<std::uint8_t> counter(sections[0].begin() + 512,
+                                      sections[0].begin() + std::min<std::size_t>(sections[0].size(), 768));
+    if (fix && keys && counter.size() >= 72) {
+      // Each copy signed again for the identity and value it names.
+      for (std::size_t at = 0; at + 72 <= counter.size(); at += 128) {
+        symcr::detail::OwnedKey key = keys->signing();
+        le::store32(counter.data() + at + 8, key.id);
+        std::uint8_t mac[symcr::detail::kSha256Size];
+        symcr::detail::store_item_mac(key, "symcr freshness counter", counter.data() + at + 24,
+                                      counter.data() + at, 40, mac);
+        std::copy(mac, mac + sizeof mac, counter.data() + at + 40);
+      }
+    }
+    FILE* file = std::fopen(counter_path.c_str(), "wb");
+    if (file != nullptr) {
+      (void)!std::fwrite(counter.data(), 1, counter.size(), file);
+      std::fclose(file);
     }
   }
   const std::uint32_t slot_count = le::load32(header.data() + 12);
@@ -154,7 +205,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::uint64_t slot = s - 3;
     if (slot >= slot_count) break;
     std::vector<std::uint8_t>& record = sections[s];
-    if (fix) fuzz::fix_record_integrity(record.data(), record.size());
+    symcr::detail::RecordBinding binding;
+    // A slot's MAC binds the store, the slot's offset and its area's schema digest; a store
+    // without an identity gets a new one from a writable open, so its slots are not signed.
+    const bool has_id =
+        symcr::detail::read_store_id(header.data(), header.size(), binding.store_id);
+    if (fix && !has_id) {
+      fuzz::use_fuzz_key(false);
+      fuzz::fix_record_integrity(record.data(), record.size());
+      fuzz::use_fuzz_key(keys != nullptr);
+    } else if (fix) {
+      binding.location = slots_offset + slot * slot_size;
+      for (int a = 0; a < 2 && record.size() >= 40; ++a) {
+        const std::vector<std::uint8_t>* area =
+            sections.size() > static_cast<std::size_t>(1 + a) ? &sections[1 + a] : nullptr;
+        if (area == nullptr || area->size() < 16) continue;
+        const std::uint32_t area_bytes = le::load32(area->data() + 8);
+        if (area_bytes <= area->size() - 16 && le::load64(area->data()) == le::load64(record.data() + 32)) {
+          symcr::detail::schema_digest(area->data() + 16, area_bytes, binding.schema_digest);
+        }
+      }
+      fuzz::fix_record_integrity(record.data(), record.size(), &binding);
+    }
     put(record, slots_offset + slot * slot_size, slot_size);
   }
   std::uint64_t length = file_size < 4096 ? 4096 : file_size;
@@ -196,7 +268,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       const symcr::Report report = store.restore_latest(restore_options);
       restored = report.ok();
       (void)report.to_json();
-      if (fallback_depth != 0 && !store.read_only()) {
+      // A store refused as rolled back (keys set) is written nothing, its journal included.
+      if (fallback_depth != 0 && !store.read_only() &&
+          report.status().error() != symcr::Error::RolledBack) {
         const std::vector<std::uint8_t> now = read_whole(path);
         const symcr::detail::RestoreJournal journal =
             symcr::detail::read_restore_journal(now.data(), now.size());
@@ -229,9 +303,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return std::equal(file_before.begin() + from, file_before.begin() + to,
                       file_after.begin() + from);
   };
+  // A writable open gives a store without an identity one.
+  std::uint8_t id_before[symcr::detail::kStoreIdSize];
+  bool had_id = false;
+  symcr::detail::read_store_id(file_before.data(), file_before.size(), id_before, &had_id);
   if (restorable && !(same_range(36, kJournalAt) &&
                       (fallback_depth != 0 || same_range(kJournalAt, kJournalEnd)) &&
-                      same_range(kJournalEnd, file_before.size()))) {
+                      same_range(kJournalEnd, kIdAt) && (!had_id || same_range(kIdAt, kPageEnd)) &&
+                      same_range(kPageEnd, file_before.size()))) {
     std::fprintf(stderr, "symcr fuzz: opening or restoring changed the store's bytes\n");
     std::abort();
   }
@@ -249,5 +328,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   }
   ::unlink(path.c_str());
+  ::unlink(counter_path.c_str());
   return 0;
 }

@@ -180,8 +180,11 @@ inline std::vector<std::uint8_t> world_snapshot(unsigned world) {
 
 // Makes a mutated record's integrity fields consistent again (the inline schema's FNV-1a hash
 // and the CRC-32C), so the fuzzer reaches the schema parser and the payload decoder instead of
-// stopping at the checksum. Sizes are left as they are: only fields that fit are fixed.
-inline void fix_record_integrity(std::uint8_t* p, std::size_t size) {
+// stopping at the checksum. Sizes are left as they are: only fields that fit are fixed. With
+// keys set, an authenticated record is signed again for `binding` (a store slot's), or as a
+// standalone checkpoint when null.
+inline void fix_record_integrity(std::uint8_t* p, std::size_t size,
+                                 const symcr::detail::RecordBinding* binding = nullptr) {
   namespace le = symcr::detail::le;
   if (size < symcr::detail::kRecordHeaderSize) return;
   const std::uint64_t header_size = le::load16(p + 10);
@@ -192,10 +195,20 @@ inline void fix_record_integrity(std::uint8_t* p, std::size_t size) {
     le::store64(p + 32, symcr::detail::fnv1a64(p + header_size, schema_size));
   }
   const std::uint64_t total = header_size + schema_size + payload_size;
-  // With keys set, an authenticated record is signed again, so that mutations get past the MAC.
-  if (symcr::detail::keys_set() && (flags & symcr::detail::kRecordAuthenticated) &&
+  // With keys set, an authenticated record is signed again, so that mutations get past the MAC
+  // (its MAC version and journal freshness stay as mutated: the reader checks them).
+  const symcr::detail::KeySnapshot keys = symcr::detail::current_keys();
+  if (keys && (flags & symcr::detail::kRecordAuthenticated) &&
       header_size >= symcr::detail::kRecordAuthenticatedHeaderSize && total <= size) {
-    symcr::detail::sign_record(p, total);
+    symcr::detail::RecordBinding standalone;
+    if (binding == nullptr) {
+      if ((flags & symcr::detail::kRecordSchemaInline) && header_size + schema_size <= size) {
+        symcr::detail::schema_digest(p + header_size, schema_size, standalone.schema_digest);
+      }
+      binding = &standalone;
+    }
+    le::store32(p + symcr::detail::kRecordKeyIdOffset, keys->signing().id);
+    symcr::detail::sign_record(*keys, p, total, *binding);
   }
   if (header_size >= symcr::detail::kRecordHeaderSize && total <= size) {
     le::store32(p + 48, 0);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "freshness.hpp"
 #include "fuzz_worlds.hpp"
 #include "restore_journal.hpp"
 #include "symcr/device.hpp"
@@ -234,7 +235,9 @@ std::vector<std::uint8_t> read_file(const std::string& path) {
 
 // The store file at `path` in the fuzzer's compact form (fuzz_store.cpp).
 // With `cut_in_slot`, the header section also asks the fuzzer to truncate the file 100 bytes
-// into that slot; with a `fallback_depth`, it carries the restore journal and that depth.
+// into that slot; with a `fallback_depth`, it carries the restore journal and that depth; an
+// `authenticated` one carries the journal's seals, the store's identity and its freshness
+// counter file (<path>.fresh) too.
 std::vector<std::uint8_t> compact_store(const std::string& path, std::uint8_t control,
                                         int cut_in_slot = -1, bool authenticated = false,
                                         std::uint8_t fallback_depth = 0) {
@@ -246,11 +249,16 @@ std::vector<std::uint8_t> compact_store(const std::string& path, std::uint8_t co
   const std::uint64_t slots_offset = le::load64(file.data() + 24);
   std::vector<std::uint8_t> header(file.begin(), file.begin() + 36);
   if (cut_in_slot >= 0 || authenticated) header.resize(authenticated ? 41 : 40);
-  if (fallback_depth != 0) {
-    header.resize(symcr::detail::kRestoreJournalEnd);
-    std::copy(file.begin() + 64, file.begin() + symcr::detail::kRestoreJournalEnd,
+  if (fallback_depth != 0 || authenticated) {
+    header.resize(symcr::detail::kStoreHeaderPageRead);
+    std::copy(file.begin() + 64, file.begin() + symcr::detail::kStoreHeaderPageRead,
               header.begin() + 64);
     header[41] = fallback_depth;
+  }
+  if (authenticated) {
+    const std::vector<std::uint8_t> counter = read_file(path + ".fresh");
+    header.resize(512, 0);
+    header.insert(header.end(), counter.begin(), counter.end());
   }
   if (cut_in_slot >= 0) {
     le::store32(header.data() + 36, static_cast<std::uint32_t>(
@@ -453,7 +461,27 @@ int main(int argc, char** argv) {
     write_seed(stores, std::string(world_name(world)) + "-authenticated-store",
                compact_store(path, static_cast<std::uint8_t>(world | 0x10), -1, true));
     ++written;
+    // The same after a start that recorded its restore: a sealed journal.
+    use_fuzz_key(true);
+    {
+      symcr::StoreOptions with_fallback = options;
+      with_fallback.fallback_depth = 2;
+      symcr::Store store;
+      status = symcr::Store::open(path.c_str(), world_schema(world), with_fallback, store);
+      if (status.ok()) status = store.restore_latest().status();
+      reset_world(world);
+    }
+    use_fuzz_key(false);
+    if (!status.ok()) {
+      std::fprintf(stderr, "authenticated store %s (fallback): %s\n", world_name(world),
+                   status.message());
+      return 1;
+    }
+    write_seed(stores, std::string(world_name(world)) + "-authenticated-sealed-journal",
+               compact_store(path, static_cast<std::uint8_t>(world | 0x10), -1, true, 2));
+    ++written;
     ::unlink(path.c_str());
+    ::unlink((path + ".fresh").c_str());
   }
   ::rmdir(tmpl);
 

@@ -1,44 +1,38 @@
 #include "authentication.hpp"
 
-#include <atomic>
 #include <cstring>
 #include <mutex>
-#include <vector>
 
 #include "little_endian.hpp"
-#include "sha256.hpp"
 
 namespace symcr {
 namespace detail {
 namespace {
 
-struct OwnedKey {
-  std::uint32_t id;
-  std::vector<std::uint8_t> bytes;
-};
-using KeyRing = std::vector<OwnedKey>;
-
-// The keys in force, read on every save and restore without a lock. A replaced ring is kept
-// (never freed): a save or restore on another thread may still be reading it, and keys are set
-// a few times in a process's life, not per checkpoint.
-std::atomic<const KeyRing*> current_keys{nullptr};
-
+// The keys in force. Saves and restores copy the pointer under the mutex (a few nanoseconds,
+// once per operation) and then read their own snapshot without it.
 std::mutex& keys_mutex() {
   static std::mutex mutex;
   return mutex;
 }
-
-// Replaced rings, kept reachable for the process's life (see current_keys).
-std::vector<const KeyRing*>& retired_rings() {
-  static auto* rings = new std::vector<const KeyRing*>();
-  return *rings;
+KeySnapshot& keys_in_force() {
+  static auto* keys = new KeySnapshot();  // never destroyed: saves may run during exit
+  return *keys;
 }
 
-// The MAC of `record` with its checksum and MAC fields read as zero.
+constexpr char kRecordDomain[] = "symcr record MAC 2";
+
+// The MAC of `record` with its checksum and MAC fields read as zero, bound to `binding`.
 void record_mac(const std::uint8_t* record, std::size_t size, const OwnedKey& key,
-                std::uint8_t (&mac)[kSha256Size]) {
+                const RecordBinding& binding, std::uint8_t (&mac)[kSha256Size]) {
   static constexpr std::uint8_t kZero[kSha256Size] = {};
   HmacSha256 hmac(key.bytes.data(), key.bytes.size());
+  hmac.update(kRecordDomain, sizeof kRecordDomain);
+  hmac.update(binding.store_id, kStoreIdSize);
+  std::uint8_t location[8];
+  le::store64(location, binding.location);
+  hmac.update(location, sizeof location);
+  hmac.update(binding.schema_digest, kSha256Size);
   hmac.update(record, kRecordChecksumOffset);
   hmac.update(kZero, 4);
   hmac.update(record + kRecordChecksumOffset + 4, kRecordMacOffset - kRecordChecksumOffset - 4);
@@ -49,19 +43,42 @@ void record_mac(const std::uint8_t* record, std::size_t size, const OwnedKey& ke
 
 }  // namespace
 
-bool keys_set() { return current_keys.load(std::memory_order_acquire) != nullptr; }
+KeyRing::~KeyRing() {
+  for (OwnedKey& key : keys) {
+    // Through a volatile pointer: a store the compiler cannot drop as dead.
+    volatile std::uint8_t* bytes = key.bytes.data();
+    for (std::size_t i = 0; i < key.bytes.size(); ++i) bytes[i] = 0;
+  }
+}
 
-std::uint32_t signing_key_id() { return current_keys.load(std::memory_order_acquire)->front().id; }
+const OwnedKey* KeyRing::find(std::uint32_t id) const {
+  for (const OwnedKey& key : keys) {
+    if (key.id == id) return &key;
+  }
+  return nullptr;
+}
 
-void sign_record(std::uint8_t* record, std::size_t size) {
-  const KeyRing& keys = *current_keys.load(std::memory_order_acquire);
+KeySnapshot current_keys() {
+  std::lock_guard<std::mutex> lock(keys_mutex());
+  return keys_in_force();
+}
+
+void schema_digest(const std::uint8_t* schema, std::size_t size,
+                   std::uint8_t (&digest)[kSha256Size]) {
+  Sha256 sha;
+  sha.update(schema, size);
+  sha.finish(digest);
+}
+
+void sign_record(const KeyRing& keys, std::uint8_t* record, std::size_t size,
+                 const RecordBinding& binding) {
   std::uint8_t mac[kSha256Size];
-  record_mac(record, size, keys.front(), mac);
+  record_mac(record, size, keys.signing(), binding, mac);
   std::memcpy(record + kRecordMacOffset, mac, sizeof mac);
 }
 
-Status check_authentication(const std::uint8_t* record, const RecordView& view) {
-  const KeyRing* keys = current_keys.load(std::memory_order_acquire);
+Status check_authentication(const KeyRing* keys, const std::uint8_t* record,
+                            const RecordView& view, const RecordBinding& binding) {
   if (keys == nullptr) return Status();
   const RecordHeader& header = view.header;
   if ((header.flags & kRecordAuthenticated) == 0) {
@@ -69,10 +86,14 @@ Status check_authentication(const std::uint8_t* record, const RecordView& view) 
                   "the checkpoint carries no MAC, and this program authenticates checkpoints: "
                   "refused");
   }
-  const OwnedKey* key = nullptr;
-  for (const OwnedKey& candidate : *keys) {
-    if (candidate.id == header.key_id) key = &candidate;
+  if (header.mac_version != kRecordMacVersion) {
+    return Status(Error::Unauthenticated,
+                  "the checkpoint's MAC is of version %u, which binds neither its store, its "
+                  "slot nor its schema's SHA-256 (this build makes and accepts version %u): "
+                  "refused",
+                  header.mac_version, kRecordMacVersion);
   }
+  const OwnedKey* key = keys->find(header.key_id);
   if (key == nullptr) {
     return Status(Error::Unauthenticated,
                   "the checkpoint is authenticated with key id %u, which this program does not "
@@ -80,42 +101,58 @@ Status check_authentication(const std::uint8_t* record, const RecordView& view) 
                   header.key_id);
   }
   std::uint8_t mac[kSha256Size];
-  record_mac(record, view.record_size, *key, mac);
+  record_mac(record, view.record_size, *key, binding, mac);
   if (!equal_macs(mac, record + kRecordMacOffset, kSha256Size)) {
     return Status(Error::Unauthenticated,
                   "the checkpoint's MAC does not verify with key id %u: it was changed after it "
-                  "was written, or written with another key: refused",
+                  "was written, written with another key, or moved from another slot or "
+                  "store: refused",
                   header.key_id);
   }
   return Status();
+}
+
+Status check_standalone_authentication(const KeyRing* keys, const std::uint8_t* record,
+                                       const RecordView& view) {
+  RecordBinding standalone;
+  if (keys != nullptr && view.schema != nullptr) {
+    schema_digest(view.schema, view.header.schema_size, standalone.schema_digest);
+  }
+  return check_authentication(keys, record, view, standalone);
+}
+
+void store_item_mac(const OwnedKey& key, const char* domain, const std::uint8_t* store_id,
+                    const std::uint8_t* bytes, std::size_t size,
+                    std::uint8_t (&mac)[kSha256Size]) {
+  HmacSha256 hmac(key.bytes.data(), key.bytes.size());
+  hmac.update(domain, std::strlen(domain) + 1);
+  hmac.update(store_id, kStoreIdSize);
+  hmac.update(bytes, size);
+  hmac.finish(mac);
 }
 
 }  // namespace detail
 
 Status set_checkpoint_keys(const CheckpointKey* keys, std::size_t count) {
   if (count != 0 && keys == nullptr) return Status(Error::Unsupported, "no keys given");
-  auto* ring = new detail::KeyRing();
+  std::shared_ptr<detail::KeyRing> ring;
+  if (count != 0) ring = std::make_shared<detail::KeyRing>();
   for (std::size_t i = 0; i < count; ++i) {
     if (keys[i].bytes == nullptr || keys[i].size == 0) {
-      delete ring;
       return Status(Error::Unsupported, "checkpoint key %zu (id %u) is empty", i, keys[i].id);
     }
-    for (const detail::OwnedKey& earlier : *ring) {
-      if (earlier.id == keys[i].id) {
-        delete ring;
-        return Status(Error::Unsupported, "two checkpoint keys have id %u", keys[i].id);
-      }
+    if (ring->find(keys[i].id) != nullptr) {
+      return Status(Error::Unsupported, "two checkpoint keys have id %u", keys[i].id);
     }
-    ring->push_back({keys[i].id, {keys[i].bytes, keys[i].bytes + keys[i].size}});
+    ring->keys.push_back({keys[i].id, {keys[i].bytes, keys[i].bytes + keys[i].size}});
   }
-  if (count == 0) {
-    delete ring;
-    ring = nullptr;
+  detail::KeySnapshot previous;
+  {
+    std::lock_guard<std::mutex> lock(detail::keys_mutex());
+    previous = std::move(detail::keys_in_force());
+    detail::keys_in_force() = std::move(ring);
   }
-  std::lock_guard<std::mutex> lock(detail::keys_mutex());
-  const detail::KeyRing* previous = detail::current_keys.exchange(ring, std::memory_order_acq_rel);
-  if (previous != nullptr) detail::retired_rings().push_back(previous);
-  return Status();
+  return Status();  // `previous` is wiped here unless a save or restore still holds it
 }
 
 }  // namespace symcr

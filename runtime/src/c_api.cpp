@@ -15,6 +15,8 @@ static_assert(SYMCR_ERROR_UNAUTHENTICATED == static_cast<int>(symcr::Error::Unau
               "C error codes mirror symcr::Error");
 static_assert(SYMCR_ERROR_STORE_FULL == static_cast<int>(symcr::Error::StoreFull),
               "C error codes mirror symcr::Error");
+static_assert(SYMCR_ERROR_ROLLED_BACK == static_cast<int>(symcr::Error::RolledBack),
+              "C error codes mirror symcr::Error");
 static_assert(SYMCR_ERROR_TOO_LARGE == static_cast<int>(symcr::Error::TooLarge),
               "C error codes mirror symcr::Error");
 static_assert(SYMCR_ERROR_NO_VALID_SLOT == static_cast<int>(symcr::Error::NoValidSlot),
@@ -57,7 +59,7 @@ symcr::RestoreOptions restore_options(int flags) {
 extern "C" {
 
 const char* symcr_error_name(int error) {
-  if (error < 0 || error > static_cast<int>(symcr::Error::StoreFull)) return "Unknown";
+  if (error < 0 || error > static_cast<int>(symcr::Error::RolledBack)) return "Unknown";
   return symcr::error_name(static_cast<symcr::Error>(error));
 }
 

@@ -34,7 +34,11 @@ void store_header(const RecordHeader& h, std::uint8_t* p) {
   le::store32(p + 44, h.payload_size);
   le::store32(p + 48, h.checksum);
   le::store32(p + 52, h.program_id);
-  if ((h.flags & kRecordAuthenticated) != 0) le::store32(p + kRecordKeyIdOffset, h.key_id);
+  if ((h.flags & kRecordAuthenticated) != 0) {
+    le::store32(p + kRecordKeyIdOffset, h.key_id);
+    le::store32(p + kRecordMacVersionOffset, h.mac_version);
+    le::store64(p + kRecordJournalFreshnessOffset, h.journal_freshness);
+  }
 }
 
 // CRC of the record with the checksum field read as zero, without modifying the bytes.
@@ -56,14 +60,27 @@ bool is_blob(const SchemaBlob* blob, const std::uint8_t* bytes, std::size_t size
 }  // namespace
 
 Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t sequence,
-                     std::vector<std::uint8_t>& out) {
-  return encode_record_as(schema, schema_blob(schema), inline_schema, sequence, out);
+                     std::vector<std::uint8_t>& out, const RecordSigning* signing) {
+  return encode_record_as(schema, schema_blob(schema), inline_schema, sequence, out, signing);
 }
 
 Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inline_schema,
-                        std::uint64_t sequence, std::vector<std::uint8_t>& out) {
+                        std::uint64_t sequence, std::vector<std::uint8_t>& out,
+                        const RecordSigning* signing) {
+  // Without a store's signing, a standalone checkpoint signed with the keys in force: one
+  // snapshot names the key and makes the MAC.
+  KeySnapshot snapshot;
+  RecordBinding standalone;
+  RecordSigning own;
+  if (signing == nullptr) {
+    snapshot = current_keys();
+    own.keys = snapshot.get();
+    if (own.keys != nullptr) schema_digest(blob.data, blob.size, standalone.schema_digest);
+    own.binding = &standalone;
+    signing = &own;
+  }
   // With keys set, the record is authenticated: a longer header, with the key id and the MAC.
-  const bool authenticated = keys_set();
+  const bool authenticated = signing->keys != nullptr;
   const std::uint16_t header_size =
       authenticated ? kRecordAuthenticatedHeaderSize : kRecordHeaderSize;
   out.clear();
@@ -89,7 +106,11 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   header.header_size = header_size;
   header.flags = (inline_schema ? kRecordSchemaInline : 0) |
                  (authenticated ? kRecordAuthenticated : 0);
-  header.key_id = authenticated ? signing_key_id() : 0;
+  if (authenticated) {
+    header.key_id = signing->keys->signing().id;
+    header.mac_version = kRecordMacVersion;
+    header.journal_freshness = signing->journal_freshness;
+  }
   header.sequence = sequence;
   header.timestamp_ns = realtime_ns();
   header.schema_hash = blob.hash;
@@ -97,9 +118,19 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   header.payload_size = static_cast<std::uint32_t>(payload_size);
   header.program_id = blob.program_id;
   store_header(header, out.data());
-  if (authenticated) sign_record(out.data(), out.size());  // the CRC then covers the MAC too
+  if (authenticated && signing->binding != nullptr) {  // the CRC then covers the MAC too
+    sign_record(*signing->keys, out.data(), out.size(), *signing->binding);
+  }
   le::store32(out.data() + kRecordChecksumOffset, record_checksum(out.data(), out.size()));
   return Status();
+}
+
+void reseal_record(std::uint8_t* record, std::size_t size, const RecordSigning& signing) {
+  le::store32(record + kRecordKeyIdOffset, signing.keys->signing().id);
+  le::store32(record + kRecordMacVersionOffset, kRecordMacVersion);
+  le::store64(record + kRecordJournalFreshnessOffset, signing.journal_freshness);
+  sign_record(*signing.keys, record, size, *signing.binding);
+  le::store32(record + kRecordChecksumOffset, record_checksum(record, size));
 }
 
 Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
@@ -152,11 +183,17 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
     return Status(Error::Corrupt, "unknown header flags %08x", h.flags);
   }
   if ((h.flags & kRecordAuthenticated) != 0) {
-    if (h.header_size < kRecordAuthenticatedHeaderSize) {
+    if (h.header_size < kRecordLegacyAuthenticatedHeaderSize) {
       return Status(Error::Corrupt, "authenticated, but a %u-byte header has no room for a MAC",
                     unsigned{h.header_size});
     }
     h.key_id = le::load32(data + kRecordKeyIdOffset);
+    h.mac_version = le::load32(data + kRecordMacVersionOffset);
+    if (h.mac_version != 0 && h.header_size < kRecordAuthenticatedHeaderSize) {
+      return Status(Error::Corrupt, "MAC version %u, but a %u-byte header has no room for it",
+                    h.mac_version, unsigned{h.header_size});
+    }
+    if (h.mac_version != 0) h.journal_freshness = le::load64(data + kRecordJournalFreshnessOffset);
   }
   const bool inline_schema = (h.flags & kRecordSchemaInline) != 0;
   if (inline_schema != (h.schema_size != 0)) {
@@ -227,13 +264,13 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size, con
     status = Status(Error::Corrupt, "%zu unexpected bytes after the %zu-byte record",
                     size - record.record_size, record.record_size);
   }
-  if (status.ok()) status = check_authentication(data, record);
   if (status.ok() && record.schema == nullptr) {
     status = Status(Error::SchemaUnknown,
                     "the record references schema %016llx by hash (a store slot) and carries "
                     "no schema of its own",
                     static_cast<unsigned long long>(record.header.schema_hash));
   }
+  if (status.ok()) status = check_standalone_authentication(current_keys().get(), data, record);
   if (!status.ok()) {
     ReportAccess::set_status(report, status);
     return report;

@@ -23,10 +23,20 @@ inline constexpr std::uint32_t kRecordSchemaInline = 1u << 0;
 inline constexpr std::uint32_t kRecordAuthenticated = 1u << 1;
 inline constexpr std::uint32_t kRecordKnownFlags = kRecordSchemaInline | kRecordAuthenticated;
 inline constexpr std::size_t kRecordChecksumOffset = 48;
-// An authenticated record's header goes on: u32 key_id, u32 reserved (0), the 32-byte MAC.
-inline constexpr std::uint16_t kRecordAuthenticatedHeaderSize = 96;
+// An authenticated record's header goes on: u32 key_id, u32 MAC version, the 32-byte MAC, u64
+// journal freshness (a store's: the freshness value of its restore journal when the record
+// was saved; 0 elsewhere), u64 reserved (0). Version 0 (96-byte headers of earlier builds)
+// bound neither store, slot nor schema digest, and is refused.
+inline constexpr std::uint16_t kRecordAuthenticatedHeaderSize = 112;
+inline constexpr std::uint16_t kRecordLegacyAuthenticatedHeaderSize = 96;
 inline constexpr std::size_t kRecordKeyIdOffset = 56;
+inline constexpr std::size_t kRecordMacVersionOffset = 60;
 inline constexpr std::size_t kRecordMacOffset = 64;
+inline constexpr std::size_t kRecordJournalFreshnessOffset = 96;
+inline constexpr std::uint32_t kRecordMacVersion = 2;
+// Sequences of a store never reach 2^63 (one save a nanosecond would take 292 years): a record
+// above is damage or forgery, and the numbering can never wrap.
+inline constexpr std::uint64_t kMaxRecordSequence = (std::uint64_t{1} << 63) - 1;
 
 struct RecordHeader {
   std::uint16_t format_version = 0;
@@ -40,6 +50,8 @@ struct RecordHeader {
   std::uint32_t checksum = 0;
   std::uint32_t program_id = 0;  // the writing program (program_id_of), 0 when anonymous
   std::uint32_t key_id = 0;      // kRecordAuthenticated: the key its MAC was made with
+  std::uint32_t mac_version = 0;            // kRecordAuthenticated: kRecordMacVersion
+  std::uint64_t journal_freshness = 0;      // kRecordAuthenticated, version 2
 };
 
 // A record validated in place: views into the caller's bytes, valid while they are.
@@ -52,17 +64,34 @@ struct RecordView {
 };
 
 struct SchemaBlob;
+struct KeyRing;
+struct RecordBinding;
+
+// How a record is authenticated: with `keys` (null: not at all), bound to `binding`, carrying
+// `journal_freshness`. A store passes its own; without one, a record is signed with the keys in
+// force as a standalone checkpoint. A null `binding` (with keys) lays the header out but leaves
+// the MAC to reseal_record, once the record's place is known.
+struct RecordSigning {
+  const KeyRing* keys = nullptr;
+  const RecordBinding* binding = nullptr;
+  std::uint64_t journal_freshness = 0;
+};
 
 // Replaces `out` with a complete record of every root of `schema`: header, the serialised
 // schema when `inline_schema`, the payload, and the checksum. Reuses `out`'s capacity.
 Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t sequence,
-                     std::vector<std::uint8_t>& out);
+                     std::vector<std::uint8_t>& out, const RecordSigning* signing = nullptr);
 // The same record of `schema`'s roots under another schema's identity: the header's hash and
 // program, and the inline bytes, are `identity`'s. For `symcr convert`, whose roots are another
 // build's, laid out for this machine's memory (the payload never depends on the layout).
 Status encode_record_as(const Schema& schema, const SchemaBlob& identity,
                         bool inline_schema, std::uint64_t sequence,
-                        std::vector<std::uint8_t>& out);
+                        std::vector<std::uint8_t>& out, const RecordSigning* signing = nullptr);
+
+// Names `signing`'s key and journal freshness in an authenticated record's header, makes its
+// MAC for `signing.binding` and rewrites its checksum: a record signed where its slot is known,
+// or moved to another (a store rewritten for a new geometry; verified before it moves).
+void reseal_record(std::uint8_t* record, std::size_t size, const RecordSigning& signing);
 
 // Checks magic, version, header size, flags, sizes against `size` and the checksum, and for an
 // inline schema that its bytes hash to `schema_hash`. Bytes after the record are not looked at

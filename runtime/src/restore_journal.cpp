@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cstring>
 
+#include "authentication.hpp"
 #include "crc32c.hpp"
 #include "little_endian.hpp"
+#include "record.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -15,9 +17,45 @@ constexpr std::size_t kChecked = kRestoreJournalSize - 4;  // the CRC covers wha
 constexpr std::uint8_t kLegacyMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'J', 'N', 'L'};
 constexpr std::size_t kLegacyChecked = kLegacyRestoreJournalSize - 4;
 
+// The seal: u32 key id, u32 1 (sealed), u64 freshness, u64 newest, the first 24 bytes of the
+// HMAC-SHA-256 of the journal and those fields (192 bits; truncated to fit between the copies).
+constexpr char kSealDomain[] = "symcr restore journal";
+constexpr std::size_t kSealSigned = kRestoreJournalSize + 24;
+constexpr std::size_t kSealMacSize = kRestoreJournalSealSize - 24;
+
 bool ranges_hold(const RestoreJournal& journal) {
   return journal.suspect_low <= journal.suspect_high &&
-         journal.crashed_low <= journal.crashed_high;
+         journal.crashed_low <= journal.crashed_high &&
+         journal.highest_sequence() <= kMaxRecordSequence;
+}
+
+// Whether the copy at `data` carries a seal that verifies for `seal`; `why` says otherwise.
+bool seal_holds(const std::uint8_t* data, const JournalSeal& seal, std::uint64_t& freshness,
+                std::uint64_t& newest, std::string& why) {
+  const std::uint8_t* s = data + kRestoreJournalSize;
+  if (le::load32(s + 4) != 1) {
+    why = "it carries no MAC (written without keys)";
+    return false;
+  }
+  const OwnedKey* key = seal.keys->find(le::load32(s));
+  if (key == nullptr) {
+    why = "its MAC is made with key id " + std::to_string(le::load32(s)) +
+          ", which this program does not hold";
+    return false;
+  }
+  std::uint8_t mac[kSha256Size];
+  store_item_mac(*key, kSealDomain, seal.store_id, data, kSealSigned, mac);
+  if (!equal_macs(mac, s + 24, kSealMacSize)) {
+    why = "its MAC does not verify (forged, or another store's)";
+    return false;
+  }
+  freshness = le::load64(s + 8);
+  newest = le::load64(s + 16);
+  if (freshness > kMaxRecordSequence || newest > kMaxRecordSequence) {
+    why = "its freshness value is beyond the sequence range";
+    return false;
+  }
+  return true;
 }
 
 // One copy: whether it holds a journal, and which.
@@ -135,7 +173,8 @@ void RestoreJournal::confirm() {
   fallbacks = 0;
 }
 
-void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out) {
+void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out,
+                            const JournalSeal* seal) {
   std::memcpy(out, kJournalMagic, sizeof kJournalMagic);
   le::store64(out + 8, journal.generation);
   le::store64(out + 16, journal.unconfirmed);
@@ -147,18 +186,44 @@ void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out) {
   le::store32(out + 64, journal.fallbacks);
   le::store32(out + 68, journal.depth);
   le::store32(out + kChecked, crc32c(out, kChecked));
+  std::uint8_t* s = out + kRestoreJournalSize;
+  std::memset(s, 0, kRestoreJournalSealSize);
+  if (seal == nullptr || seal->keys == nullptr) return;
+  const OwnedKey& key = seal->keys->signing();
+  le::store32(s, key.id);
+  le::store32(s + 4, 1);
+  le::store64(s + 8, journal.freshness);
+  le::store64(s + 16, journal.newest);
+  std::uint8_t mac[kSha256Size];
+  store_item_mac(key, kSealDomain, seal->store_id, out, kSealSigned, mac);
+  std::memcpy(s + 24, mac, kSealMacSize);
 }
 
-RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size) {
+RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size,
+                                    const JournalSeal* seal, std::string* distrust) {
+  const bool verify = seal != nullptr && seal->keys != nullptr;
   RestoreJournal current;
   bool found = false;
+  std::string why;
   for (const std::uint64_t offset : kRestoreJournalOffsets) {
     RestoreJournal copy;
-    if (offset + kRestoreJournalSize <= size && decode_copy(page + offset, copy) &&
-        (!found || copy.generation > current.generation)) {
+    if (offset + kRestoreJournalSize > size || !decode_copy(page + offset, copy)) continue;
+    if (verify) {
+      std::string copy_why;
+      if (offset + kRestoreJournalCopySize > size ||
+          !seal_holds(page + offset, *seal, copy.freshness, copy.newest, copy_why)) {
+        if (!copy.empty()) why = copy_why;
+        continue;
+      }
+    }
+    if (!found || copy.generation > current.generation) {
       current = copy;
       found = true;
     }
+  }
+  if (verify) {
+    if (distrust != nullptr) *distrust = found ? std::string() : why;
+    if (found || !why.empty()) return found ? current : RestoreJournal();
   }
   // The earlier versions' journal counts only in a store this version never wrote a journal
   // into (both copies blank): once it has, that journal is stale.
@@ -171,6 +236,10 @@ RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size) 
   if (!found && copies_blank &&
       kLegacyRestoreJournalOffset + kLegacyRestoreJournalSize <= size) {
     decode_legacy(page + kLegacyRestoreJournalOffset, current);
+    if (verify && !current.empty()) {
+      if (distrust != nullptr) *distrust = "it is an earlier version's, which carries no MAC";
+      return RestoreJournal();
+    }
   }
   return current;
 }

@@ -11,14 +11,21 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace symcr::detail {
 
-// The two copies, in the store's header page (its first sector), written together.
+struct KeyRing;
+
+// The two copies, in the store's header page (its first sector), written together. Each is
+// the journal (kRestoreJournalSize bytes, its own CRC) and its seal: with keys set, a MAC
+// binding it to the store and carrying its freshness value (zero without keys).
 inline constexpr std::uint64_t kRestoreJournalOffsets[2] = {128, 256};
 inline constexpr std::size_t kRestoreJournalSize = 76;
-// Where the header page's journal bytes end: one read at open covers the header and both.
-inline constexpr std::size_t kRestoreJournalEnd = 256 + kRestoreJournalSize;
+inline constexpr std::size_t kRestoreJournalSealSize = 48;
+inline constexpr std::size_t kRestoreJournalCopySize = kRestoreJournalSize + kRestoreJournalSealSize;
+// Where the header page's journal bytes end.
+inline constexpr std::size_t kRestoreJournalEnd = 256 + kRestoreJournalCopySize;
 // The single journal of stores written by earlier versions (48 bytes at 64), read when
 // neither copy holds a journal.
 inline constexpr std::uint64_t kLegacyRestoreJournalOffset = 64;
@@ -43,6 +50,11 @@ struct RestoreJournal {
   std::uint32_t fallbacks = 0;
   // The fallback depth of the program that wrote the journal: how deep its next start goes.
   std::uint32_t depth = 0;
+  // With keys: the freshness value the journal was sealed with (drawn from the store's
+  // sequence space, so that saves after it number above it), and the newest authenticated
+  // checkpoint it does not exclude that the store held when it was written; 0 without keys.
+  std::uint64_t freshness = 0;
+  std::uint64_t newest = 0;
 
   bool empty() const {
     return unconfirmed == 0 && suspect_high == 0 && given_up_through == 0 && crashed_high == 0 &&
@@ -81,13 +93,25 @@ struct RestoreJournal {
   void confirm();
 };
 
-// Encodes `journal` as one copy (kRestoreJournalSize bytes, its generation included).
-void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out);
+// How a journal is sealed and verified with keys set: the keys and the store's identity.
+struct JournalSeal {
+  const KeyRing* keys = nullptr;
+  const std::uint8_t* store_id = nullptr;  // kStoreIdSize bytes
+};
+
+// Encodes `journal` as one copy (kRestoreJournalCopySize bytes, its generation included),
+// sealed with `seal`'s signing key and journal.freshness when given, else with a blank seal.
+void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out,
+                            const JournalSeal* seal = nullptr);
 // The current journal of a store whose first `size` bytes are `page`: the copy with the
 // higher generation of those whose magic and checksum hold, else the legacy journal of a store
 // whose copies were never written, else an empty journal (a new store, or both copies damaged:
-// the restore then behaves as without the fallback).
-RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size);
+// the restore then behaves as without the fallback). With `seal` (keys set) only a copy whose
+// seal verifies counts, the legacy journal never: a journal found but not trusted reads as
+// empty, and `distrust` (when given) says why; it stays empty when nothing was passed over.
+RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size,
+                                    const JournalSeal* seal = nullptr,
+                                    std::string* distrust = nullptr);
 
 }  // namespace symcr::detail
 

@@ -47,6 +47,7 @@ const char* error_name(Error error) {
     case Error::TooLarge: return "TooLarge";
     case Error::Unauthenticated: return "Unauthenticated";
     case Error::StoreFull: return "StoreFull";
+    case Error::RolledBack: return "RolledBack";
   }
   return "Unknown";
 }

@@ -22,6 +22,7 @@
 #include "engine.hpp"
 #include "file_io.hpp"
 #include "file_system.hpp"
+#include "freshness.hpp"
 #include "little_endian.hpp"
 #include "program_schema.hpp"
 #include "record.hpp"
@@ -82,6 +83,9 @@ struct Store::Impl {
     int area = -1;
     std::uint64_t offset = 0;    // of the slot in the file
     std::uint32_t capacity = 0;  // bytes a record there may have
+    // Valid with keys set: the journal freshness the record was saved under.
+    std::uint64_t journal_freshness = 0;
+    std::string unauthenticated;  // Unauthenticated: why
   };
 
   std::string path;
@@ -119,17 +123,141 @@ struct Store::Impl {
   // Per slot, during save(): whether the crash-loop fallback may still restore it.
   std::vector<std::uint8_t> needed_by_fallback;
 
+  // Authentication and freshness (docs/threat-model.md). `keys`: the snapshot of the operation
+  // under way (one per save, restore or confirm); the scan's slot states hold for `scanned_with`.
+  detail::KeySnapshot keys;
+  const detail::KeyRing* scanned_with = nullptr;
+  const detail::KeyRing* journal_read_with = nullptr;
+  std::uint8_t store_id[detail::kStoreIdSize] = {};
+  std::uint8_t own_digest[detail::kSha256Size] = {};
+  FreshnessCounter* counter = nullptr;
+  std::unique_ptr<detail::FileFreshnessCounter> own_counter;
+  std::uint64_t counter_value = 0;  // the counter as last read or advanced
+  // Why the journal in the file was not trusted (keys set), for the next restore's report.
+  std::string journal_distrust;
+
+  void take_keys() {
+    keys = detail::current_keys();
+    if (own_counter) own_counter->use_keys(keys.get());
+  }
+
+  detail::JournalSeal journal_seal() const {
+    detail::JournalSeal seal;
+    seal.keys = keys.get();
+    seal.store_id = store_id;
+    return seal;
+  }
+
+  // Advances the counter to `value` (keys set), keeping `counter_value` in step.
+  Status advance_counter(std::uint64_t value) {
+    if (!keys || counter == nullptr) return Status();
+    Status status = counter->advance(value);
+    if (!status.ok()) {
+      return Status(status.error(), "%s: the freshness counter was not advanced to %llu: %s",
+                    path.c_str(), static_cast<unsigned long long>(value), status.message());
+    }
+    counter_value = std::max(counter_value, value);
+    return Status();
+  }
+
+  // With keys set: RolledBack unless the store is as fresh as its counter (freshness_verdict;
+  // the crash-loop fallback may then still restore an older checkpoint, as the authenticated
+  // journal directs).
+  Status check_freshness() {
+    if (!keys || counter == nullptr) return Status();
+    const std::uint64_t newest = newest_authentic_sequence();
+    std::uint64_t counted = 0;
+    Status read = counter->read(counted);
+    if (!read.ok()) {
+      if (newest == 0 && journal.freshness == 0) return Status();  // nothing to roll back
+      return Status(read.error() == Error::Io ? Error::Io : Error::RolledBack,
+                    "%s: %s, and the store holds authenticated checkpoints, so their freshness "
+                    "cannot be told: nothing restored (the next save sets the counter again)",
+                    path.c_str(), read.message());
+    }
+    counter_value = std::max(counter_value, counted);
+    return freshness_against(counted);
+  }
+
+  // The sequences of the authenticated (with keys set: every Valid) slots.
+  std::vector<std::uint64_t> authentic_sequences() const {
+    std::vector<std::uint64_t> sequences;
+    for (const Slot& slot : slots) {
+      if (slot.state == StoreSlotState::Valid) sequences.push_back(slot.sequence);
+    }
+    return sequences;
+  }
+  std::uint64_t newest_authentic_sequence() const {
+    const std::vector<std::uint64_t> sequences = authentic_sequences();
+    return sequences.empty() ? 0 : *std::max_element(sequences.begin(), sequences.end());
+  }
+  // restore_latest()'s freshness rule for the store as this Store sees it.
+  Status freshness_against(std::uint64_t counted) const {
+    const std::vector<std::uint64_t> sequences = authentic_sequences();
+    const std::uint64_t newest =
+        sequences.empty() ? 0 : *std::max_element(sequences.begin(), sequences.end());
+    return detail::freshness_verdict(path.c_str(), newest,
+                                     detail::newest_allowed(sequences, journal), journal, counted);
+  }
+
+  // Reads the journal as empty, `why` it is not trusted, keeping `floor` as its freshness: the
+  // checkpoints saved from now on carry it, so that the distrusted journal put back again is
+  // still older than they were saved under (an empty journal excludes nothing, so ignoring one
+  // never restores an older state).
+  void distrust_journal(const char* why, std::uint64_t floor) {
+    journal_distrust = why;
+    const std::uint64_t generation = recorded.generation;
+    journal = detail::RestoreJournal();
+    journal.generation = generation;
+    journal.freshness = floor;
+    recorded = journal;
+  }
+
+  // With keys set, a journal older than the one the newest authenticated checkpoint was saved
+  // under is an older copy put back.
+  void distrust_stale_journal() {
+    if (!keys) return;
+    std::uint64_t newest = 0, saved_under = 0;
+    for (const Slot& slot : slots) {
+      if (slot.state == StoreSlotState::Valid && slot.sequence > newest) {
+        newest = slot.sequence;
+        saved_under = slot.journal_freshness;
+      }
+    }
+    if (journal.freshness < saved_under) {
+      distrust_journal("it is older than the journal the newest checkpoint was saved under (an "
+                       "older copy put back)",
+                       saved_under);
+    }
+  }
+
   // Records `journal` in the header page, unless that is what the file already holds: in both
   // copies, with one write (both lie in the file's first sector). Cut short, in address order,
   // that write leaves one copy of the previous journal or of the new one; and one copy damaged
   // later leaves the current journal in the other.
+  // With keys set, the journal is sealed with a MAC and a freshness value above every
+  // sequence and value before it, and the counter is advanced to that value once it is written.
   Status write_journal(int fd, Durability durability) {
     if (journal.same_state(recorded)) return Status();
     journal.generation = recorded.generation + 1;
+    if (keys) {
+      const std::uint64_t fresh =
+          std::max({highest_known_sequence(), counter_value, recorded.freshness}) + 1;
+      if (fresh > detail::kMaxRecordSequence) {
+        return Status(Error::Corrupt, "%s: the store's sequence numbers are exhausted",
+                      path.c_str());
+      }
+      journal.freshness = fresh;
+      journal.newest = detail::newest_allowed(authentic_sequences(), journal);
+    } else {
+      journal.freshness = 0;
+      journal.newest = 0;
+    }
+    const detail::JournalSeal seal = journal_seal();
     constexpr std::uint64_t kFirst = detail::kRestoreJournalOffsets[0];
     std::uint8_t bytes[detail::kRestoreJournalEnd - kFirst] = {};
     for (const std::uint64_t copy : detail::kRestoreJournalOffsets) {
-      detail::encode_restore_journal(journal, bytes + (copy - kFirst));
+      detail::encode_restore_journal(journal, bytes + (copy - kFirst), &seal);
     }
     Status status = detail::pwrite_all(fd, bytes, sizeof bytes, static_cast<off_t>(kFirst),
                                        path.c_str());
@@ -137,8 +265,10 @@ struct Store::Impl {
         detail::file_system().fdatasync(fd) != 0) {
       status = detail::io_error("cannot fdatasync", path.c_str(), errno);
     }
-    if (status.ok()) recorded = journal;
-    return status;
+    if (!status.ok()) return status;
+    recorded = journal;
+    journal_distrust.clear();
+    return advance_counter(journal.freshness);
   }
 
   // The slots no restore could use, for the report (a slot found unauthenticated is listed
@@ -156,6 +286,9 @@ struct Store::Impl {
         case StoreSlotState::FutureVersion:
           reason = "written by a newer record format";
           break;
+        case StoreSlotState::Unauthenticated:
+          reason = slots[i].unauthenticated.c_str();
+          break;
         default:
           break;
       }
@@ -164,13 +297,18 @@ struct Store::Impl {
   }
 
   // `page`: the first `size` bytes of the file.
+  // With keys set, only a journal whose seal verifies for this store is adopted.
   void adopt_journal(const std::uint8_t* page, std::size_t size) {
-    journal = page != nullptr ? detail::read_restore_journal(page, size) : detail::RestoreJournal();
+    const detail::JournalSeal seal = journal_seal();
+    journal_read_with = keys.get();
+    journal_distrust.clear();
+    journal = page != nullptr ? detail::read_restore_journal(page, size, &seal, &journal_distrust)
+                              : detail::RestoreJournal();
     recorded = journal;
   }
 
   Status read_journal(int fd) {
-    std::uint8_t page[detail::kRestoreJournalEnd] = {};
+    std::uint8_t page[detail::kStoreHeaderPageRead] = {};
     std::size_t got = 0;
     Status status = detail::pread_full(fd, page, sizeof page, 0, got, path.c_str());
     if (status.ok()) adopt_journal(page, got);
@@ -180,7 +318,7 @@ struct Store::Impl {
   // The highest sequence the store holds (in any record that is intact, restorable or not) or
   // its journal names: a new checkpoint is numbered above it.
   std::uint64_t highest_known_sequence() const {
-    std::uint64_t highest = journal.highest_sequence();
+    std::uint64_t highest = std::max(journal.highest_sequence(), journal.freshness);
     for (const Slot& slot : slots) highest = std::max(highest, slot.sequence);
     return highest;
   }
@@ -277,15 +415,38 @@ struct Store::Impl {
     if (!status.ok()) return status;
     slot.state = read.state;
     slot.area = read.area;
-    // An intact record of an unknown schema still holds its number: saves number above it.
-    const bool intact =
-        read.state == StoreSlotState::Valid || read.state == StoreSlotState::UnknownSchema;
-    slot.sequence = intact ? view.header.sequence : 0;
+    slot.unauthenticated.clear();
+    slot.journal_freshness = 0;
+    // With keys set, only an authenticated record counts: one whose MAC (for this store, this
+    // slot and its schema's bytes) does not verify is passed over and never numbered above.
+    if (keys && read.state == StoreSlotState::Valid) {
+      detail::RecordBinding binding;
+      std::memcpy(binding.store_id, store_id, sizeof store_id);
+      binding.location = slots[i].offset;
+      std::memcpy(binding.schema_digest, areas[read.area].digest, sizeof binding.schema_digest);
+      const Status authenticated =
+          detail::check_authentication(keys.get(), slot_bytes.data(), view, binding);
+      if (!authenticated.ok()) {
+        slot.state = StoreSlotState::Unauthenticated;
+        slot.area = -1;
+        slot.unauthenticated = authenticated.message();
+      } else {
+        slot.journal_freshness = view.header.journal_freshness;
+      }
+    }
+    // An intact record of an unknown schema still holds its number: saves number above it
+    // (unless keys are set: its MAC cannot be checked without its schema).
+    const bool intact = read.state == StoreSlotState::Valid ||
+                        (!keys && read.state == StoreSlotState::UnknownSchema);
+    slot.sequence = intact && slot.state != StoreSlotState::Unauthenticated
+                        ? view.header.sequence
+                        : 0;
     return Status();
   }
 
   Status scan_slots(int fd) {
     newest_scanned = -1;
+    scanned_with = keys.get();
     for (std::uint32_t i = 0; i < slots.size(); ++i) {
       Status status = read_slot(fd, i, slots[i]);
       if (!status.ok()) return status;
@@ -364,6 +525,7 @@ struct Store::Impl {
     areas[target].valid = true;
     areas[target].hash = blob.hash;
     areas[target].size = static_cast<std::uint32_t>(blob.size);
+    std::memcpy(areas[target].digest, own_digest, sizeof own_digest);
     own_area = target;
     return Status();
   }
@@ -396,14 +558,33 @@ struct Store::Impl {
   }
 
   // Adds the journal the file holds to `copies`, both of them (encoded into `buffer`,
-  // kRestoreJournalSize bytes): the crash-loop fallback's memory, and the sequences it names,
+  // kRestoreJournalCopySize bytes, sealed with keys set): the crash-loop fallback's memory, and the sequences it names,
   // move with the store.
   void add_journal_copy(std::vector<Copy>& copies, std::uint8_t* buffer) const {
-    if (recorded.empty()) return;
-    detail::encode_restore_journal(recorded, buffer);
+    if (recorded.empty() && recorded.freshness == 0) return;
+    const detail::JournalSeal seal = journal_seal();
+    detail::encode_restore_journal(recorded, buffer, &seal);
     for (const std::uint64_t offset : detail::kRestoreJournalOffsets) {
-      copies.push_back({offset, buffer, detail::kRestoreJournalSize});
+      copies.push_back({offset, buffer, detail::kRestoreJournalCopySize});
     }
+  }
+
+  // Adds the store's identity (encoded into `buffer`, kStoreIdBlockSize bytes) to `copies`.
+  void add_store_id(std::vector<Copy>& copies, std::uint8_t* buffer) const {
+    detail::encode_store_id(store_id, buffer);
+    copies.push_back({detail::kStoreIdOffset, buffer, detail::kStoreIdBlockSize});
+  }
+
+  // The signing of a record for the slot at `offset` (keys set).
+  detail::RecordSigning signing_for(std::uint64_t offset, detail::RecordBinding& binding) const {
+    std::memcpy(binding.store_id, store_id, sizeof store_id);
+    binding.location = offset;
+    std::memcpy(binding.schema_digest, own_digest, sizeof own_digest);
+    detail::RecordSigning signing;
+    signing.keys = keys.get();
+    signing.binding = &binding;
+    signing.journal_freshness = journal.freshness;
+    return signing;
   }
 
   // Adopts `g` for a file just initialised with nothing in it but the journal.
@@ -475,6 +656,20 @@ struct Store::Impl {
       }
       kept.emplace_back(slot_bytes.begin(),
                         slot_bytes.begin() + static_cast<std::ptrdiff_t>(view.record_size));
+      if (keys) {
+        // Verified where it was (read_slot): signed again for the slot it moves to, with its
+        // area's schema digest and the journal freshness it was saved under.
+        detail::RecordBinding binding;
+        std::memcpy(binding.store_id, store_id, sizeof store_id);
+        binding.location = target.slot_offset(carried);
+        std::memcpy(binding.schema_digest, areas[reread.area].digest,
+                    sizeof binding.schema_digest);
+        detail::RecordSigning signing;
+        signing.keys = keys.get();
+        signing.binding = &binding;
+        signing.journal_freshness = view.header.journal_freshness;
+        detail::reseal_record(kept.back().data(), kept.back().size(), signing);
+      }
       ++carried;
     }
     std::size_t next = 0;
@@ -486,8 +681,10 @@ struct Store::Impl {
     for (std::uint32_t slot = 0; next < kept.size(); ++next, ++slot) {
       copies.push_back({target.slot_offset(slot), kept[next].data(), kept[next].size()});
     }
-    std::uint8_t journal_copy[detail::kRestoreJournalSize];
+    std::uint8_t journal_copy[detail::kRestoreJournalCopySize];
     add_journal_copy(copies, journal_copy);
+    std::uint8_t id_copy[detail::kStoreIdBlockSize];
+    add_store_id(copies, id_copy);
 
     char temp[PATH_MAX];
     int new_fd = -1;
@@ -756,13 +953,33 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
   const StoreGeometry wanted =
       detail::store_geometry_for(options.slots, options.slot_size, blob.size);
 
-  // One read for the header and the restore journal after it.
-  std::uint8_t header[detail::kRestoreJournalEnd] = {};
+  // One read for the header, the restore journal and the store's identity after it.
+  std::uint8_t header[detail::kStoreHeaderPageRead] = {};
   std::size_t got = 0;
   status = detail::pread_full(fd, header, sizeof header, 0, got, path);
   if (!status.ok()) return creation_failed(status);
   impl.fallback_depth = writable ? options.fallback_depth : 0;
   impl.allow_unrecorded_restore = options.allow_unrecorded_restore;
+  // A store without an identity (new, or written by an earlier version) gets one before this
+  // Store writes anything into it; one opened read-only keeps the all-zero identity.
+  bool id_whole = false;
+  const bool id_missing = !detail::read_store_id(header, got, impl.store_id, &id_whole);
+  if (id_missing && can_write) detail::new_store_id(impl.store_id);
+  detail::schema_digest(blob.data, blob.size, impl.own_digest);
+  impl.take_keys();
+  if (options.freshness_counter != nullptr) {
+    impl.counter = options.freshness_counter;
+  } else {
+    impl.own_counter.reset(new detail::FileFreshnessCounter(
+        options.counter_path != nullptr ? std::string(options.counter_path)
+                                        : std::string(path) + ".fresh",
+        impl.store_id, options.durability));
+    impl.own_counter->use_keys(impl.keys.get());
+    impl.counter = impl.own_counter.get();
+  }
+  // Read for numbering; checked again by each restore.
+  const Status counter_read =
+      impl.keys ? impl.counter->read(impl.counter_value) : Status(Error::NoValidSlot, "no keys");
   impl.adopt_journal(header, got);
   got = std::min(got, detail::kStoreHeaderSize);
   Status header_status;
@@ -786,13 +1003,25 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
   if (needs_initialising) {
     if (!can_write) return Status(Error::NoValidSlot, "%s holds no store", path);
     std::vector<Impl::Copy> copies;
-    std::uint8_t journal_copy[detail::kRestoreJournalSize];
+    std::uint8_t journal_copy[detail::kRestoreJournalCopySize];
     impl.add_journal_copy(copies, journal_copy);
+    std::uint8_t id_copy[detail::kStoreIdBlockSize];
+    impl.add_store_id(copies, id_copy);
     status = impl.initialise(fd, path, wanted, copies);
     if (status.ok() && created) status = detail::sync_parent_directory(path);
     if (!status.ok()) return creation_failed(status);
     impl.become_empty(wanted);
   } else if (header_status.ok()) {
+    if (!id_whole && can_write) {  // a new identity, or a damaged copy written again
+      std::uint8_t id_copy[detail::kStoreIdBlockSize];
+      detail::encode_store_id(impl.store_id, id_copy);
+      status = detail::pwrite_all(fd, id_copy, sizeof id_copy,
+                                  static_cast<off_t>(detail::kStoreIdOffset), path);
+      if (status.ok() && detail::file_system().fdatasync(fd) != 0) {
+        status = detail::io_error("cannot fdatasync", path, errno);
+      }
+      if (!status.ok()) return status;
+    }
     status = impl.load_areas(fd, schema);
     if (status.ok()) status = impl.scan_slots(fd);  // slots past a truncation read as empty
     if (!status.ok()) return status;
@@ -813,6 +1042,14 @@ Status Store::open_descriptor(const char* path, const Schema& schema, const Stor
     if (!status.ok()) return status;
   }
   impl.own_area = impl.area_for_hash(blob.hash);
+  impl.distrust_stale_journal();
+  if (impl.keys && can_write && impl.read_only_reason.empty() && !counter_read.ok() &&
+      impl.newest_authentic_sequence() == 0 && impl.journal.freshness == 0) {
+    // Nothing authenticated yet: the counter is created now, before the first checkpoint, so
+    // that a crash while it is first written never leaves a checkpoint without a counter. A
+    // counter that cannot be written yet is reported by the first save.
+    (void)impl.advance_counter(impl.highest_known_sequence());
+  }
   impl.scan_current = impl.newest_scanned >= 0 || impl.newest_valid_slot() < 0;
   if (impl.newest_scanned >= 0) {
     // A build opens its store while it initialises and restores where time counts (a restore
@@ -836,19 +1073,37 @@ Status Store::save() {
   if (!impl.read_only_reason.empty()) {
     return Status(Error::Io, "%s", impl.read_only_reason.c_str());
   }
-  // Above every sequence the store holds or its journal names, so that no older record and no
-  // exclusion can outrank or cover it.
-  const std::uint64_t newest = std::max(last_sequence_, impl.highest_known_sequence());
-  if (newest == UINT64_MAX) {
+  // One key set for the whole save; slot states found with another are found again.
+  impl.take_keys();
+  if (impl.scanned_with != impl.keys.get() && impl.geometry.slot_count != 0) {
+    Status rescan = impl.scan_slots(fd_);
+    if (!rescan.ok()) return rescan;
+  }
+  // A save into a store older than its counter (keys set) does not trust its journal: saved
+  // under the counter's value, the new checkpoint makes the old journal stale for good.
+  if (impl.keys && !impl.freshness_against(impl.counter_value).ok()) {
+    impl.distrust_journal("it is older than the freshness counter (an older copy put back)",
+                          std::max(impl.counter_value, impl.journal.freshness) + 1);
+  }
+  // Above every sequence the store holds (authenticated, with keys set), its journal names and
+  // the freshness counter has seen, so that no older record and no exclusion can outrank or
+  // cover it.
+  const std::uint64_t newest =
+      std::max({last_sequence_, impl.highest_known_sequence(), impl.keys ? impl.counter_value : 0});
+  if (newest >= detail::kMaxRecordSequence) {
     return Status(Error::Corrupt,
-                  "%s: the store's sequence numbers are exhausted (a record or the journal names "
-                  "sequence 2^64-1, which only damage or forgery produce); nothing was written: "
-                  "save into a new store",
-                  impl.path.c_str());
+                  "%s: the store's sequence numbers are exhausted (a record, the journal or the "
+                  "freshness counter names sequence %llu, which only damage or forgery "
+                  "produce); nothing was written: save into a new store",
+                  impl.path.c_str(), static_cast<unsigned long long>(newest));
   }
   const std::uint64_t sequence = newest + 1;
   impl.scan_current = false;
-  Status status = detail::encode_record(*schema_, /*inline_schema=*/false, sequence, impl.record);
+  // With keys, the header is laid out for a MAC made once the slot is chosen.
+  detail::RecordSigning deferred;
+  deferred.keys = impl.keys.get();
+  Status status = detail::encode_record(*schema_, /*inline_schema=*/false, sequence, impl.record,
+                                        &deferred);
   if (!status.ok()) return status;
   if (impl.geometry_pending) {
     status = impl.apply_requested_geometry(fd_, *schema_);
@@ -878,6 +1133,11 @@ Status Store::save() {
                   impl.fallback_depth + 2);
   }
   Impl::Slot& slot = impl.slots[static_cast<std::size_t>(target)];
+  if (impl.keys) {
+    detail::RecordBinding binding;
+    detail::reseal_record(impl.record.data(), impl.record.size(),
+                          impl.signing_for(slot.offset, binding));
+  }
   slot.state = StoreSlotState::Corrupt;  // until the write completes
   slot.area = -1;
   status = detail::pwrite_all(fd_, impl.record.data(), impl.record.size(),
@@ -886,11 +1146,17 @@ Status Store::save() {
   slot.state = StoreSlotState::Valid;
   slot.sequence = sequence;
   slot.area = impl.own_area;
+  slot.journal_freshness = impl.keys ? impl.journal.freshness : 0;
   last_sequence_ = sequence;
   if (options_.durability == Durability::Fdatasync && detail::file_system().fdatasync(fd_) != 0) {
     return detail::io_error("cannot fdatasync", impl.path.c_str(), errno);
   }
-  return Status();
+  // After the record: a crash in between leaves the counter one save behind, never ahead. A
+  // checkpoint saved while a restore waits for confirm() is suspect to the crash-loop fallback
+  // until then, and the slot it is in may be the next save's (slot_to_overwrite): the counter
+  // passes it when confirm() writes the journal.
+  if (impl.journal.unconfirmed != 0) return Status();
+  return impl.advance_counter(sequence);
 }
 
 namespace {
@@ -906,6 +1172,7 @@ Status Store::confirm() {
   if (!is_open()) return Status(Error::Io, "the store is not open");
   Impl& impl = *impl_;
   if (!impl.unconfirmed_is_ours) return Status();  // nothing this Store restored waits for it
+  impl.take_keys();
   impl.journal.confirm();
   Status status = impl.write_journal(fd_, options_.durability);
   if (status.ok()) impl.unconfirmed_is_ours = false;
@@ -919,13 +1186,31 @@ Report Store::restore_latest(const RestoreOptions& options) {
     return report;
   }
   Impl& impl = *impl_;
-  // A store opened read-only may have been written by its owner since the scan.
+  // A store opened read-only may have been written by its owner since the scan; one scanned
+  // with other keys is scanned again with the keys of this restore.
+  impl.take_keys();
   Status status;
-  if (!impl.scan_current || !impl.read_only_reason.empty()) status = impl.scan_slots(fd_);
-  if (status.ok() && !impl.read_only_reason.empty()) status = impl.read_journal(fd_);
+  if (!impl.scan_current || !impl.read_only_reason.empty() ||
+      impl.scanned_with != impl.keys.get()) {
+    status = impl.scan_slots(fd_);
+  }
+  if (status.ok() && (!impl.read_only_reason.empty() || (impl.journal_read_with != impl.keys.get() && !impl.unconfirmed_is_ours))) {
+    status = impl.read_journal(fd_);
+    if (status.ok()) impl.distrust_stale_journal();
+  }
   impl.scan_current = false;
   if (!status.ok()) {
     detail::ReportAccess::set_status(report, status);
+    return report;
+  }
+  // Freshness first: a rolled-back store is refused before anything (the journal included) is
+  // written; the report lists the slots that could not count, and why.
+  status = impl.check_freshness();
+  if (!status.ok()) {
+    detail::ReportAccess::set_status(report, status);
+    std::vector<SkippedCheckpoint> unusable;
+    impl.list_unrestorable_slots(unusable);
+    detail::ReportAccess::skipped(report) = std::move(unusable);
     return report;
   }
   impl.newest_first.clear();
@@ -940,6 +1225,14 @@ Report Store::restore_latest(const RestoreOptions& options) {
             [&impl](std::uint32_t a, std::uint32_t b) {
               return impl.slots[a].sequence > impl.slots[b].sequence;
             });
+
+  // A journal not trusted (keys set) was read as empty; the report says so, whatever happens.
+  const std::string journal_distrust =
+      impl.journal_distrust.empty()
+          ? std::string()
+          : "the store's restore journal was not trusted and was read as empty: " +
+                impl.journal_distrust +
+                "; the crash-loop fallback starts afresh from the newest checkpoint";
 
   // Crash-loop fallback: a restore recorded by an earlier start and never confirmed makes its
   // checkpoint and the newer ones suspect; past the depth, the fallback gives up on them all.
@@ -983,7 +1276,6 @@ Report Store::restore_latest(const RestoreOptions& options) {
       continue;
     }
     const detail::RecordView* record = &impl.newest_view;
-    const std::uint8_t* bytes = impl.newest_bytes.data();
     int area_index = impl.slots[i].area;
     if (static_cast<int>(i) != impl.newest_scanned) {  // a fallback: read it again
       Impl::Slot reread;
@@ -993,20 +1285,17 @@ Report Store::restore_latest(const RestoreOptions& options) {
         return report;
       }
       if (reread.state != StoreSlotState::Valid) {
-        skip(skipped, i, sequence, "changed since it was validated, and no longer validates");
+        impl.slots[i].state = reread.state;
+        impl.slots[i].unauthenticated = reread.unauthenticated;
+        if (reread.state != StoreSlotState::Unauthenticated) {
+          skip(skipped, i, sequence, "changed since it was validated, and no longer validates");
+        }
         continue;
       }
       record = &impl.view;
-      bytes = impl.slot_bytes.data();
       area_index = reread.area;
     }
-    // Only the slot about to be restored needs its MAC checked (with the keys set now).
-    Status authenticated = detail::check_authentication(bytes, *record);
-    if (!authenticated.ok()) {
-      impl.slots[i].state = StoreSlotState::Unauthenticated;
-      skip(skipped, i, sequence, authenticated.message());
-      continue;
-    }
+    // With keys set, read_slot verified its MAC: only authenticated slots are Valid.
     if (recording) {
       // Recorded before the state is touched: a crash during or after the restore is seen by
       // the next start. A restore that cannot be recorded is not applied.
@@ -1034,6 +1323,7 @@ Report Store::restore_latest(const RestoreOptions& options) {
                         "; if the restored state crashes the program, the next start restores "
                         "it again");
       }
+      if (!journal_distrust.empty()) detail::ReportAccess::warn(report, journal_distrust);
       impl.list_unrestorable_slots(skipped);
       detail::ReportAccess::skipped(report) = std::move(skipped);
       return report;
@@ -1085,6 +1375,7 @@ Report Store::restore_latest(const RestoreOptions& options) {
                unauthenticated, suspect, rejected, rejected ? ": " : "",
                rejected ? last_rejection.message() : ""));
   }
+  if (!journal_distrust.empty()) detail::ReportAccess::warn(report, journal_distrust);
   impl.list_unrestorable_slots(skipped);
   detail::ReportAccess::skipped(report) = std::move(skipped);
   return report;

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <numeric>
 
+#include "authentication.hpp"
 #include "crc32c.hpp"
 #include "file_io.hpp"
 #include "little_endian.hpp"
@@ -130,6 +131,7 @@ Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint
   area.valid = true;
   area.hash = hash;
   area.size = size;
+  schema_digest(bytes.data(), size, area.digest);
   return Status();
 }
 
@@ -185,6 +187,15 @@ Status read_store_slot(int fd, const char* path, std::uint64_t offset, std::uint
     out.state = parsed.error() == Error::FutureVersion ? StoreSlotState::FutureVersion
                                                        : StoreSlotState::Corrupt;
     if (problem) *problem = parsed;
+    return Status();
+  }
+  if (view.header.sequence > kMaxRecordSequence) {
+    out.state = StoreSlotState::Corrupt;
+    if (problem) {
+      *problem = Status(Error::Corrupt,
+                        "sequence %llu is beyond the store's range (2^63-1): damage or forgery",
+                        static_cast<unsigned long long>(view.header.sequence));
+    }
     return Status();
   }
   if (view.schema != nullptr) {  // store records reference their schema; never inline

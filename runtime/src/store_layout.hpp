@@ -56,6 +56,7 @@ struct StoreSchemaArea {
   bool valid = false;  // CRC, hash and schema all hold
   std::uint64_t hash = 0;
   std::uint32_t size = 0;  // bytes of serialised schema
+  std::uint8_t digest[32] = {};  // SHA-256 of those bytes: what a record's MAC binds
   // The area's schema: the opening build's own when the area holds exactly its serialised form
   // (then nothing is parsed), else parsed and shared with the plans built from it, which may
   // outlive the store.
@@ -75,8 +76,9 @@ enum class StoreSlotState : std::uint8_t {
   Corrupt,        // torn or damaged record
   UnknownSchema,  // the record is intact but no valid area holds its schema
   FutureVersion,  // written by a newer record format
-  // Valid, but its MAC is missing or does not verify with the program's keys: found when the
-  // slot is about to be restored (the scan checks no MAC; only the restored slot's is needed).
+  // Valid, but its MAC is missing or does not verify with the program's keys (for its store,
+  // its slot and its schema): with keys set, every scan checks every slot's MAC, so that an
+  // unauthenticated slot never counts.
   Unauthenticated,
 };
 const char* store_slot_state_name(StoreSlotState state);

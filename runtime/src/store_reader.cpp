@@ -8,8 +8,10 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstring>
 
 #include "file_io.hpp"
+#include "freshness.hpp"
 
 namespace symcr::detail {
 
@@ -26,11 +28,16 @@ Status StoreReader::open(const char* path) {
   if (::fstat(fd_, &info) != 0) return io_error("cannot stat", path, errno);
   if (!S_ISREG(info.st_mode)) return Status(Error::Io, "%s is not a regular file", path);
 
-  std::uint8_t header[kRestoreJournalEnd] = {};
+  std::uint8_t header[kStoreHeaderPageRead] = {};
   std::size_t got = 0;
   Status status = pread_full(fd_, header, sizeof header, 0, got, path);
   if (!status.ok()) return status;
-  journal_ = read_restore_journal(header, got);
+  read_store_id(header, got, store_id_);
+  const KeySnapshot keys = current_keys();
+  JournalSeal seal;
+  seal.keys = keys.get();
+  seal.store_id = store_id_;
+  journal_ = read_restore_journal(header, got, &seal, &journal_distrust_);
   status = decode_store_header(header, std::min<std::size_t>(got, kStoreHeaderSize), path,
                                geometry_);
   if (!status.ok()) return status;
@@ -67,6 +74,26 @@ Status StoreReader::classify_slot(std::uint32_t index, std::vector<std::uint8_t>
     slot.header = view.header;
   }
   return Status();
+}
+
+RecordBinding StoreReader::binding(std::uint32_t index, int area) const {
+  RecordBinding binding;
+  std::memcpy(binding.store_id, store_id_, sizeof store_id_);
+  binding.location = geometry_.slot_offset(index);
+  if (area >= 0) std::memcpy(binding.schema_digest, areas_[area].digest, kSha256Size);
+  return binding;
+}
+
+Status StoreReader::check_freshness(std::uint64_t counter_value,
+                                    const std::vector<bool>& authentic) const {
+  std::vector<std::uint64_t> sequences;
+  for (std::uint32_t i = 0; i < slots_.size() && i < authentic.size(); ++i) {
+    if (authentic[i]) sequences.push_back(slots_[i].header.sequence);
+  }
+  const std::uint64_t newest =
+      sequences.empty() ? 0 : *std::max_element(sequences.begin(), sequences.end());
+  return freshness_verdict("the store", newest, newest_allowed(sequences, journal_), journal_,
+                           counter_value);
 }
 
 std::vector<std::uint32_t> StoreReader::valid_slots_newest_first() const {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "authentication.hpp"
 #include "engine.hpp"
 #include "record.hpp"
 #include "restore_journal.hpp"
@@ -33,14 +34,26 @@ class StoreReader {
   StoreReader& operator=(const StoreReader&) = delete;
 
   // Opens `path` read-only (never following a symlink), validates the store header and the
-  // file size, loads both schema areas and classifies every slot.
+  // file size, loads both schema areas and classifies every slot. With keys set
+  // (set_checkpoint_keys), the journal counts only when its MAC verifies for this store.
   Status open(const char* path);
 
   const StoreGeometry& geometry() const { return geometry_; }
+  const std::string& path() const { return path_; }
   const StoreSchemaArea& area(int index) const { return areas_[index]; }
   const std::vector<StoreSlot>& slots() const { return slots_; }
-  // The crash-loop fallback's journal as the store holds it (empty when it has none).
+  // The crash-loop fallback's journal as the store holds it (empty when it has none, or, with
+  // keys set, when it is not trusted: then journal_distrust() says why).
   const RestoreJournal& journal() const { return journal_; }
+  const std::string& journal_distrust() const { return journal_distrust_; }
+  // The store's identity (all zero when it has none) and what a record in slot `index`, of
+  // schema area `area`, is bound to.
+  const std::uint8_t* store_id() const { return store_id_; }
+  RecordBinding binding(std::uint32_t index, int area) const;
+  // The freshness check of restore_latest() (keys set) against `counter_value`, given the
+  // slots whose MAC verified (`authentic`, per slot): RolledBack when the newest of them and
+  // the journal are older.
+  Status check_freshness(std::uint64_t counter_value, const std::vector<bool>& authentic) const;
   // The highest sequence an intact record (restorable or not) holds or the journal names: what
   // a start that opens the store takes as its newest sequence.
   std::uint64_t highest_known_sequence() const;
@@ -68,6 +81,8 @@ class StoreReader {
   StoreSchemaArea areas_[2];
   std::vector<StoreSlot> slots_;
   RestoreJournal journal_;
+  std::string journal_distrust_;
+  std::uint8_t store_id_[kStoreIdSize] = {};
 };
 
 }  // namespace symcr::detail

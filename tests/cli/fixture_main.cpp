@@ -15,6 +15,9 @@
 //   fixture rotated-store <path>           4-slot store in the middle of a key rotation: two
 //                                           saves signed with key id 7 ("fixture-key"), then
 //                                           two with id 8 ("another-key") holding 7 as well
+//   fixture signed-store <path> <saves>    <saves> more saves into a store (created if
+//                                           missing), authenticated with key id 7: its
+//                                           freshness counter is <path>.fresh
 //   fixture flip-resign <path> <offset>     invert one byte of a single-file checkpoint, then
 //                                           fix its schema hash and checksum: a hostile file
 //                                           that passes the integrity checks
@@ -161,6 +164,13 @@ int main(int argc, char** argv) {
     return save_into_store(path, number);
   }
   if (std::strcmp(command, "rotated-store") == 0) return rotated_store(path);
+  if (std::strcmp(command, "signed-store") == 0) {
+    static const std::uint8_t key[] = {'f', 'i', 'x', 't', 'u', 'r', 'e', '-', 'k', 'e', 'y'};
+    const symcr::CheckpointKey fixture_key{7, key, sizeof key};
+    const symcr::Status keyed = symcr::set_checkpoint_keys(&fixture_key, 1);
+    if (!keyed.ok()) return fail("keys", keyed);
+    return save_into_store(path, number);
+  }
   if (std::strcmp(command, "restore-unconfirmed") == 0) {
     symcr::StoreOptions options;
     options.slots = 4;

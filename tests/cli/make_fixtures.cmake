@@ -41,6 +41,14 @@ run(${V0} store ${DIR}/gave-up.store 6)
 run(${V0} restore-unconfirmed ${DIR}/gave-up.store 5)
 # Sequences 1-2 signed with key id 7, 3-4 with id 8 (keys: fixture.key, other.key).
 run(${V0} rotated-store ${DIR}/rotated.store)
+# An authenticated store (key id 7) copied back after two more saves: older than its counter.
+run(${V0} signed-store ${DIR}/rolled-back.store 2)
+file(COPY_FILE ${DIR}/rolled-back.store ${DIR}/rolled-back.old)
+run(${V0} signed-store ${DIR}/rolled-back.store 2)
+file(COPY_FILE ${DIR}/rolled-back.old ${DIR}/rolled-back.store)
+# The program's keys as a key ring file: both keys of the rotation.
+file(WRITE ${DIR}/keys.ring "# id, then the key's file (relative to this file)\n7 fixture.key\n8 other.key\n")
+file(WRITE ${DIR}/bad.ring "7fixture.key\n")
 # A store across a patch: v0 saved sequences 1-3 (schema area 0), then v1 saved 4 (area 1).
 run(${V0} store ${DIR}/patched.store 3)
 run(${V1} store-more ${DIR}/patched.store 1)

@@ -321,21 +321,42 @@ symcr_cli_test(verify_rotated_store_both_keys EXIT 0
   ARGS verify ${files}/rotated.store --key-file ${files}/fixture.key --key-id 7
        --key-file ${files}/other.key --key-id 8
   EXPECT "restore_latest +slot 3 \\(sequence 4\\)" "\nvalid\n" REJECT "unauthenticated")
+# With the old key alone the freshness counter (signed with the new one) cannot be trusted.
 symcr_cli_test(verify_rotated_store_old_key EXIT 1
   ARGS verify ${files}/rotated.store --key-file ${files}/fixture.key --key-id 7
-  EXPECT "restore_latest +slot 1 \\(sequence 2\\)"
+  EXPECT "freshness +the freshness counter .*rotated.store.fresh cannot be trusted: it is signed with key id 8"
+         "restore_latest +none"
          "\n3 +unauthenticated +4 .*key id 8, which this program does not hold"
          "\ninvalid: 2 damaged slot")
+symcr_cli_test(verify_rotated_store_key_ring EXIT 0
+  ARGS verify ${files}/rotated.store --key-ring ${files}/keys.ring
+  EXPECT "freshness +fresh: the counter .*rotated.store.fresh says 4 was written"
+         "restore_latest +slot 3 \\(sequence 4\\)" "\nvalid\n" REJECT "unauthenticated")
+symcr_cli_test(verify_bad_key_ring EXIT 2 ARGS verify ${files}/rotated.store --key-ring ${files}/bad.ring
+  EXPECT "line 1 is not \"<id> <key file>\"")
+symcr_cli_test(verify_rolled_back_store EXIT 1
+  ARGS verify ${files}/rolled-back.store --key-file ${files}/fixture.key --key-id 7
+  EXPECT "freshness +the store: rolled back: its newest authenticated checkpoint is sequence 2 .*counter says 4 was written"
+         "restore_latest +none")
+symcr_cli_test(verify_rolled_back_store_json EXIT 1 JSON
+  ARGS verify --json ${files}/rolled-back.store --key-file ${files}/fixture.key --key-id 7
+  EXPECT "\"freshness\": {[ \n]*\"rolled_back\": true")
+symcr_cli_test(inspect_store_with_another_stores_counter EXIT 2
+  ARGS inspect ${files}/rolled-back.store --key-ring ${files}/keys.ring
+       --counter ${files}/rotated.store.fresh
+  EXPECT "freshness +the freshness counter .* cannot be trusted: it is the counter of another store")
+symcr_cli_test(plan_rolled_back_store EXIT 1
+  ARGS plan ${files}/rolled-back.store --schema ${files}/v0.schema --key-ring ${files}/keys.ring
+  EXPECT "restore would fail: RolledBack: .*counter says 4 was written")
 symcr_cli_test(inspect_rotated_store_new_key EXIT 0
   ARGS inspect ${files}/rotated.store --key-id 8 --key-file ${files}/other.key
   EXPECT "restore_latest +slot 3 \\(sequence 4\\)" "\n0 +unauthenticated +1 .*key id 7"
          "copter.ticks += 1002\n")
-symcr_cli_test(plan_rotated_store_old_key EXIT 0
+symcr_cli_test(plan_rotated_store_old_key EXIT 1
   ARGS plan ${files}/rotated.store --schema ${files}/v0.schema --key-file ${files}/fixture.key
        --key-id 7
-  EXPECT "rotated.store slot 1 \\(sequence 2,"
-         "\npassed over slot 3 \\(sequence 4\\): .*key id 8, which this program does not hold"
-         "restore would succeed")
+  EXPECT "restore would fail: RolledBack: .*nothing would be restored: the freshness counter .*rotated.store.fresh cannot be trusted"
+  REJECT "restore would succeed")
 symcr_cli_test(plan_rotated_store_no_keys EXIT 0
   ARGS plan ${files}/rotated.store --schema ${files}/v0.schema
   EXPECT "rotated.store slot 3 \\(sequence 4," "restore would succeed" REJECT "passed over")

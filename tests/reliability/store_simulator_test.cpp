@@ -3,7 +3,10 @@
 // read-only file system), saves, confirm(), a second writer, a damaged byte, and a crash at any
 // mutating file call with a write torn at any byte — run by the real Store over an in-memory
 // file system (simulated_file_system.hpp), and checked after every step against a small model
-// of the guarantees docs/format.md §4 numbers S1–S8.
+// of the guarantees docs/format.md §4 numbers S1–S9. Every other sequence runs with keys set,
+// so that the freshness counter (a file beside the store, written through the same file system)
+// is crashed and torn too: S9, a restore refuses (RolledBack) exactly when the store is older
+// than its counter, and a crash never makes it so.
 //
 // SYMCR_SIM_SEQUENCES runs more sequences than the suite's default; SYMCR_SIM_SEED replays one
 // (a failure prints its seed and steps).
@@ -25,7 +28,9 @@
 #include <tuple>
 #include <vector>
 
+#include "authentication.hpp"
 #include "crc32c.hpp"
+#include "freshness.hpp"
 #include "little_endian.hpp"
 #include "record.hpp"
 #include "restore_journal.hpp"
@@ -72,7 +77,8 @@ bool state_holds(std::int64_t counter) {
 
 // What the file holds, read outside the store's code: per intact record (its CRC holds and a
 // schema area with its hash is intact), sequence -> counter.
-std::map<std::uint64_t, std::int64_t> intact_checkpoints(const std::vector<std::uint8_t>& file) {
+std::map<std::uint64_t, std::int64_t> intact_checkpoints(const std::vector<std::uint8_t>& file,
+                                                         std::uint64_t* newest_journal = nullptr) {
   std::map<std::uint64_t, std::int64_t> found;
   symcr::detail::StoreGeometry g;
   if (file.size() < symcr::detail::kStoreHeaderSize ||
@@ -100,6 +106,9 @@ std::map<std::uint64_t, std::int64_t> intact_checkpoints(const std::vector<std::
     if (!symcr::detail::parse_record(file.data() + at, room, view).ok()) continue;
     if (area_hashes.count(view.header.schema_hash) == 0 || view.payload_size < 8) continue;
     found[view.header.sequence] = static_cast<std::int64_t>(symcr::detail::le::load64(view.payload));
+    if (newest_journal != nullptr && view.header.sequence == found.rbegin()->first) {
+      *newest_journal = view.header.journal_freshness;
+    }
   }
   return found;
 }
@@ -144,7 +153,7 @@ struct Model {
 
 struct Counts {
   std::uint64_t sequences = 0, steps = 0, crashes = 0, restores = 0, fallbacks = 0,
-                refused_saves = 0;
+                refused_saves = 0, rolled_back = 0;
 };
 
 class Simulation {
@@ -154,6 +163,10 @@ class Simulation {
 
   // Runs one sequence; returns an empty string, or what broke and the steps that led there.
   std::string run(int steps) {
+    keyed_ = seed_ % 2 == 0;
+    static const std::uint8_t key[] = "simulated-key-0123456789";
+    const symcr::CheckpointKey keys{3, key, sizeof key - 1};
+    if (!symcr::set_checkpoint_keys(&keys, keyed_ ? 1 : 0).ok()) return "cannot set keys";
     depth_ = pick(0, 3);
     options_.slots = static_cast<std::uint32_t>(pick(2, 6));
     options_.slot_size = 4096;
@@ -189,6 +202,7 @@ class Simulation {
     }
     store_.reset();
     fs_.kill_process();
+    (void)symcr::set_checkpoint_keys(nullptr, 0);
     if (failure_.empty()) return std::string();
     std::ostringstream out;
     out << "seed " << seed_ << " (replay: SYMCR_SIM_SEED=" << seed_
@@ -270,8 +284,9 @@ class Simulation {
       running_ = false;
       return;
     }
-    // S6: whatever earlier crashes left, nothing but the store remains once it is open.
-    if (!read_only && fs_.names() != std::vector<std::string>{"copter.store"}) {
+    // S6: whatever earlier crashes left, nothing but the store (and its counter) remains once
+    // it is open.
+    if (!read_only && fs_.names() != expected_names()) {
       std::string names;
       for (const std::string& n : fs_.names()) names += " " + n;
       fail("S6: files left behind after open:" + names);
@@ -280,13 +295,77 @@ class Simulation {
     restore(read_only);
   }
 
+  std::vector<std::string> expected_names() const {
+    if (keyed_) return {"copter.store", "copter.store.fresh"};
+    return {"copter.store"};
+  }
+
+  // S9 (keys set): whether the store is older than its counter, judged from the files alone by
+  // the documented rule (docs/format.md §4 "Freshness").
+  bool older_than_counter() {
+    if (!keyed_) return false;
+    const std::vector<std::uint8_t> file = fs_.contents(path_);
+    std::uint64_t saved_under = 0;
+    const auto disk = intact_checkpoints(file, &saved_under);
+    const std::uint64_t newest = disk.empty() ? 0 : disk.rbegin()->first;
+    std::uint8_t id[symcr::detail::kStoreIdSize];
+    symcr::detail::read_store_id(file.data(), file.size(), id);
+    const symcr::detail::KeySnapshot keys = symcr::detail::current_keys();
+    symcr::detail::JournalSeal seal;
+    seal.keys = keys.get();
+    seal.store_id = id;
+    symcr::detail::RestoreJournal journal =
+        symcr::detail::read_restore_journal(file.data(), file.size(), &seal);
+    if (journal.freshness < saved_under) {  // stale: read as empty, at the checkpoint's floor
+      journal = symcr::detail::RestoreJournal();
+      journal.freshness = saved_under;
+    }
+    const std::vector<std::uint8_t> counter = fs_.contents(path_ + ".fresh");
+    std::uint64_t counted = 0;
+    if (!symcr::detail::decode_counter_file(counter.data(), counter.size(), id, *keys, counted)
+             .ok()) {
+      return newest != 0 || journal.freshness != 0;
+    }
+    std::vector<std::uint64_t> sequences;
+    for (const auto& [sequence, value] : disk) {
+      (void)value;
+      sequences.push_back(sequence);
+    }
+    return !symcr::detail::freshness_verdict("store", newest,
+                                             symcr::detail::newest_allowed(sequences, journal),
+                                             journal, counted)
+                .ok();
+  }
+
   void restore(bool read_only) {
     const std::map<std::uint64_t, std::int64_t> disk = on_disk();
+    const bool stale = older_than_counter();
+    stale_ = stale;
     maybe_plan_crash();
     set_state(-1);
     const symcr::Report report = store_->restore_latest();
     const bool crashed = crashed_now();
     ++counts_.restores;
+    if (stale) {
+      // S9: refused before anything is written; a save makes the store fresh again.
+      log_ << "restore -> " << symcr::error_name(report.status().error()) << " (stale)\n";
+      if (!damaged_since_save_) {
+        fail("S9: crashes alone (no damage) left the store older than its counter");
+      } else if (crashed) {
+        fail("S9: a restore of a stale store crashed: it wrote something");
+      } else if (report.status().error() != symcr::Error::RolledBack || !state_holds(-1)) {
+        fail(std::string("S9: a store older than its counter was not refused: ") +
+             (report.ok() ? "restored #" + std::to_string(report.sequence())
+                          : report.status().message()));
+      }
+      ++counts_.rolled_back;
+      return;
+    }
+    if (report.status().error() == symcr::Error::RolledBack) {
+      fail(std::string("S9: a fresh store was refused as rolled back: ") +
+           report.status().message());
+      return;
+    }
     // Each candidate model says what this start must do; keep those the store agrees with.
     std::vector<Model> next;
     for (const Model& candidate : models_) {
@@ -384,7 +463,11 @@ class Simulation {
     floor = std::max(floor, journal_floor);
     maybe_plan_crash();
     const symcr::Status saved = store_->save();
-    if (crashed_now()) return;
+    if (crashed_now()) {
+      // A save into a stale store forgets its journal; the crash may have come before or after.
+      if (stale_) models_.push_back(Model());
+      return;
+    }
     if (read_only_) {
       if (saved.error() != symcr::Error::Io) fail("a save into a read-only store did not fail");
       return;
@@ -402,6 +485,13 @@ class Simulation {
         fail("S5: save numbered #" + std::to_string(sequence) + ", not above #" +
              std::to_string(floor));
       }
+      if (stale_) {
+        // S9: the save into a store older than its counter made it fresh again, and forgot the
+        // journal it did not trust.
+        models_ = {Model()};
+        stale_ = false;
+      }
+      damaged_since_save_ = false;
       damaged_.erase(sequence);
       gone_.erase(sequence);
       for (Model& m : models_) m.abandoned.erase(sequence);  // a number reused for a new save
@@ -472,13 +562,14 @@ class Simulation {
     std::vector<std::uint8_t> file = fs_.contents(path_);
     const std::uint64_t copy0 = symcr::detail::kRestoreJournalOffsets[0];
     const std::uint64_t copy1 = symcr::detail::kRestoreJournalOffsets[1];
-    const std::size_t copy_size = symcr::detail::kRestoreJournalSize;
+    const std::size_t copy_size = symcr::detail::kRestoreJournalCopySize;
     if (pick(0, 2) == 0 && file.size() >= copy1 + copy_size &&
         std::equal(file.begin() + copy0, file.begin() + copy0 + copy_size, file.begin() + copy1)) {
       const std::uint64_t at = (pick(0, 1) == 0 ? copy0 : copy1) +
                                static_cast<std::uint64_t>(pick(0, static_cast<int>(copy_size) - 1));
       file[at] ^= static_cast<std::uint8_t>(1u << pick(0, 7));
       fs_.set_contents(path_, file);
+      damaged_since_save_ = true;
       log_ << "damage a journal copy\n";
       return;
     }
@@ -490,6 +581,7 @@ class Simulation {
     const auto before = intact_checkpoints(file);
     file[at] ^= static_cast<std::uint8_t>(1u << pick(0, 7));
     fs_.set_contents(path_, file);
+    damaged_since_save_ = true;
     const auto after = intact_checkpoints(file);
     for (const auto& [sequence, counter] : before) {
       (void)counter;
@@ -540,7 +632,7 @@ class Simulation {
     }
     // S6: between operations, nothing but the store (a read-only file system keeps what an
     // earlier crash left until a start can write again).
-    if (!read_only_ && fs_.names() != std::vector<std::string>{"copter.store"} && !fs_.names().empty()) {
+    if (!read_only_ && fs_.names() != expected_names() && !fs_.names().empty()) {
       std::string names;
       for (const std::string& n : fs_.names()) names += " " + n;
       fail("S6: a file was left behind:" + names);
@@ -561,6 +653,11 @@ class Simulation {
   bool read_only_ = false;
   bool restored_here_ = false;
   std::int64_t counter_ = 0;
+  bool keyed_ = false;
+  bool stale_ = false;  // the last restore found the store older than its counter
+  // Something was damaged from outside since the last save (a slot, or a journal copy that a
+  // torn write of the other may then take with it): the store may be older than its counter.
+  bool damaged_since_save_ = false;
   std::set<std::uint64_t> ok_saves_;
   std::set<std::uint64_t> gone_;  // Ok saves overwritten after newer ones landed
   std::set<std::uint64_t> damaged_;
@@ -585,11 +682,13 @@ TEST(StoreSimulator, RandomSequencesOfStartsSavesConfirmsCrashesAndTornWritesKee
   }
   std::printf("store simulator: %" PRIu64 " sequences, %" PRIu64 " steps, %" PRIu64
               " crash points hit (%" PRIu64 " restores checked, %" PRIu64
-              " fallback restores, %" PRIu64 " saves refused to keep the fallback's checkpoints)\n",
+              " fallback restores, %" PRIu64 " saves refused to keep the fallback's checkpoints, %"
+              PRIu64 " restores refused as rolled back)\n",
               counts.sequences, counts.steps, counts.crashes, counts.restores, counts.fallbacks,
-              counts.refused_saves);
+              counts.refused_saves, counts.rolled_back);
   EXPECT_GT(counts.crashes, sequences / 4) << "the simulator crashed too rarely to mean much";
   EXPECT_GT(counts.fallbacks, 0u);
+  EXPECT_GT(counts.rolled_back, 0u) << "no damaged newest checkpoint met the freshness check";
 }
 
 // Single faults the sequences above meet only by chance, each made to happen.

@@ -45,7 +45,8 @@ enum {
   SYMCR_ERROR_NO_VALID_SLOT = 12,
   SYMCR_ERROR_TOO_LARGE = 13,
   SYMCR_ERROR_UNAUTHENTICATED = 14,
-  SYMCR_ERROR_STORE_FULL = 15
+  SYMCR_ERROR_STORE_FULL = 15,
+  SYMCR_ERROR_ROLLED_BACK = 16
 };
 
 /* Restore decisions: the values of symcr::Decision. */
@@ -68,7 +69,9 @@ const symcr_schema* symcr_program_schema(void) __attribute__((weak));
 
 /* Authenticated checkpoints (symcr::set_checkpoint_keys): keys[0] signs every checkpoint this
  * process writes; a restore refuses (SYMCR_ERROR_UNAUTHENTICATED) one without a MAC, with a key
- * id not among `keys`, or whose MAC does not verify. The keys are copied; count 0 turns it off. */
+ * id not among `keys`, or whose MAC does not verify, and a store older than its freshness
+ * counter (SYMCR_ERROR_ROLLED_BACK; docs/threat-model.md). The keys are copied; count 0 turns
+ * it off. */
 typedef struct symcr_checkpoint_key {
   uint32_t id;
   const uint8_t* bytes;

@@ -80,6 +80,10 @@ enum class Error : std::uint8_t {
   Unauthenticated,  // keys are set and the checkpoint's MAC is missing or does not verify
   // store: every slot holds a checkpoint the crash-loop fallback needs until confirm()
   StoreFull,
+  // store, keys set: its newest authenticated checkpoint and journal are older than the store's
+  // freshness counter (an older copy of the file, or its newest checkpoints damaged or
+  // removed), or the counter is missing, forged or of another store: nothing restored
+  RolledBack,
 };
 
 const char* error_name(Error error);
@@ -200,14 +204,19 @@ struct CheckpointOptions {
   Durability durability = Durability::PageCache;
 };
 
-// Authenticated checkpoints. After set_checkpoint_keys, every checkpoint this process writes
-// (single files, buffers, store slots) carries an HMAC-SHA-256 of its header, schema and payload,
-// made with keys[0] and naming that key's id; every restore refuses (Error::Unauthenticated) a
+// Authenticated checkpoints (docs/threat-model.md). After set_checkpoint_keys, every checkpoint
+// this process writes (single files, buffers, store slots) carries an HMAC-SHA-256 of its
+// header, schema and payload, bound to its store and slot and to its schema's SHA-256, made
+// with keys[0] and naming that key's id; every restore refuses (Error::Unauthenticated) a
 // checkpoint without a MAC, with a key id not among `keys`, or whose MAC does not verify, and a
-// store passes over such a slot to an older one. The keys are copied, never written anywhere.
-// Several keys allow rotation: the new one first signs, the old ones still verify. A count of 0
-// turns authentication off. Against an attacker who can write the checkpoint file; the CRC
-// stays for accidental damage. Set the keys before checkpointing or restoring on other threads.
+// store counts such a slot for nothing. A store also keeps a freshness counter and refuses
+// (Error::RolledBack) a store older than it (FreshnessCounter, below). The keys are copied,
+// never written anywhere, and wiped once nothing uses them (an open Store keeps the set its last
+// operation took). Several keys allow
+// rotation: the new one first signs, the old ones still verify. A count of 0 turns
+// authentication off. Against an attacker who can write the checkpoint file; the CRC stays for
+// accidental damage. Keys may be set, rotated or cleared while other threads checkpoint and
+// restore: each save and restore reads one consistent set.
 struct CheckpointKey {
   std::uint32_t id;
   const std::uint8_t* bytes;
@@ -242,6 +251,24 @@ Status prepare_transfer(const Schema& from, const Schema& to);
 Report transfer(const Schema& from, const Schema& to, const RestoreOptions& options = {});
 
 // ---------------------------------------------------------------------------------------------
+// Freshness (docs/threat-model.md). With keys set, a Store keeps the newest freshness value it
+// has written (a save's sequence, or a restore journal's) in a counter outside the store file,
+// and restore_latest() refuses (Error::RolledBack, nothing written) a store whose newest
+// authenticated checkpoint and journal are both older: an older copy of the file, or its
+// newest checkpoints damaged or removed. The counter is advanced after every save and every
+// journal write. By default it is a small authenticated file (StoreOptions::counter_path);
+// a program whose storage an attacker may reset implements this interface over a counter he
+// cannot (a TPM NV counter, eMMC RPMB, a microcontroller's backup register), one per store.
+class FreshnessCounter {
+ public:
+  virtual ~FreshnessCounter() {}
+  // The highest value advanced to, 0 when never advanced. A failure means the value cannot be
+  // known: a store holding authenticated checkpoints then restores nothing.
+  virtual Status read(std::uint64_t& value) = 0;
+  // Raises the counter to `value` when it is lower, never lowers it; durable once it returns.
+  virtual Status advance(std::uint64_t value) = 0;
+};
+
 // The checkpoint store (docs/format.md §4): one preallocated file with a ring of slots.
 struct StoreOptions {
   std::uint32_t slots = 4;
@@ -265,6 +292,13 @@ struct StoreOptions {
   // causes: restore_latest() then refuses (Error::Io) unless this is set, in which case it
   // restores without the fallback and says so in Report::warnings().
   bool allow_unrecorded_restore = false;
+  // Freshness, with keys set (FreshnessCounter): the counter to use, owned by the caller and
+  // outliving the Store; when null, an authenticated file at `counter_path`, or when that is
+  // null too, at the store's path with ".fresh" appended. Put that file where whoever may
+  // write the store cannot (another owner, another partition): with both, an attacker can
+  // copy an old store and its old counter back together.
+  FreshnessCounter* freshness_counter = nullptr;
+  const char* counter_path = nullptr;
 };
 
 class Store {

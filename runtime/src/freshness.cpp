@@ -1,0 +1,220 @@
+// The store's identity and the file-backed freshness counter (freshness.hpp).
+#include "freshness.hpp"
+
+#include <fcntl.h>
+#include <sys/random.h>
+#include <time.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "crc32c.hpp"
+#include "file_io.hpp"
+#include "file_system.hpp"
+#include "little_endian.hpp"
+#include "record.hpp"
+
+namespace symcr::detail {
+namespace {
+
+constexpr std::uint8_t kStoreIdMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'S', 'I', 'D'};
+constexpr std::uint8_t kCounterMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'C', 'T', 'R'};
+constexpr char kCounterDomain[] = "symcr freshness counter";
+constexpr std::uint64_t kCounterCopies[2] = {0, 128};
+constexpr std::size_t kCounterSigned = 40;  // magic, key id, reserved, value, store id
+constexpr std::size_t kCounterCopySize = kCounterSigned + kSha256Size;
+
+bool fill_random(std::uint8_t* out, std::size_t size) {
+  std::size_t got = 0;
+  while (got < size) {
+    const ssize_t n = getrandom(out + got, size - got, 0);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    got += static_cast<std::size_t>(n);
+  }
+  if (got == size) return true;
+  const int fd = ::open("/dev/urandom", O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  std::size_t read_bytes = 0;
+  const bool ok = pread_full(fd, out, size, 0, read_bytes, "/dev/urandom").ok() &&
+                  read_bytes == size;
+  ::close(fd);
+  return ok;
+}
+
+void encode_counter_copy(std::uint64_t value, const std::uint8_t* store_id, const OwnedKey& key,
+                         std::uint8_t* out) {
+  std::memcpy(out, kCounterMagic, sizeof kCounterMagic);
+  le::store32(out + 8, key.id);
+  le::store32(out + 12, 0);
+  le::store64(out + 16, value);
+  std::memcpy(out + 24, store_id, kStoreIdSize);
+  std::uint8_t mac[kSha256Size];
+  store_item_mac(key, kCounterDomain, store_id, out, kCounterSigned, mac);
+  std::memcpy(out + kCounterSigned, mac, sizeof mac);
+}
+
+}  // namespace
+
+void new_store_id(std::uint8_t (&id)[kStoreIdSize]) {
+  if (fill_random(id, sizeof id)) return;
+  // No entropy source: still distinct per store and process (identity, not a secret).
+  timespec now{};
+  clock_gettime(CLOCK_REALTIME, &now);
+  const std::uint64_t a = static_cast<std::uint64_t>(now.tv_sec) * 1000000000u +
+                          static_cast<std::uint64_t>(now.tv_nsec);
+  const std::uint64_t b = static_cast<std::uint64_t>(getpid()) ^ (a << 17);
+  le::store64(id, a);
+  le::store64(id + 8, b);
+}
+
+void encode_store_id(const std::uint8_t (&id)[kStoreIdSize], std::uint8_t* out) {
+  std::memset(out, 0, kStoreIdBlockSize);
+  for (const std::uint64_t at : {kStoreIdOffset, kStoreIdSecondCopy}) {
+    std::uint8_t* copy = out + (at - kStoreIdOffset);
+    std::memcpy(copy, kStoreIdMagic, sizeof kStoreIdMagic);
+    std::memcpy(copy + 8, id, kStoreIdSize);
+    le::store32(copy + 8 + kStoreIdSize, crc32c(copy, 8 + kStoreIdSize));
+  }
+}
+
+bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id)[kStoreIdSize],
+                   bool* both) {
+  std::memset(id, 0, sizeof id);
+  int holding = 0;
+  for (const std::uint64_t at : {kStoreIdSecondCopy, kStoreIdOffset}) {  // the first one last
+    if (size < at + kStoreIdCopySize) continue;
+    const std::uint8_t* copy = page + at;
+    if (std::memcmp(copy, kStoreIdMagic, sizeof kStoreIdMagic) != 0 ||
+        le::load32(copy + 8 + kStoreIdSize) != crc32c(copy, 8 + kStoreIdSize)) {
+      continue;
+    }
+    std::memcpy(id, copy + 8, kStoreIdSize);
+    ++holding;
+  }
+  if (both != nullptr) *both = holding == 2;
+  return holding != 0;
+}
+
+Status freshness_verdict(const char* path, std::uint64_t newest, std::uint64_t allowed,
+                         const RestoreJournal& journal, std::uint64_t counted) {
+  if (newest >= counted) return Status();
+  if (journal.freshness >= counted) {
+    if (allowed >= journal.newest) return Status();
+    return Status(Error::RolledBack,
+                  "%s: rolled back: the newest authenticated checkpoint its journal lets a start "
+                  "restore is sequence %llu, but the journal was written when it held sequence "
+                  "%llu: its newest checkpoints damaged; nothing restored",
+                  path, static_cast<unsigned long long>(allowed),
+                  static_cast<unsigned long long>(journal.newest));
+  }
+  return Status(Error::RolledBack,
+                "%s: rolled back: its newest authenticated checkpoint is sequence %llu (journal "
+                "freshness %llu), the freshness counter says %llu was written: an older copy, "
+                "or its newest checkpoints damaged; nothing restored",
+                path, static_cast<unsigned long long>(newest),
+                static_cast<unsigned long long>(journal.freshness),
+                static_cast<unsigned long long>(counted));
+}
+
+Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
+                           const std::uint8_t* store_id, const KeyRing& keys,
+                           std::uint64_t& value) {
+  value = 0;
+  Status why(Error::RolledBack, "it holds no counter");
+  bool found = false;
+  for (const std::uint64_t at : kCounterCopies) {
+    if (at + kCounterCopySize > size) continue;
+    const std::uint8_t* copy = bytes + at;
+    if (std::memcmp(copy, kCounterMagic, sizeof kCounterMagic) != 0) continue;
+    const OwnedKey* key = keys.find(le::load32(copy + 8));
+    if (key == nullptr) {
+      why = Status(Error::RolledBack, "it is signed with key id %u, which this program does not "
+                   "hold", le::load32(copy + 8));
+      continue;
+    }
+    std::uint8_t mac[kSha256Size];
+    store_item_mac(*key, kCounterDomain, copy + 24, copy, kCounterSigned, mac);
+    if (!equal_macs(mac, copy + kCounterSigned, kSha256Size)) {
+      why = Status(Error::RolledBack, "its MAC does not verify: it was forged or damaged");
+      continue;
+    }
+    if (std::memcmp(copy + 24, store_id, kStoreIdSize) != 0) {
+      why = Status(Error::RolledBack, "it is the counter of another store");
+      continue;
+    }
+    const std::uint64_t copy_value = le::load64(copy + 16);
+    if (copy_value > kMaxRecordSequence) {
+      why = Status(Error::RolledBack, "its value is beyond the sequence range");
+      continue;
+    }
+    if (!found || copy_value > value) value = copy_value;
+    found = true;
+  }
+  return found ? Status() : why;
+}
+
+FileFreshnessCounter::FileFreshnessCounter(std::string path,
+                                           const std::uint8_t (&store_id)[kStoreIdSize],
+                                           Durability durability)
+    : path_(std::move(path)), durability_(durability) {
+  std::memcpy(store_id_, store_id, sizeof store_id_);
+}
+
+Status FileFreshnessCounter::read(std::uint64_t& value) {
+  value = 0;
+  if (keys_ == nullptr) return Status(Error::Unauthenticated, "no keys to verify the counter");
+  FileSystem& files = file_system();
+  const int fd = files.open(path_.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK, 0);
+  if (fd < 0) {
+    if (errno == ENOENT) {
+      return Status(Error::RolledBack, "the freshness counter %s is missing", path_.c_str());
+    }
+    return io_error("cannot open the freshness counter", path_.c_str(), errno);
+  }
+  std::uint8_t bytes[kCounterFileSize] = {};
+  std::size_t got = 0;
+  Status status = pread_full(fd, bytes, sizeof bytes, 0, got, path_.c_str());
+  files.close(fd);
+  if (!status.ok()) return status;
+  status = decode_counter_file(bytes, got, store_id_, *keys_, value);
+  if (!status.ok()) {
+    return Status(Error::RolledBack, "the freshness counter %s cannot be trusted: %s",
+                  path_.c_str(), status.message());
+  }
+  known_ = true;
+  value_ = value;
+  return Status();
+}
+
+Status FileFreshnessCounter::advance(std::uint64_t value) {
+  if (keys_ == nullptr) return Status(Error::Unauthenticated, "no keys to sign the counter");
+  if (!known_) {
+    std::uint64_t current = 0;
+    if (read(current).ok() && current >= value) return Status();
+  } else if (value_ >= value) {
+    return Status();
+  }
+  FileSystem& files = file_system();
+  const int fd = files.open(path_.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
+  if (fd < 0) return io_error("cannot open the freshness counter", path_.c_str(), errno);
+  std::uint8_t bytes[kCounterCopies[1] + kCounterCopySize] = {};
+  for (const std::uint64_t at : kCounterCopies) {
+    encode_counter_copy(value, store_id_, keys_->signing(), bytes + at);
+  }
+  Status status = pwrite_all(fd, bytes, sizeof bytes, 0, path_.c_str());
+  if (status.ok() && durability_ == Durability::Fdatasync && files.fdatasync(fd) != 0) {
+    status = io_error("cannot fdatasync", path_.c_str(), errno);
+  }
+  files.close(fd);
+  if (!status.ok()) {
+    known_ = false;
+    return status;
+  }
+  known_ = true;
+  value_ = value;
+  return Status();
+}
+
+}  // namespace symcr::detail
