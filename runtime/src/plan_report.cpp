@@ -291,8 +291,9 @@ void Planner::expand(const PlanNode* n, const std::string& path) {
           own_lossy = false;
         }
         if (const FieldTime* time = reader_time(reader_, *n, field)) {
-          const std::string clock =
-              std::string("a time of clock '") + (time->clock->name ? time->clock->name : "?") + "'";
+          const std::string clock = std::string("a time of clock '") +
+                                    (time->clock->name ? time->clock->name : "?") +
+                                    "' (never: " + std::to_string(time->never) + ")";
           if (plan_.writer_clock_of[time->clock->index] == kNoType) {
             decision = Decision::Rejected;
             detail = clock + ", of which the checkpoint holds no reading: this build's value is kept";

@@ -49,9 +49,11 @@ class Walker {
     }();
     const std::vector<const ClockInfo*> clocks = schema_clocks(writer_);
     for (std::uint32_t c = 0; c < readings.count && c < clocks.size(); ++c) {
-      const std::string path =
+      const std::string name =
           std::string("(clock ") + (clocks[c] && clocks[c]->name ? clocks[c]->name : "?") + ")";
-      visitor_.leaf(path.c_str(), kReading, readings.readings + 8 * std::size_t{c}, 8, nullptr);
+      push(PathFrame{PathFrame::Kind::Name, name.c_str(), 0});
+      leaf(kReading, readings.readings + 8 * std::size_t{c}, 8);
+      pop();
     }
   }
 
