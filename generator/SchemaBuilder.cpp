@@ -467,7 +467,7 @@ void SchemaBuilder::addTranslationUnit(
   TypeWalker Walker(Context, S, TUIndex, Program, Diags, Select);
   Walker.PolymorphicClasses = &Index.PolymorphicClasses;
   const SourceManager &SM = Context.getSourceManager();
-  std::vector<std::tuple<std::string, QualType, std::uint32_t>> ShallowRoots;
+  std::vector<std::tuple<std::string, QualType, std::uint32_t>> ClassRoots;
   std::vector<std::uint32_t> RootTypes;
   for (auto &Entry : Index.Variables) {
     for (VarDecl *VD : Entry.second) {
@@ -630,11 +630,11 @@ void SchemaBuilder::addTranslationUnit(
       }
       Program.Roots.push_back(std::move(Root));
       RootTypes.push_back(TypeIndex);
-      if (Shallow)
-        ShallowRoots.emplace_back(Name, Type, TypeIndex);
+      // A shallow root's unselected members and a root's skipped ones can still be pointed at.
+      ClassRoots.emplace_back(Name, Type, TypeIndex);
     }
   }
-  Walker.addReferenceMembers(ShallowRoots, RootTypes);
+  Walker.addReferenceMembers(ClassRoots, RootTypes);
 }
 
 void SchemaBuilder::dropClassesWithoutVtable() {

@@ -821,19 +821,19 @@ static std::set<std::uint32_t> pointeeClasses(const ProgramModel &Program,
 }
 
 void TypeWalker::addReferenceMembers(
-    const std::vector<std::tuple<std::string, QualType, std::uint32_t>> &ShallowRoots,
+    const std::vector<std::tuple<std::string, QualType, std::uint32_t>> &ClassRoots,
     const std::vector<std::uint32_t> &RootTypes) {
-  if (ShallowRoots.empty())
+  if (ClassRoots.empty())
     return;
   std::set<std::uint32_t> Pointees = pointeeClasses(Program, RootTypes);
   if (Pointees.empty())
     return;
-  for (const auto &Root : ShallowRoots) {
+  for (const auto &Root : ClassRoots) {
     const std::string &Name = std::get<0>(Root);
     std::uint32_t Index = std::get<2>(Root);
-    const RecordDecl *RD = completeDefinition(
-        std::get<1>(Root)->getAsRecordDecl(), SourceLocation());
-    if (!RD)
+    const RecordDecl *Decl = std::get<1>(Root)->getAsRecordDecl();
+    const RecordDecl *RD = Decl ? completeDefinition(Decl, SourceLocation()) : nullptr;
+    if (!RD || RD->isUnion() || Program.Types[Index].Kind != symcr::Kind::Struct)
       continue;
     const ASTRecordLayout &Layout = Context.getASTRecordLayout(RD);
     std::vector<std::string> Keys = recordKeys(RD);

@@ -100,12 +100,13 @@ public:
     return recordName(RD, WalkContext());
   }
 
-  /// After every root of the TU is walked: lists, in each shallow root's type, the unselected
-  /// members at or inside which a pointer of the TU's state may point (kTypeReferenceMembers),
-  /// so that such a pointer is saved as a reference by path. \p ShallowRoots: each shallow
-  /// root's name, declared type and type index; \p RootTypes: every root's type index.
+  /// After every root of the TU is walked: lists, in each root's class, the members whose
+  /// values are not saved (a shallow root's unselected members, skipped members) at or inside
+  /// which a pointer of the TU's state may point (kTypeReferenceMembers), so that such a pointer
+  /// is saved as a reference by path. \p ClassRoots: each root's name, declared type and type
+  /// index (roots not of class type are passed over); \p RootTypes: every root's type index.
   void addReferenceMembers(
-      const std::vector<std::tuple<std::string, clang::QualType, std::uint32_t>> &ShallowRoots,
+      const std::vector<std::tuple<std::string, clang::QualType, std::uint32_t>> &ClassRoots,
       const std::vector<std::uint32_t> &RootTypes);
 
   /// The TU's class definitions with virtual functions (NameIndex).

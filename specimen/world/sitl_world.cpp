@@ -248,6 +248,10 @@ class World {
   AutopilotProcess autopilot_;
   std::ofstream track_;
   std::uint64_t time_us_ = 0;
+  // When the running autopilot process started: its clock (SIM_SENSORS' time_us) counts from
+  // there, as a flight controller's does from its boot. A CRIU restore resumes the dumped
+  // process, whose clock goes on.
+  std::uint64_t autopilot_boot_us_ = 0;
   std::uint64_t next_track_us_ = 0;
   std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
   Result* result_ = nullptr;
@@ -286,7 +290,8 @@ void World::pace() {
 bool World::autopilot_loop(std::array<double, 4>& motors, bool& saved_this_loop,
                            std::string& gone_how) {
   saved_this_loop = false;
-  const mav::SimSensors sample = sensors_.sample(physics_.state(), time_us_);
+  mav::SimSensors sample = sensors_.sample(physics_.state(), time_us_);
+  sample.time_us = time_us_ - autopilot_boot_us_;
   if (!autopilot_.sim().send(mav::make_frame(mav::SIM_SENSORS, sample))) {
     gone_how = autopilot_.reap();
     return false;
@@ -346,6 +351,7 @@ bool World::restart_autopilot(Result& result, int& segment) {
   } else {
     std::vector<std::string> args = autopilot_args();
     args.push_back("--restore");
+    autopilot_boot_us_ = time_us_;
     if (!autopilot_.start(options_.resume_autopilot, args, log_path())) {
       result.reason = "could not start " + options_.resume_autopilot;
       return false;
@@ -446,6 +452,7 @@ Result World::run() {
     if (!install_executable(options_.autopilot, result.reason)) return result;
     first = installed_executable();
   }
+  autopilot_boot_us_ = time_us_;
   if (!autopilot_.start(first, autopilot_args(), log_path())) {
     result.reason = "could not start " + first;
     return result;
