@@ -1,5 +1,5 @@
 // The hardware abstraction for software-in-the-loop: time comes from the world's sensor
-// frames (lock-step), sensors are the latest SIM_SENSORS frame, outputs go back as SIM_MOTORS.
+// frames (lock-step; the world counts it from this process's start), sensors are the latest SIM_SENSORS frame, outputs go back as SIM_MOTORS.
 #ifndef AUTOPILOT_AP_HAL_HPP
 #define AUTOPILOT_AP_HAL_HPP
 
@@ -55,5 +55,10 @@ class AP_HAL {
 };
 
 extern AP_HAL hal;
+
+// The clock as the autopilot's code reads it (ArduPilot's AP_HAL::millis()). It counts from
+// this process's first sensor frame, as a flight controller's counts from its boot: a restart
+// starts it again at zero. clocks.symcr names it, so that a restore moves the restored times.
+inline std::uint32_t hal_millis() { return hal.millis(); }
 
 #endif  // AUTOPILOT_AP_HAL_HPP
