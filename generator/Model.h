@@ -246,6 +246,7 @@ struct PointStoreModel {
   unsigned SlotSize = 0; ///< 0: the runtime's default
   bool Fdatasync = false;
   unsigned FallbackDepth = 0; ///< crash-loop fallback; 0: off
+  bool FallbackDefault = false; ///< FallbackDepth is the default, not given
   unsigned ConfirmAfter = 0;  ///< checkpoints saved after a restore confirm it
   std::string Spelling;
   Location Where; ///< invalid when no store directive was given
