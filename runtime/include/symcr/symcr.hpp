@@ -32,6 +32,7 @@
 #define SYMCR_RENAMED_FROM(old_name) __attribute__((annotate("symcr::renamed_from:" old_name)))
 #define SYMCR_RANGE(lo, hi) __attribute__((annotate("symcr::range:" #lo ":" #hi)))
 #define SYMCR_NOT_OWNER __attribute__((annotate("symcr::not_owner")))
+#define SYMCR_RESTORES_ALONE __attribute__((annotate("symcr::restores_alone")))
 #define SYMCR_TIME(...) __attribute__((annotate("symcr::time:" #__VA_ARGS__)))
 #define SYMCR_CLOCK_PRAGMA_(text) _Pragma(#text)
 #define SYMCR_CLOCK(...) SYMCR_CLOCK_PRAGMA_(symcr clock(__VA_ARGS__))
@@ -43,6 +44,7 @@
 #define SYMCR_RENAMED_FROM(old_name)
 #define SYMCR_RANGE(lo, hi)
 #define SYMCR_NOT_OWNER
+#define SYMCR_RESTORES_ALONE
 #define SYMCR_TIME(...)
 #define SYMCR_CLOCK(...)
 #endif
