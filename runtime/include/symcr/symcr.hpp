@@ -22,7 +22,8 @@
 // defines SYMCR_GENERATOR and reads them as Clang `annotate` attributes. Place them where a
 // GNU attribute goes: `SYMCR_CHECKPOINT Copter copter;`, `int raw SYMCR_SKIP;`,
 // `struct SYMCR_SKIP Buffer {...};`, `float yaw SYMCR_RENAMED_FROM("heading");`,
-// `uint32_t last_ms SYMCR_TIME(millis);`, `typedef uint32_t time_ms SYMCR_TIME(millis);`.
+// `uint32_t last_ms SYMCR_TIME(millis);`, `typedef uint32_t time_ms SYMCR_TIME(millis);`,
+// `bool armed_once SYMCR_RESTORES_ALONE;` (a state flag that describes only restored state).
 // SYMCR_CLOCK(millis) (a clock and its reading function) stands at namespace scope.
 #if defined(SYMCR_GENERATOR)
 #define SYMCR_CHECKPOINT __attribute__((annotate("symcr::checkpoint")))
