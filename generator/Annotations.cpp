@@ -223,6 +223,8 @@ static bool directiveKindFromName(const std::string &Name,
     Kind = DirectiveKind::Time;
   else if (Name == "not_owner")
     Kind = DirectiveKind::NotOwner;
+  else if (Name == "restores_alone")
+    Kind = DirectiveKind::RestoresAlone;
   else
     return false;
   return true;
@@ -289,7 +291,8 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
     Diags.error(At(NameBegin),
                 "unknown symcr directive '" + Name +
                     "' (expected checkpoint, skip, renamed, include, range, "
-                    "checkpoint_at, restore_at, store, clock, time or not_owner)");
+                    "checkpoint_at, restore_at, store, clock, time, not_owner or "
+                    "restores_alone)");
     return false;
   }
   SkipSpace();

@@ -37,6 +37,7 @@ enum class DirectiveKind {
   Clock,        ///< clock([name,] function): a clock and its reading function
   Time,         ///< time(Type::field | typedef, clock [, never=N]): a time of a clock
   NotOwner,     ///< not_owner(Type::field, ...): as SYMCR_NOT_OWNER
+  RestoresAlone, ///< restores_alone(Type::field, ...): as SYMCR_RESTORES_ALONE
 };
 
 /// Parses SYMCR_TIME's text ("millis" or "millis, never=0xFFFFFFFF"); false with \p Error

@@ -122,6 +122,9 @@ struct FieldModel {
   /// kFieldClockTime: the clock whose times the member holds, and its "no time yet" value.
   std::string Clock;
   std::int64_t Never = 0;
+  /// A state flag declared to describe only state that is restored with it
+  /// (SYMCR_RESTORES_ALONE, restores_alone): --report warns nothing about it.
+  bool RestoresAlone = false;
   /// Spelling of the member for an offsetof() check, or empty when the member
   /// is not checkable at compile time (private, bit-field,
   /// non-standard-layout).
@@ -190,15 +193,16 @@ struct TypeModel {
   /// different fingerprint means inconsistent annotations or an ODR problem.
   std::string Fingerprint;
   std::string FirstSeenIn;
-  /// Members left out of this type and why ("raw: SYMCR_SKIP"), for --report.
-  std::vector<std::string> Skipped;
-  /// Members the new build re-creates by itself, never restored and needing no annotation
-  /// (const and reference members, function and member pointers): their names go into the
-  /// schema (TypeInfo::left_to_new_build), and why, into --report.
+  /// A member (or "base B") that is not restored, and why.
   struct LeftMember {
     std::string Name;
     std::string Why;
   };
+  /// Members left out of this type and why ("raw", "SYMCR_SKIP"), for --report.
+  std::vector<LeftMember> Skipped;
+  /// Members the new build re-creates by itself, never restored and needing no annotation
+  /// (const and reference members, function and member pointers): their names go into the
+  /// schema (TypeInfo::left_to_new_build), and why, into --report.
   std::vector<LeftMember> LeftToNewBuild;
   /// Members whose values are not saved but which a pointer may target (kTypeReferenceMembers:
   /// a shallow root's unselected members, and the parts of them on the way to a pointee).
@@ -211,6 +215,12 @@ struct TypeModel {
     return Names;
   }
 };
+
+/// A boolean or enum member: a "state flag", which often says what state other members of
+/// its class hold (started, initialised, a mode).
+inline bool isStateFlag(const TypeModel &Type) {
+  return Type.Kind == symcr::Kind::Bool || Type.Kind == symcr::Kind::Enum;
+}
 
 struct RootModel {
   std::string Name;
@@ -246,6 +256,7 @@ struct PointStoreModel {
   unsigned SlotSize = 0; ///< 0: the runtime's default
   bool Fdatasync = false;
   unsigned FallbackDepth = 0; ///< crash-loop fallback; 0: off
+  bool FallbackDefault = false; ///< FallbackDepth is the default, not given
   unsigned ConfirmAfter = 0;  ///< checkpoints saved after a restore confirm it
   std::string Spelling;
   Location Where; ///< invalid when no store directive was given

@@ -24,9 +24,17 @@ bool isPointDirective(const Directive &D) {
 
 namespace {
 
-/// Checkpoints saved after a restore that confirm it, when the store directive
-/// asks for a fallback_depth and says nothing else.
+/// The crash-loop fallback is on unless the store directive says
+/// fallback_depth=0: a restored state that crashes the program is passed over
+/// at the next start, down to this many older checkpoints, then the initial
+/// state.
+constexpr unsigned kDefaultFallbackDepth = 2;
+/// Checkpoint points reached after a restore that confirm it, unless the store
+/// directive says confirm_after=N.
 constexpr unsigned kDefaultConfirmAfter = 10;
+/// Slots the fallback keeps beside its depth: the restored checkpoint and one
+/// to save into while the restore waits for its confirmation.
+constexpr unsigned kFallbackSpareSlots = 2;
 
 std::string locationKey(const Location &L) {
   return L.File + ":" + std::to_string(L.Line) + ":" + std::to_string(L.Column);
@@ -47,6 +55,15 @@ bool parseCount(const std::string &Text, unsigned &Out) {
     return false;
   Out = static_cast<unsigned>(std::strtoul(Text.c_str(), nullptr, 10));
   return Out > 0;
+}
+
+/// As parseCount, and 0 too (fallback_depth=0 turns the fallback off).
+bool parseCountOrZero(const std::string &Text, unsigned &Out) {
+  if (Text == "0") {
+    Out = 0;
+    return true;
+  }
+  return parseCount(Text, Out);
 }
 
 /// Finds the definitions (and declarations) of the points' functions.
@@ -85,6 +102,7 @@ void ProgramPoints::addDirective(const Directive &D) {
     Store.Spelling = D.Spelling;
     Store.Where = D.Where;
     Store.Path = D.Arguments[0].Text;
+    bool DepthGiven = false;
     for (std::size_t I = 1; I < D.Arguments.size(); ++I) {
       const DirectiveArgument &A = D.Arguments[I];
       auto Option = option(A.Text);
@@ -99,8 +117,10 @@ void ProgramPoints::addDirective(const Directive &D) {
         continue;
       }
       if (Option.first == "fallback_depth" &&
-          parseCount(Option.second, Store.FallbackDepth))
+          parseCountOrZero(Option.second, Store.FallbackDepth)) {
+        DepthGiven = true;
         continue;
+      }
       if (Option.first == "confirm_after" &&
           parseCount(Option.second, Store.ConfirmAfter))
         continue;
@@ -111,9 +131,28 @@ void ProgramPoints::addDirective(const Directive &D) {
                       "confirm_after=N)");
       return;
     }
+    if (!DepthGiven) {
+      // On by default, as deep as the slots the directive gives leave room for
+      // (saves go on while a restore waits for its confirmation).
+      Store.FallbackDepth = kDefaultFallbackDepth;
+      if (Store.Slots != 0)
+        Store.FallbackDepth = std::min(
+            Store.FallbackDepth, Store.Slots > kFallbackSpareSlots
+                                     ? Store.Slots - kFallbackSpareSlots
+                                     : 0u);
+      Store.FallbackDefault = true;
+    }
     if (Store.ConfirmAfter != 0 && Store.FallbackDepth == 0) {
-      Diags.error(D.Where, "confirm_after=N confirms the restores of the "
-                           "crash-loop fallback: give fallback_depth=N too");
+      Diags.error(D.Where,
+                  DepthGiven
+                      ? "confirm_after=N confirms the restores of the crash-loop "
+                        "fallback, which fallback_depth=0 turns off"
+                      : "confirm_after=N confirms the restores of the crash-loop "
+                        "fallback, for which slots=" +
+                            std::to_string(Store.Slots) +
+                            " leaves no room: give fallback_depth=N (the "
+                            "store keeps N + 2 slots' worth until the "
+                            "confirmation) or more slots");
       return;
     }
     // A restore proves itself over this many checkpoints unless told otherwise.
@@ -390,8 +429,14 @@ std::string renderPointsReport(const ProgramModel &Program) {
      << (Store.Fdatasync ? ", fdatasync" : "");
   if (Store.FallbackDepth != 0)
     OS << ", crash-loop fallback depth " << Store.FallbackDepth
+       << (Store.FallbackDefault ? " (the default)" : "")
        << ", a restore confirmed after " << Store.ConfirmAfter
        << (Store.ConfirmAfter == 1 ? " checkpoint" : " checkpoints");
+  else if (Store.FallbackDefault)
+    OS << ", crash-loop fallback off: slots=" << Store.Slots
+       << " leaves no room for it (give fallback_depth=N and N + 2 slots)";
+  else
+    OS << ", crash-loop fallback off (fallback_depth=0)";
   OS << "):\n";
   for (const PointModel &P : Program.Points) {
     OS << "  " << P.Spelling << " (" << locationKey(P.Where) << ")\n";

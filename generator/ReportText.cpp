@@ -1,8 +1,9 @@
 //===- ReportText.cpp - Writes symcr-gen's --report text ------------------===//
 //
 // Per root: the types and fields it reaches, the bytes of fixed payload, what
-// is skipped and why, and which classes heap objects behind a polymorphic
-// pointer are saved as.
+// is skipped and why, which classes heap objects behind a polymorphic
+// pointer are saved as, and the state flags that may describe state that is
+// not restored.
 //
 //===----------------------------------------------------------------------===//
 #include "EmitSupport.h"
@@ -86,6 +87,38 @@ static void writePointees(std::ostream &OS, const ProgramModel &Program, std::ui
   OS << "\n";
 }
 
+/// A restored state flag of a class that leaves members out may say that state is there
+/// (started, initialised, a mode) which the restore did not bring back: the new process then
+/// acts on state it lacks, as a restored "estimator started" with estimator cores that were never
+/// created. One warning per such flag, naming what its class leaves out.
+static void writeStateFlagWarnings(std::ostream &OS, const ProgramModel &Program) {
+  std::set<std::string> Warned; // a class walked for a shallow root and a deep one
+  std::ostringstream Lines;
+  for (const TypeModel &Type : Program.Types) {
+    if (Type.Skipped.empty())
+      continue;
+    std::string LeftOut;
+    for (const TypeModel::LeftMember &Member : Type.Skipped)
+      LeftOut += (LeftOut.empty() ? "" : ", ") + Member.Name;
+    for (const FieldModel &F : Type.Fields) {
+      if ((F.Flags & symcr::kFieldBase) || F.RestoresAlone ||
+          !isStateFlag(Program.Types[F.Type]))
+        continue;
+      const std::string Flag = Type.Name + "::" + F.Name;
+      if (!Warned.insert(Flag).second)
+        continue;
+      Lines << "  warning: " << Flag << " (" << Program.Types[F.Type].Name
+            << ") is restored, but " << Type.Name << " leaves out " << LeftOut
+            << ": the restored flag may describe state that was not restored\n";
+    }
+  }
+  if (Warned.empty())
+    return;
+  OS << "\nstate flags that may describe state not restored (" << Warned.size()
+     << "; restores_alone(Type::member) or SYMCR_RESTORES_ALONE declares that a flag "
+        "describes no such state):\n"
+     << Lines.str();
+}
 
 std::string renderReport(const ProgramModel &Program) {
   std::ostringstream OS;
@@ -162,8 +195,8 @@ std::string renderReport(const ProgramModel &Program) {
       for (const FieldModel &F : Type.ReferenceMembers)
         OS << "    reference only " << (F.Flags & symcr::kFieldBase ? "base " : "")
            << F.Name << ": " << Program.Types[F.Type].Name << " @" << F.Offset << "\n";
-      for (const std::string &S : Type.Skipped)
-        OS << "    skipped " << S << "\n";
+      for (const TypeModel::LeftMember &S : Type.Skipped)
+        OS << "    skipped " << S.Name << ": " << S.Why << "\n";
       if (Type.Kind == symcr::Kind::Pointer && Type.Element != symcr::kNoType &&
           Program.Types[Type.Element].Kind == symcr::Kind::Struct)
         writePointees(OS, Program, T);
@@ -188,6 +221,7 @@ std::string renderReport(const ProgramModel &Program) {
              << "\n";
     }
   }
+  writeStateFlagWarnings(OS, Program);
   if (!Program.Clocks.empty()) {
     OS << "\nclocks (each checkpoint records their readings; a restore in another process "
           "moves their times by their advance):\n";

@@ -337,6 +337,7 @@ void SchemaBuilder::addTranslationUnit(
       case DirectiveKind::Skip:
       case DirectiveKind::Include:
       case DirectiveKind::NotOwner:
+      case DirectiveKind::RestoresAlone:
       case DirectiveKind::Range:
       case DirectiveKind::Time:
       case DirectiveKind::Renamed: {
@@ -367,6 +368,7 @@ void SchemaBuilder::addTranslationUnit(
         if (D.Kind != DirectiveKind::Include &&
             D.Kind != DirectiveKind::Range && D.Kind != DirectiveKind::Time &&
             D.Kind != DirectiveKind::NotOwner &&
+            D.Kind != DirectiveKind::RestoresAlone &&
             resolveTypeName(Index, Text, Keys, &Records, CanonicalName)) {
           Found = true;
           for (const std::string &K : Keys) {
@@ -391,6 +393,7 @@ void SchemaBuilder::addTranslationUnit(
               (D.Kind == DirectiveKind::Skip      ? "skip"
                : D.Kind == DirectiveKind::Include ? "include"
                : D.Kind == DirectiveKind::NotOwner ? "not_owner"
+               : D.Kind == DirectiveKind::RestoresAlone ? "restores_alone"
                : D.Kind == DirectiveKind::Range   ? "range"
                : D.Kind == DirectiveKind::Time    ? "time"
                                                   : "renamed") +
@@ -434,6 +437,8 @@ void SchemaBuilder::addTranslationUnit(
             Select.FieldTimes[{K, Member}] = Time;
           else if (D.Kind == DirectiveKind::NotOwner)
             Select.NotOwnerFields.insert({K, Member});
+          else if (D.Kind == DirectiveKind::RestoresAlone)
+            Select.RestoresAloneFields.insert({K, Member});
           else if (D.Kind == DirectiveKind::Range)
             Select.FieldRanges[{K, Member}] = {
                 std::strtod(D.Arguments[1].Text.c_str(), nullptr),

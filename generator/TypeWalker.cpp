@@ -525,8 +525,7 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
       B.Where = locationOf(Context, Base.getBeginLoc());
       std::string Why;
       if (isSkippedType(BaseRD, Why)) {
-        Model.Skipped.push_back("base " + BaseRD->getNameAsString() + ": " +
-                                Why);
+        Model.Skipped.push_back({"base " + BaseRD->getNameAsString(), Why});
         continue;
       }
       if (BaseRD->isEmpty() && !BaseRD->isPolymorphic())
@@ -573,12 +572,12 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
       continue;
     }
     if (hasAnnotation(FD, "skip")) {
-      Model.Skipped.push_back(Name + ": SYMCR_SKIP");
+      Model.Skipped.push_back({Name, "SYMCR_SKIP"});
       continue;
     }
     if (auto It = Lookup(Select.SkippedFields, Name);
         It != Select.SkippedFields.end()) {
-      Model.Skipped.push_back(Name + ": " + It->second);
+      Model.Skipped.push_back({Name, It->second});
       continue;
     }
     QualType FieldType = FD->getType();
@@ -586,7 +585,7 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
     if (const RecordDecl *FieldRD = Innermost->getAsRecordDecl())
       if (isSkippedType(FieldRD, Why)) {
         Model.Skipped.push_back(
-            Name + ": type " + recordName(FieldRD, WalkContext()) + ": " + Why);
+            {Name, "type " + recordName(FieldRD, WalkContext()) + ": " + Why});
         continue;
       }
     if (C.Shallow) {
@@ -596,10 +595,9 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
       bool Plain = Innermost->isScalarType() && !Innermost->isPointerType() &&
                    !Innermost->isMemberPointerType();
       if (!Included && !Plain) {
-        Model.Skipped.push_back(Name +
-                                ": not selected for a shallow root "
-                                "(SYMCR_INCLUDE or '#pragma symcr include(" +
-                                OwnerName + "::" + Name + ")' selects it)");
+        Model.Skipped.push_back({Name, "not selected for a shallow root "
+                                       "(SYMCR_INCLUDE or '#pragma symcr include(" +
+                                           OwnerName + "::" + Name + ")' selects it)"});
         continue;
       }
     }
@@ -616,6 +614,9 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
     }
     FieldModel Field;
     Field.Name = Name;
+    Field.RestoresAlone =
+        hasAnnotation(FD, "restores_alone") ||
+        Lookup(Select.RestoresAloneFields, Name) != Select.RestoresAloneFields.end();
     bool NotOwner = hasAnnotation(FD, "not_owner") ||
                     Lookup(Select.NotOwnerFields, Name) != Select.NotOwnerFields.end();
     if (NotOwner && !FieldType.getCanonicalType()->isPointerType()) {
@@ -628,6 +629,13 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
     }
     Field.Type = NotOwner ? neverOwningPointer(FieldType, F) : walk(FieldType, F);
     if (Field.Type == symcr::kNoType) {
+      Ok = false;
+      continue;
+    }
+    if (Field.RestoresAlone && !isStateFlag(Program.Types[Field.Type])) {
+      Sink->error(F.Where, "member '" + F.Path +
+                               "' is declared to restore alone (SYMCR_RESTORES_ALONE, "
+                               "restores_alone), but it is not a boolean or enum state flag");
       Ok = false;
       continue;
     }

@@ -43,6 +43,8 @@ struct Selections {
   std::set<std::pair<std::string, std::string>> IncludedFields;
   /// not_owner(Type::field): pointers declared never to own a heap object.
   std::set<std::pair<std::string, std::string>> NotOwnerFields;
+  /// restores_alone(Type::field): state flags that describe only restored state.
+  std::set<std::pair<std::string, std::string>> RestoresAloneFields;
   /// range(Type::field, lo, hi) directives.
   std::map<std::pair<std::string, std::string>, std::pair<double, double>>
       FieldRanges;

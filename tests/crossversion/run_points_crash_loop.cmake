@@ -1,5 +1,8 @@
 # ctest driver: the crash-loop fallback at program points (points_crash_loop/program.cpp).
-#   -DPROGRAM=<the program> -DSTORE=<file> -P run_points_crash_loop.cmake
+#   -DPROGRAM=<the program> -DSTORE=<file> -DFALLBACK=explicit|default|off
+#   -P run_points_crash_loop.cmake
+# explicit: store(..., slots=4, fallback_depth=2, confirm_after=3); default: store(path) alone,
+# whose fallback is on (depth 2, confirmed after 10 checkpoint points); off: fallback_depth=0.
 set(ENV{SYMCR_STORE} "${STORE}")
 function(start name)
   execute_process(COMMAND "${PROGRAM}" ${ARGN} RESULT_VARIABLE result OUTPUT_VARIABLE output
@@ -19,6 +22,29 @@ function(expect_crashed name)
   endif()
 endfunction()
 
+if(FALLBACK STREQUAL "off")
+  # Without the fallback a restored state that crashes the program crashes every start.
+  file(REMOVE "${STORE}")
+  start(save save 5)
+  foreach(attempt 1 2 3)
+    start(off${attempt} run 5)
+    expect_restored(off${attempt} 5)
+    expect_crashed(off${attempt})
+  endforeach()
+  if(off3_errors MATCHES "passed over")
+    message(FATAL_ERROR "fallback_depth=0 passes nothing over:\n${off3_errors}")
+  endif()
+  message(STATUS "fallback_depth=0 turns the crash-loop fallback at program points off")
+  return()
+endif()
+# Checkpoint points that confirm a restore: the directive's confirm_after, or the default.
+if(FALLBACK STREQUAL "default")
+  set(confirming_steps 10)
+else()
+  set(confirming_steps 3)
+endif()
+math(EXPR confirmed_level "4 + ${confirming_steps}")
+
 # A restored value that crashes the program: the next start restores the older checkpoint,
 # says which one it passed over and why, and runs; the checkpoints its confirmed run saved are restored next.
 file(REMOVE "${STORE}")
@@ -26,21 +52,22 @@ start(save save 5)
 start(first run 5)
 expect_restored(first 5)
 expect_crashed(first)
-start(second run 5)
+start(second run 5 ${confirming_steps})
 expect_restored(second 4)
-if(NOT second_result EQUAL 0 OR NOT second_output MATCHES "ran to level=9")
+if(NOT second_result EQUAL 0 OR NOT second_output MATCHES "ran to level=${confirmed_level}\n")
   message(FATAL_ERROR "the start after the crash must run on:\n${second_output}\n${second_errors}")
 endif()
 if(NOT second_errors MATCHES "passed over slot [0-9]+ \\(checkpoint #5\\): crash-loop fallback")
   message(FATAL_ERROR "the fallback must say what it passed over and why:\n${second_errors}")
 endif()
 start(third run 5)
-expect_restored(third 9)
+expect_restored(third ${confirmed_level})
 if(NOT third_result EQUAL 0)
   message(FATAL_ERROR "a confirmed restore's checkpoints are trusted:\n${third_errors}")
 endif()
 
-# Every restore crashes: two fallbacks (the depth), then the initial state, said in the log.
+# Every restore crashes: the newest, then two fallbacks (the depth), then the initial state,
+# said in the log.
 file(REMOVE "${STORE}")
 start(save save 3)
 foreach(expected 3 2 1)
@@ -53,4 +80,4 @@ expect_restored(gave_up 0)
 if(NOT gave_up_result EQUAL 0 OR NOT gave_up_errors MATCHES "crash-loop fallback gave up after 3 unconfirmed")
   message(FATAL_ERROR "past the depth the program must start from its initial state:\n${gave_up_output}\n${gave_up_errors}")
 endif()
-message(STATUS "the crash-loop fallback at program points behaves as documented")
+message(STATUS "the crash-loop fallback at program points (${FALLBACK}) behaves as documented")

@@ -42,12 +42,14 @@ extern "C" {
 #endif
 
 /* The store the points of a program use: store(path, slots=, slot_size=, durability=,
- * fallback_depth=, confirm_after=). The environment variable SYMCR_STORE, when set, replaces
- * `path` at run time. With a fallback_depth (the crash-loop fallback of symcr::StoreOptions),
- * the restore point's restore is confirmed once `confirm_after` checkpoint points were reached
- * after it (saved, or refused because the fallback keeps every slot until then), or when the
- * program calls symcr_points_confirm(); without `slots`, the store then has fallback_depth + 2
- * slots (4 at least), so that checkpoints are saved before the confirmation too. */
+ * fallback_depth=, confirm_after=), with symcr-gen's defaults filled in. The environment
+ * variable SYMCR_STORE, when set, replaces `path` at run time. The crash-loop fallback of
+ * symcr::StoreOptions is on unless the directive says fallback_depth=0 (symcr-gen's default:
+ * depth 2, or what an explicit `slots` leaves room for, and confirm_after 10): the restore
+ * point's restore is confirmed once `confirm_after` checkpoint points were reached after it
+ * (saved, or refused because the fallback keeps every slot until then), or when the program
+ * calls symcr_points_confirm(); without `slots`, the store then has fallback_depth + 2 slots
+ * (4 at least), so that checkpoints are saved before the confirmation too. */
 struct symcr_point_store {
   const char* path;
   unsigned slots;

@@ -22,7 +22,8 @@
 // defines SYMCR_GENERATOR and reads them as Clang `annotate` attributes. Place them where a
 // GNU attribute goes: `SYMCR_CHECKPOINT Copter copter;`, `int raw SYMCR_SKIP;`,
 // `struct SYMCR_SKIP Buffer {...};`, `float yaw SYMCR_RENAMED_FROM("heading");`,
-// `uint32_t last_ms SYMCR_TIME(millis);`, `typedef uint32_t time_ms SYMCR_TIME(millis);`.
+// `uint32_t last_ms SYMCR_TIME(millis);`, `typedef uint32_t time_ms SYMCR_TIME(millis);`,
+// `bool armed_once SYMCR_RESTORES_ALONE;` (a state flag that describes only restored state).
 // SYMCR_CLOCK(millis) (a clock and its reading function) stands at namespace scope.
 #if defined(SYMCR_GENERATOR)
 #define SYMCR_CHECKPOINT __attribute__((annotate("symcr::checkpoint")))
@@ -32,6 +33,7 @@
 #define SYMCR_RENAMED_FROM(old_name) __attribute__((annotate("symcr::renamed_from:" old_name)))
 #define SYMCR_RANGE(lo, hi) __attribute__((annotate("symcr::range:" #lo ":" #hi)))
 #define SYMCR_NOT_OWNER __attribute__((annotate("symcr::not_owner")))
+#define SYMCR_RESTORES_ALONE __attribute__((annotate("symcr::restores_alone")))
 #define SYMCR_TIME(...) __attribute__((annotate("symcr::time:" #__VA_ARGS__)))
 #define SYMCR_CLOCK_PRAGMA_(text) _Pragma(#text)
 #define SYMCR_CLOCK(...) SYMCR_CLOCK_PRAGMA_(symcr clock(__VA_ARGS__))
@@ -43,6 +45,7 @@
 #define SYMCR_RENAMED_FROM(old_name)
 #define SYMCR_RANGE(lo, hi)
 #define SYMCR_NOT_OWNER
+#define SYMCR_RESTORES_ALONE
 #define SYMCR_TIME(...)
 #define SYMCR_CLOCK(...)
 #endif

@@ -13,5 +13,6 @@ int value;
 template <typename T> T twice(T x) { return x + x; }
 #pragma symcr checkpoint_at(twice, exit)
 void tick() { value += twice(1); }
-#pragma symcr store("points.store", confirm_after=5)
-#pragma symcr store("points.store", fallback_depth=0)
+#pragma symcr store("points.store", fallback_depth=0, confirm_after=5)
+#pragma symcr store("points.store", slots=2, confirm_after=5)
+#pragma symcr store("points.store", fallback_depth=-1)
