@@ -466,7 +466,8 @@ bool mergeModelPart(const std::string &File, ProgramModel &Program, Diagnostics 
     Map[I] = It->second;
     const TypeModel &Known = Program.Types[It->second];
     if (Known.Fingerprint != Part.Types[I].Fingerprint) {
-      Diags.error(Where, "type '" + Part.Types[I].Name + "' is described differently in '" +
+      // Named by both sources; the part's own file is a temporary of the link.
+      Diags.error(Location(), "type '" + Part.Types[I].Name + "' is described differently in '" +
                              Part.Types[I].FirstSeenIn + "' than in '" + Known.FirstSeenIn +
                              "': the annotations (pragmas, sidecar) that select its members "
                              "and the definition must be the same in both");

@@ -171,7 +171,7 @@ def compile_unit(compiler, command, index, source):
     if command.program:
         gen += ["--program", command.program]
     gen.append(os.path.abspath(source))
-    log("generate " + source)
+    log("generate " + os.path.abspath(source))
     status = run(gen)
     if status != 0:
         return status
@@ -258,8 +258,9 @@ def archive_members(path, data):
             continue
         if special:
             continue
-        if name.startswith("/") and name[1:].isdigit():
-            start = int(name[1:])
+        long_name = re.match(r"^/(\d+)", name)  # GNU: an offset into the "//" member
+        if long_name:
+            start = int(long_name.group(1))
             name = names[start:names.find(b"/\n", start)].decode(errors="replace")
         name = name.rstrip("/")
         if thin:
@@ -335,7 +336,7 @@ def link(compiler, command, is_c):
     if not parts:
         return run([compiler] + command.args)
     output = command.output() or "a.out"
-    log("link " + output)
+    log("link " + os.path.abspath(output))
     out_dir = os.path.abspath(output) + ".symcr"
     os.makedirs(out_dir, exist_ok=True)
     gen = [configured("gen"), "--out-dir", out_dir,
