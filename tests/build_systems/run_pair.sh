@@ -7,9 +7,11 @@
 #   - v1 restores v0's checkpoint at its restore point with the expected values;
 #   - incrementally: touching one source regenerates that source alone and relinks; touching
 #     the header regenerates every source including it; a rebuild of nothing generates nothing.
-#   run_pair.sh <make|meson> <wrapper dir> <this folder> <work dir>
+#   - with Meson, whose compilation database then names the wrapper ("symcr-c++ g++ ..."),
+#     symcr-gen run by hand over that database parses with g++'s command.
+#   run_pair.sh <make|meson> <wrapper dir> <this folder> <work dir> <symcr-gen>
 set -euo pipefail
-system=$1 wrappers=$2 here=$3 work=$4
+system=$1 wrappers=$2 here=$3 work=$4 generator=$5
 rm -rf "$work"
 mkdir -p "$work"
 cp -r "$here/rover_v0" "$here/rover_v1" "$work/"
@@ -103,4 +105,13 @@ touch "$work/rover_v0/include/rover.hpp"
 build v0 >/dev/null
 expect_log "$(sources_of v0; echo "link $v0")"
 restore_pair
+
+if [ "$system" = meson ]; then
+  grep -q 'symcr-c++ g++ ' "$work/build_v0/compile_commands.json" ||
+    fail "the database does not name the wrapper"
+  (cd "$work/rover_v0" && "$generator" -p "$work/build_v0" --out-dir "$work/by_hand" \
+     --annotations .symcr src/main.cpp lib/rover.cpp) >"$work/by_hand.log" 2>&1 ||
+    fail "symcr-gen over the wrapper's database: $(cat "$work/by_hand.log")"
+  if grep -q error "$work/by_hand.log"; then fail "$(cat "$work/by_hand.log")"; fi
+fi
 echo "$system: built from scratch and incrementally, v1 restored v0's checkpoint"
