@@ -21,6 +21,8 @@ Options, taken off the command line before the compiler sees it, or from the env
   --symcr-program=<name>      SYMCR_PROGRAM       the program's name in its checkpoints
   SYMCR_WRAPPER_LOG=<file>    appends "generate <source>" and "link <output>" per run
 """
+import hashlib
+import json
 import os
 import re
 import shlex
@@ -28,7 +30,6 @@ import struct
 import subprocess
 import sys
 import tempfile
-import hashlib
 
 # Filled in when the wrapper is installed or built (wrapper/CMakeLists.txt): paths relative to
 # this script's directory, or absolute.
@@ -160,7 +161,6 @@ def compile_unit(compiler, command, index, source):
     database = [{"directory": os.getcwd(), "file": os.path.abspath(source),
                  "arguments": [compiler] + command.args}]
     with open(os.path.join(unit_dir, "compile_commands.json"), "w") as out:
-        import json
         json.dump(database, out)
     unit = "u" + hashlib.sha1(os.path.abspath(obj).encode()).hexdigest()[:12]
     part = os.path.join(unit_dir, "part.json")
@@ -176,7 +176,6 @@ def compile_unit(compiler, command, index, source):
     if status != 0:
         return status
     with open(part) as f:
-        import json
         model = json.load(f)
     name = os.path.basename(source)
     pointed = os.path.exists(os.path.join(unit_dir, "tu0_points_" + name))
@@ -269,23 +268,43 @@ def archive_members(path, data):
         yield name, body
 
 
+def split_parts(origin, section):
+    """A part is one line of JSON; a relocatable link (ld -r) concatenates its objects' parts."""
+    for line in section.split(b"\n"):
+        if line.strip(b"\0 \t\r"):
+            yield origin, line.strip(b"\0 \t\r")
+
+
 def parts_of(path):
     with open(path, "rb") as f:
         data = f.read()
     if data.startswith((b"!<arch>\n", b"!<thin>\n")):
         for member, body in archive_members(path, data):
-            part = elf_section(body, PART_SECTION)
-            if part:
-                yield "%s(%s)" % (path, member), part
+            section = elf_section(body, PART_SECTION)
+            if section:
+                yield from split_parts("%s(%s)" % (path, member), section)
     else:
-        part = elf_section(data, PART_SECTION)
-        if part:
-            yield path, part
+        section = elf_section(data, PART_SECTION)
+        if section:
+            yield from split_parts(path, section)
+
+
+def expanded(args):
+    """The arguments with response files (@file, as Meson and Ninja write long commands) read."""
+    result = []
+    for arg in args:
+        if arg.startswith("@") and os.path.isfile(arg[1:]):
+            with open(arg[1:]) as f:
+                result.extend(expanded(shlex.split(f.read())))
+        else:
+            result.append(arg)
+    return result
 
 
 def link_inputs(command):
     search = []
-    args = command.args
+    args = expanded(command.args)
+    command = Command(args)
     for index, arg in enumerate(args):
         if arg == "-L" and index + 1 < len(args):
             search.append(args[index + 1])
@@ -394,6 +413,10 @@ def main(argv):
                                  "are compiled without symcr\n" % len(sources))
             return run([compiler] + command.args)
         return compile_unit(compiler, command, *sources[0])
+    if command.has("-shared", "-r", "-Wl,-r", "--relocatable"):
+        # A shared library's or a relocatable object's parts stay in it: the program's link reads
+        # a relocatable object's; a shared library holds no roots symcr can serve.
+        return run([compiler] + command.args)
     if sources:
         sys.stderr.write("symcr-wrapper: warning: compiling and linking in one command "
                          "bypasses symcr: compile with -c, then link\n")
