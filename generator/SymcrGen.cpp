@@ -603,8 +603,9 @@ int main(int argc, const char **argv) {
       if (!writeFileIfChanged(TU.PointedCopy, emitPointedCopy(Program, I), Diags))
         return 1;
     }
+    // A unit's schema source is written at the link, from every unit's part.
     std::string Schema = absolute(OutDir + "/symcr_schema.cpp");
-    if (!writeFileIfChanged(Schema, emitSchemaSource(Program), Diags))
+    if (Unit.empty() && !writeFileIfChanged(Schema, emitSchemaSource(Program), Diags))
       return 1;
     for (unsigned I = 0; I < Program.TranslationUnits.size(); ++I)
       if (!Program.TranslationUnits[I].LibraryOnly &&

@@ -9,14 +9,15 @@
 #     the header regenerates every source including it; a rebuild of nothing generates nothing.
 #   - with Meson, whose compilation database then names the wrapper ("symcr-c++ g++ ..."),
 #     symcr-gen run by hand over that database parses with g++'s command.
-#   run_pair.sh <make|meson> <wrapper dir> <this folder> <work dir> <symcr-gen>
+#   run_pair.sh <make|meson> <wrapper dir> <this folder> <work dir> <symcr-gen> [<flags>]
+# <flags> are added to every compile and link (a sanitizer build's, whose runtime needs them).
 set -euo pipefail
-system=$1 wrappers=$2 here=$3 work=$4 generator=$5
+system=$1 wrappers=$2 here=$3 work=$4 generator=$5 flags=${6:-}
 rm -rf "$work"
 mkdir -p "$work"
 cp -r "$here/rover_v0" "$here/rover_v1" "$work/"
 export SYMCR_WRAPPER_LOG="$work/wrapper.log"
-cxx="$wrappers/symcr-c++ g++"
+cxx="$wrappers/symcr-c++ g++${flags:+ $flags}"
 
 fail() {
   echo "FAIL ($system): $*" >&2
@@ -88,7 +89,8 @@ has_part() { readelf -S "$1" >"$work/sections.txt" && grep -q '\.symcr_part' "$w
 has_part "$main" || fail "$main carries no part"
 if has_part "$util"; then fail "$util carries a part"; fi
 if [ "$system" = make ]; then
-  g++ -O2 -std=c++17 -Wall -I"$work/rover_v0/include" -MMD -MP -c "$work/rover_v0/src/util.cpp" \
+  # shellcheck disable=SC2086 # the flags are words
+  g++ $flags -O2 -std=c++17 -Wall -I"$work/rover_v0/include" -MMD -MP -c "$work/rover_v0/src/util.cpp" \
     -o "$work/plain_util.o"
   cmp -s "$util" "$work/plain_util.o" || fail "util.o differs from a plain compile's"
 fi
