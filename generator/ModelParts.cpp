@@ -346,6 +346,32 @@ void remapFields(std::vector<FieldModel> &Fields, const std::vector<std::uint32_
     F.Type = remapped(F.Type, Map);
 }
 
+/// Every type index names a type of the part, every unit index one of its units: the merge and
+/// the emitters index with them.
+bool indicesInRange(const ProgramModel &Part) {
+  const std::size_t Types = Part.Types.size();
+  const std::size_t Units = Part.TranslationUnits.size();
+  auto TypeOk = [&](std::uint32_t I) { return I == symcr::kNoType || I < Types; };
+  auto FieldsOk = [&](const std::vector<FieldModel> &Fields) {
+    return std::all_of(Fields.begin(), Fields.end(),
+                       [&](const FieldModel &F) { return TypeOk(F.Type); });
+  };
+  for (const TypeModel &T : Part.Types)
+    if (T.HomeTU >= Units || !TypeOk(T.Element) || !FieldsOk(T.Fields) ||
+        !FieldsOk(T.ReferenceMembers) ||
+        !std::all_of(T.Alternatives.begin(), T.Alternatives.end(), TypeOk) ||
+        !std::all_of(T.DynamicTypes.begin(), T.DynamicTypes.end(),
+                     [&](std::uint32_t I) { return I < Types; }))
+      return false;
+  for (const RootModel &R : Part.Roots)
+    if (R.HomeTU >= Units || R.Type >= Types)
+      return false;
+  for (const ClockModel &C : Part.Clocks)
+    if (C.HomeTU >= static_cast<int>(Units))
+      return false;
+  return true;
+}
+
 } // namespace
 
 void nameSymbolsForUnit(ProgramModel &Program, const std::string &Unit) {
@@ -432,6 +458,10 @@ bool mergeModelPart(const std::string &File, ProgramModel &Program, Diagnostics 
   std::string Error;
   if (!PartReader(Error).program(*Value, Part, Keys) || !Error.empty()) {
     Diags.error(Where, "not a readable symcr-gen part: " + Error);
+    return false;
+  }
+  if (!indicesInRange(Part)) {
+    Diags.error(Where, "not a readable symcr-gen part: an index out of range");
     return false;
   }
   const bool First = Program.TranslationUnits.empty();
