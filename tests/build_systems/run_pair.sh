@@ -8,7 +8,8 @@
 #   - incrementally: touching one source regenerates that source alone and relinks; touching
 #     the header regenerates every source including it; a rebuild of nothing generates nothing.
 #   - with Meson, whose compilation database then names the wrapper ("symcr-c++ g++ ..."),
-#     symcr-gen run by hand over that database parses with g++'s command.
+#     symcr-gen run by hand over that database parses with g++'s command, and writes the
+#     schema source the wrapper's link wrote from the merged parts.
 #   run_pair.sh <make|meson> <wrapper dir> <this folder> <work dir> <symcr-gen> [<flags>]
 # <flags> are added to every compile and link (a sanitizer build's, whose runtime needs them).
 set -euo pipefail
@@ -115,5 +116,11 @@ if [ "$system" = meson ]; then
      --annotations .symcr src/main.cpp lib/rover.cpp) >"$work/by_hand.log" 2>&1 ||
     fail "symcr-gen over the wrapper's database: $(cat "$work/by_hand.log")"
   if grep -q error "$work/by_hand.log"; then fail "$(cat "$work/by_hand.log")"; fi
+  # The units' merged parts give the tables of one run over the same sources, in the same order:
+  # the same schema source but for the units' names in the generated code's symbols.
+  tables() { grep -v '^//' "$1" | sed -E 's/_u[0-9a-f]{12}_/_/g'; }
+  diff <(tables "$work/by_hand/symcr_schema.cpp") \
+       <(tables "$work/build_v0/rover.symcr/symcr_schema.cpp") >"$work/tables.diff" ||
+    fail "the merged parts' schema differs from one run's: $(cat "$work/tables.diff")"
 fi
 echo "$system: built from scratch and incrementally, v1 restored v0's checkpoint"
