@@ -180,7 +180,8 @@ def compile_unit(compiler, command, index, source):
     name = os.path.basename(source)
     pointed = os.path.exists(os.path.join(unit_dir, "tu0_points_" + name))
     if not model["roots"] and not pointed:
-        return run([compiler] + command.args)  # nothing of symcr's: the original command
+        status = run([compiler] + command.args)  # nothing of symcr's: the original command
+        return status if status != 0 else add_to_depfile(command, obj, annotations)
     wrapper = os.path.join(unit_dir, "tu0_" + name)
     unit_source = os.path.join(unit_dir, "unit" + os.path.splitext(name)[1])
     # .incbin: the assembler copies the part into the object, with no flags: never loaded.
@@ -192,11 +193,14 @@ def compile_unit(compiler, command, index, source):
     # The generated code includes symcr's headers: found after the project's own directories.
     args += ["-Wno-unknown-pragmas", "-idirafter", configured("include")]
     status = run([compiler] + args)
-    if status != 0:
-        return status
+    return status if status != 0 else add_to_depfile(command, obj, annotations)
+
+
+def add_to_depfile(command, obj, annotations):
+    """The sidecar is read by symcr-gen, not the compiler: editing it must recompile the source
+    (whether its unit had anything of symcr's or not: the edit may add a root to it)."""
     depfile = depfile_of(command, obj)
     if depfile and os.path.exists(depfile) and annotations:
-        # The sidecar is read by symcr-gen, not the compiler: editing it must recompile too.
         with open(depfile) as f:
             text = f.read()
         extra = " ".join(a.replace(" ", "\\ ") for a in annotations)

@@ -6,7 +6,8 @@
 #     nothing to do with (util.cpp) compiled into the same bytes as without the wrapper;
 #   - v1 restores v0's checkpoint at its restore point with the expected values;
 #   - incrementally: touching one source regenerates that source alone and relinks; touching
-#     the header regenerates every source including it; a rebuild of nothing generates nothing.
+#     the header, or the sidecar, regenerates every source including it, or reading it; a
+#     rebuild of nothing generates nothing.
 #   - with Meson, whose compilation database then names the wrapper ("symcr-c++ g++ ..."),
 #     symcr-gen run by hand over that database parses with g++'s command, and writes the
 #     schema source the wrapper's link wrote from the merged parts.
@@ -105,6 +106,10 @@ build v0 >/dev/null
 expect_log "$(echo "generate $work/rover_v0/lib/rover.cpp"; echo "link $v0")"
 sleep 1
 touch "$work/rover_v0/include/rover.hpp"
+build v0 >/dev/null
+expect_log "$(sources_of v0; echo "link $v0")"
+sleep 1
+touch "$work/rover_v0/.symcr" # read by symcr-gen for every source, even one without a root
 build v0 >/dev/null
 expect_log "$(sources_of v0; echo "link $v0")"
 restore_pair
