@@ -92,8 +92,8 @@ has_part "$main" || fail "$main carries no part"
 if has_part "$util"; then fail "$util carries a part"; fi
 if [ "$system" = make ]; then
   # shellcheck disable=SC2086 # the flags are words
-  g++ $flags -O2 -std=c++17 -Wall -I"$work/rover_v0/include" -MMD -MP -c "$work/rover_v0/src/util.cpp" \
-    -o "$work/plain_util.o"
+  g++ $flags -O2 -std=c++17 -Wall -I"$work/rover_v0/include" -MMD -MP \
+    -c "$work/rover_v0/src/util.cpp" -o "$work/plain_util.o"
   cmp -s "$util" "$work/plain_util.o" || fail "util.o differs from a plain compile's"
 fi
 
