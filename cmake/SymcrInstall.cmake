@@ -1,7 +1,8 @@
 # Install and export rules: the runtime library and headers, symcr-gen, the symcr CLI (which
-# symcr_add_compatibility_test runs) and the CMake package (symcrConfig.cmake with
-# symcr_add_checkpointing). All in the component "sdk", so `cmake --install <build> --component
-# sdk` installs what a consuming project needs.
+# symcr_add_compatibility_test runs), the CMake package (symcrConfig.cmake with
+# symcr_add_checkpointing) and, for other build systems, pkg-config's symcr.pc (the compiler
+# wrappers symcr-c++ and symcr-cc are installed by wrapper/). All in the component "sdk", so
+# `cmake --install <build> --component sdk` installs what a consuming project needs.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -33,3 +34,13 @@ install(FILES ${PROJECT_BINARY_DIR}/symcrConfig.cmake
               ${PROJECT_SOURCE_DIR}/cmake/SymcrCheckpointing.cmake
               ${PROJECT_SOURCE_DIR}/cmake/SymcrCompatibility.cmake
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/symcr COMPONENT sdk)
+
+# pkg-config (symcr.pc) for builds outside CMake: the runtime's flags and the tools' paths. Its
+# prefix is found from where the file is (pkg-config's ${pcfiledir}), so the installed tree may
+# move, as the CMake package may.
+file(RELATIVE_PATH SYMCR_PC_TO_PREFIX ${CMAKE_INSTALL_FULL_LIBDIR}/pkgconfig
+     ${CMAKE_INSTALL_PREFIX})
+string(REGEX REPLACE "/$" "" SYMCR_PC_TO_PREFIX "${SYMCR_PC_TO_PREFIX}")
+configure_file(${PROJECT_SOURCE_DIR}/cmake/symcr.pc.in ${PROJECT_BINARY_DIR}/symcr.pc @ONLY)
+install(FILES ${PROJECT_BINARY_DIR}/symcr.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig
+        COMPONENT sdk)

@@ -12,6 +12,7 @@
 #include "llvm/Support/Path.h"
 #include "llvm/Support/Program.h"
 
+#include <algorithm>
 #include <map>
 
 using namespace clang;
@@ -178,9 +179,38 @@ std::string CompileCommandAdapter::defaultStandard(const std::string &Compiler,
   return Result;
 }
 
+namespace {
+/// Programs a build puts in front of the compiler, which run it.
+bool isCompilerLauncher(llvm::StringRef Name) {
+  return Name == "symcr-c++" || Name == "symcr-cc" || Name == "ccache" || Name == "sccache" ||
+         Name == "distcc";
+}
+} // namespace
+
 CommandLineArguments
-CompileCommandAdapter::adapt(const CommandLineArguments &Args,
+CompileCommandAdapter::adapt(const CommandLineArguments &Command,
                              llvm::StringRef File) {
+  // A launcher in front of the compiler ("ccache g++"; "symcr-c++ g++" in a database written by
+  // a build through symcr's wrapper) is not the compiler, and the wrapper's options are not the
+  // compiler's. The flags the tooling inferred from the launcher's name (--driver-mode=, a
+  // target) follow the launcher: they stay, after the compiler.
+  CommandLineArguments Args(Command);
+  while (Args.size() > 1 && isCompilerLauncher(llvm::sys::path::filename(Args[0]))) {
+    std::size_t Compiler = 1;
+    while (Compiler + 1 < Args.size() &&
+           (llvm::StringRef(Args[Compiler]).startswith("--driver-mode=") ||
+            llvm::StringRef(Args[Compiler]).startswith("--target=")))
+      ++Compiler;
+    CommandLineArguments Unwrapped{Args[Compiler]};
+    Unwrapped.insert(Unwrapped.end(), Args.begin() + 1, Args.begin() + Compiler);
+    Unwrapped.insert(Unwrapped.end(), Args.begin() + Compiler + 1, Args.end());
+    Args = std::move(Unwrapped);
+  }
+  Args.erase(std::remove_if(Args.begin() + (Args.empty() ? 0 : 1), Args.end(),
+                            [](const std::string &Arg) {
+                              return llvm::StringRef(Arg).startswith("--symcr-");
+                            }),
+             Args.end());
   if (Args.empty())
     return Args;
   const llvm::opt::OptTable &Table = driver::getDriverOptTable();

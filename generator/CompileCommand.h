@@ -25,10 +25,11 @@ namespace symcr_gen {
 
 class CompileCommandAdapter {
 public:
-  /// The adjusted command for \p File: flags translated or dropped, and the
+  /// The adjusted command for \p File: a launcher in front of the compiler (ccache, symcr-c++)
+  /// and the wrapper's --symcr-* options dropped, flags translated or dropped, and the
   /// compiler's default -std added when the command has none.
   clang::tooling::CommandLineArguments
-  adapt(const clang::tooling::CommandLineArguments &Args, llvm::StringRef File);
+  adapt(const clang::tooling::CommandLineArguments &Command, llvm::StringRef File);
 
   /// Flags dropped because Clang does not know them, each once, for a warning.
   std::set<std::string> droppedFlags() const;

@@ -166,6 +166,9 @@ struct TypeModel {
   bool HasMigrate = false;
   /// Index of the TU whose wrapper defines this type's ops and layout checks.
   unsigned HomeTU = 0;
+  /// Names the home wrapper's code for the type (ops_<Symbol>, lifecycle_<Symbol>, ...): see
+  /// symbolOf().
+  std::string Symbol;
   /// A class restore may create as a heap object's dynamic type (kTypeDynamicType): its
   /// vtable's mangled name and the index of its address point, for Lifecycle::vtable.
   std::string VtableSymbol;
@@ -228,6 +231,7 @@ struct RootModel {
   std::uint32_t Flags = 0;
   std::vector<std::string> RenamedFrom;
   unsigned HomeTU = 0;
+  std::string Symbol; ///< names symcr_gen_root_<Symbol>: see symbolOf()
   /// Code in the home TU's wrapper that yields the root's address.
   std::string AddressExpression;
   /// Declarations the address expression needs (asm-label aliases, access
@@ -278,6 +282,7 @@ struct ClockModel {
   /// `symcr_gen_clock_<index>`, which calls CallExpression.
   int HomeTU = -1;
   std::string CallExpression;
+  std::string Symbol; ///< names symcr_gen_clock_<Symbol>: see symbolOf()
   /// Its function returns an unsigned 64-bit count: the thunk converts it explicitly.
   bool Unsigned64 = false;
 };
@@ -351,6 +356,14 @@ struct ProgramModel {
   /// Time members by clock name: where the first one is, for "no such clock" diagnostics.
   std::map<std::string, Location> ClockUses;
 };
+
+/// The suffix of the names of generated code for the type, root or clock at \p Index: the index
+/// itself when one run generates the whole program, or "<unit>_<index>" when each translation
+/// unit is generated on its own (--unit), so that the wrappers of separately generated units
+/// never define the same name and the schema source of their merged parts can name each one.
+inline std::string symbolOf(const std::string &Symbol, std::size_t Index) {
+  return Symbol.empty() ? std::to_string(Index) : Symbol;
+}
 
 inline bool TypeModel::hasValidate(const ProgramModel &Program) const {
   return HasValidate && !Spelling.empty() && !Program.TranslationUnits[HomeTU].IsC;

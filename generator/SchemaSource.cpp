@@ -74,33 +74,37 @@ private:
     OS << "namespace symcr_gen {\n";
     for (std::size_t I = 0; I < Program.Types.size(); ++I) {
       const TypeModel &T = Program.Types[I];
+      const std::string S = symbolOf(T.Symbol, I);
       if (emitsOps(Program, T))
-        OS << "extern const symcr::" << opsTableType(T.Ops) << " ops_" << I
+        OS << "extern const symcr::" << opsTableType(T.Ops) << " ops_" << S
            << ";\n";
       if (emitsLifecycle(Program, T) && !Program.TranslationUnits[T.HomeTU].IsC)
-        OS << "extern const symcr::Lifecycle lifecycle_" << I << ";\n";
+        OS << "extern const symcr::Lifecycle lifecycle_" << S << ";\n";
       if (T.hasValidate(Program))
-        OS << "bool validate_" << I << "(const void* object);\n";
+        OS << "bool validate_" << S << "(const void* object);\n";
       if (hasMigrate(Program, T))
-        OS << "void migrate_" << I
+        OS << "void migrate_" << S
            << "(void* object, const symcr::OldValues& old);\n";
     }
     OS << "}  // namespace symcr_gen\n\n";
     for (std::size_t I = 0; I < Program.Types.size(); ++I) {
       const TypeModel &T = Program.Types[I];
+      const std::string S = symbolOf(T.Symbol, I);
       if (emitsLifecycle(Program, T) && Program.TranslationUnits[T.HomeTU].IsC)
-        OS << "extern \"C\" const symcr::Lifecycle symcr_gen_c_lifecycle_" << I
+        OS << "extern \"C\" const symcr::Lifecycle symcr_gen_c_lifecycle_" << S
            << ";\n";
     }
     if (Schema.root_count != 0) {
       OS << "extern \"C\" {\n";
       for (std::uint32_t I = 0; I < Schema.root_count; ++I)
-        OS << "extern void* const symcr_gen_root_" << I << ";\n";
+        OS << "extern void* const symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I)
+           << ";\n";
       OS << "}\n\n";
     }
     // Each clock's reading thunk is in the wrapper of the source that declares its function.
     for (std::size_t I = 0; I < Program.Clocks.size(); ++I)
-      OS << "extern \"C\" std::int64_t symcr_gen_clock_" << I << "(void);\n";
+      OS << "extern \"C\" std::int64_t symcr_gen_clock_"
+         << symbolOf(Program.Clocks[I].Symbol, I) << "(void);\n";
     if (!Program.Clocks.empty())
       OS << "\n";
   }
@@ -121,7 +125,8 @@ private:
       return;
     OS << "const symcr::ClockInfo clocks[] = {\n";
     for (std::size_t I = 0; I < Program.Clocks.size(); ++I)
-      OS << "    {" << nameText(Program.Clocks[I].Name.c_str()) << ", symcr_gen_clock_" << I
+      OS << "    {" << nameText(Program.Clocks[I].Name.c_str()) << ", symcr_gen_clock_"
+         << symbolOf(Program.Clocks[I].Symbol, I)
          << ", " << I << "u},\n";
     OS << "};\n";
   }
@@ -216,6 +221,7 @@ private:
       const symcr::TypeInfo &T = Schema.types[I];
       const TypeModel &Model = Program.Types[I];
       const std::string Index = std::to_string(I);
+      const std::string Symbol = symbolOf(Model.Symbol, I);
       OS << "    {" << nameText(T.name) << ", symcr::Kind::" << kindName(T.kind)
          << ", " << T.flags << "u, " << T.size << "u, " << T.align << "u, "
          << (T.field_count ? "fields_" + Index : "nullptr") << ", "
@@ -227,17 +233,17 @@ private:
          << (T.alternative_count ? "alternatives_" + Index : "nullptr") << ", "
          << T.alternative_count << "u, "
          << static_cast<unsigned>(T.container_kind) << ", "
-         << (!emitsOps(Program, Model) ? "nullptr" : "&symcr_gen::ops_" + Index)
+         << (!emitsOps(Program, Model) ? "nullptr" : "&symcr_gen::ops_" + Symbol)
          << ", "
          << (!emitsLifecycle(Program, Model) ? std::string("nullptr")
              : Program.TranslationUnits[Model.HomeTU].IsC
-                 ? "&symcr_gen_c_lifecycle_" + Index
-                 : "&symcr_gen::lifecycle_" + Index)
+                 ? "&symcr_gen_c_lifecycle_" + Symbol
+                 : "&symcr_gen::lifecycle_" + Symbol)
          << ", "
-         << (Model.hasValidate(Program) ? "&symcr_gen::validate_" + Index
+         << (Model.hasValidate(Program) ? "&symcr_gen::validate_" + Symbol
                                          : std::string("nullptr"))
          << ", " << TypeRenamed[I] << ", "
-         << (hasMigrate(Program, Model) ? "&symcr_gen::migrate_" + Index
+         << (hasMigrate(Program, Model) ? "&symcr_gen::migrate_" + Symbol
                                         : std::string("nullptr"))
          << ", " << TypeLeft[I] << ", "
          << (T.reference_member_count ? "reference_members_" + Index : "nullptr")
@@ -315,7 +321,8 @@ private:
       for (std::uint32_t I = 0; I < Schema.root_count; ++I) {
         const symcr::RootInfo &R = Schema.roots[I];
         OS << "      {" << nameText(R.name) << ", " << R.type
-           << "u, symcr_gen_root_" << I << ", " << R.flags << "u, "
+           << "u, symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I) << ", "
+           << R.flags << "u, "
            << RootRenamed[I] << "},\n";
       }
       OS << "  };\n";

@@ -13,6 +13,7 @@
 #include "DeviceProfile.h"
 #include "PreviousPlans.h"
 #include "Emitter.h"
+#include "ModelParts.h"
 #include "ProgramPoints.h"
 #include "SchemaBuilder.h"
 #include "SchemaFile.h"
@@ -118,6 +119,21 @@ static llvm::cl::opt<std::string> ShownNotes(
     "shown-notes",
     llvm::cl::desc("Print a note only if this file, shared by the build's "
                    "generation steps, does not list it yet, and list it"),
+    llvm::cl::value_desc("file"), llvm::cl::cat(Category));
+static llvm::cl::opt<std::string> Unit(
+    "unit",
+    llvm::cl::desc("Generate the one source given as a unit of a program linked later from "
+                   "parts (--part-file, --link-part): its generated code is named after "
+                   "<name>, which must differ between the program's units"),
+    llvm::cl::value_desc("name"), llvm::cl::cat(Category));
+static llvm::cl::opt<std::string> PartFile(
+    "part-file",
+    llvm::cl::desc("With --unit: write the unit's part of the program's schema to this file"),
+    llvm::cl::value_desc("file"), llvm::cl::cat(Category));
+static llvm::cl::list<std::string> LinkParts(
+    "link-part",
+    llvm::cl::desc("Parse no source: merge the parts of the program's units (repeatable) and "
+                   "write its schema source (--out-dir) and schema file"),
     llvm::cl::value_desc("file"), llvm::cl::cat(Category));
 static llvm::cl::opt<bool>
     Timing("time", llvm::cl::desc("Print the time spent per source"),
@@ -334,6 +350,44 @@ private:
   std::shared_ptr<DependencyCollector> Collector;
 };
 
+/// --link-part: the program's model merged from its units' parts, written as one run over
+/// every source would write it (schema source and schema file; the wrappers exist already).
+int linkParts(Diagnostics &Diags) {
+  ProgramModel Program;
+  for (const std::string &File : LinkParts)
+    if (!mergeModelPart(File, Program, Diags))
+      break;
+  if (!Diags.errorCount() && !ProgramName.empty() && ProgramName != Program.Name)
+    Diags.error(Location(), "the parts are of program '" + Program.Name + "', not '" +
+                                ProgramName + "'");
+  if (!Diags.errorCount())
+    planPreviousSchemas(Program, PreviousSchemas, Diags);
+  if (Diags.errorCount()) {
+    Diags.releaseNotes();
+    llvm::errs() << "symcr-gen: " << Diags.errorCount() << " error(s); nothing generated\n";
+    return 1;
+  }
+  if (Program.Roots.empty())
+    Diags.warning(Location(), "no roots in any part: the schema is empty");
+  if (!ReportFile.empty() &&
+      !writeFileIfChanged(ReportFile, renderReport(Program) + renderPointsReport(Program), Diags))
+    return 1;
+  if (!SchemaFile.empty()) {
+    llvm::StringRef Parent = llvm::sys::path::parent_path(SchemaFile);
+    if (!Parent.empty())
+      llvm::sys::fs::create_directories(Parent);
+    if (!writeSchemaFile(Program, SchemaFile, Diags))
+      return 1;
+  }
+  if (!OutDir.empty()) {
+    llvm::sys::fs::create_directories(OutDir);
+    if (!writeFileIfChanged(absolute(OutDir + "/symcr_schema.cpp"), emitSchemaSource(Program),
+                            Diags))
+      return 1;
+  }
+  return 0;
+}
+
 class GenerateActionFactory : public FrontendActionFactory {
 public:
   GenerateActionFactory(SchemaBuilder &Builder, ProgramPoints &Points,
@@ -359,9 +413,21 @@ private:
 
 int main(int argc, const char **argv) {
   auto Parser =
-      CommonOptionsParser::create(argc, argv, Category, llvm::cl::OneOrMore);
+      CommonOptionsParser::create(argc, argv, Category, llvm::cl::ZeroOrMore);
   if (!Parser) {
     llvm::errs() << "symcr-gen: " << llvm::toString(Parser.takeError()) << "\n";
+    return 2;
+  }
+  if (Parser->getSourcePathList().empty() == LinkParts.empty()) {
+    llvm::errs() << "symcr-gen: give either sources or --link-part files\n";
+    return 2;
+  }
+  if (!Unit.empty() && Parser->getSourcePathList().size() != 1) {
+    llvm::errs() << "symcr-gen: --unit generates exactly one source\n";
+    return 2;
+  }
+  if (!PartFile.empty() && Unit.empty()) {
+    llvm::errs() << "symcr-gen: --part-file needs --unit\n";
     return 2;
   }
   Diagnostics Diags;
@@ -377,6 +443,9 @@ int main(int argc, const char **argv) {
     parseSidecarFile(File, Sidecar, Diags);
   if (Diags.errorCount())
     return 1;
+
+  if (!LinkParts.empty())
+    return linkParts(Diags);
 
   ProgramModel Program;
   Program.Profile = Profile;
@@ -481,8 +550,10 @@ int main(int argc, const char **argv) {
   }
   // A source that could not be parsed defines roots and types nothing else
   // sees: "matches nothing" would then be a false lead.
-  Builder.finish(/*CheckUnmatched=*/UnparsedSources == 0);
-  Points.finish(/*CheckUnmatched=*/UnparsedSources == 0);
+  // A unit is one source of many: what the annotations name may be in another.
+  const bool CheckUnmatched = UnparsedSources == 0 && Unit.empty();
+  Builder.finish(CheckUnmatched);
+  Points.finish(CheckUnmatched);
   if (Program.Profile == RuntimeProfile::Device)
     checkDeviceProfile(Program, Diags);
   if (!UnparsedSources && !Diags.errorCount())
@@ -498,7 +569,11 @@ int main(int argc, const char **argv) {
     return 1;
   }
 
-  if (Program.Roots.empty())
+  if (!Unit.empty())
+    nameSymbolsForUnit(Program, Unit);
+  if (!PartFile.empty() && !writeFileIfChanged(PartFile, writeModelPart(Program), Diags))
+    return 1;
+  if (Program.Roots.empty() && Unit.empty())
     Diags.warning(Location(),
                   "no roots: nothing is annotated with SYMCR_CHECKPOINT "
                   "or a checkpoint directive; the schema is empty");
@@ -528,8 +603,9 @@ int main(int argc, const char **argv) {
       if (!writeFileIfChanged(TU.PointedCopy, emitPointedCopy(Program, I), Diags))
         return 1;
     }
+    // A unit's schema source is written at the link, from every unit's part.
     std::string Schema = absolute(OutDir + "/symcr_schema.cpp");
-    if (!writeFileIfChanged(Schema, emitSchemaSource(Program), Diags))
+    if (Unit.empty() && !writeFileIfChanged(Schema, emitSchemaSource(Program), Diags))
       return 1;
     for (unsigned I = 0; I < Program.TranslationUnits.size(); ++I)
       if (!Program.TranslationUnits[I].LibraryOnly &&

@@ -64,7 +64,7 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
   auto ClockThunks = [&](const char *Int64, const char *Uint64, bool C) {
     for (std::size_t I : Clocks) {
       const ClockModel &Clock = Program.Clocks[I];
-      const std::string Name = "symcr_gen_clock_" + std::to_string(I);
+      const std::string Name = "symcr_gen_clock_" + symbolOf(Clock.Symbol, I);
       OS << Int64 << " " << Name << "(void);\n" << Int64 << " " << Name << "(void) {\n";
       if (Clock.Unsigned64)
         OS << "  const " << Uint64 << " reading = " << Clock.CallExpression << ";\n  return "
@@ -82,24 +82,26 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
     bool LifecycleDeclared = false;
     for (std::uint32_t I : Home) {
       const TypeModel &T = Program.Types[I];
+    const std::string S = symbolOf(T.Symbol, I);
       if (!emitsLifecycle(Program, T))
         continue;
       if (!LifecycleDeclared)
         OS << "struct symcr_gen_lifecycle {\n  void* (*create)(void);\n"
               "  void (*destroy)(void* object);\n  const void* vtable;\n};\n";
       LifecycleDeclared = true;
-      OS << "static void* symcr_gen_create_" << I
+      OS << "static void* symcr_gen_create_" << S
          << "(void) { return calloc(1, sizeof(" << T.Spelling << ")); }\n"
-         << "static void symcr_gen_destroy_" << I
+         << "static void symcr_gen_destroy_" << S
          << "(void* object) { free(object); }\n"
          << "extern const struct symcr_gen_lifecycle symcr_gen_c_lifecycle_"
-         << I << ";\n"
-         << "const struct symcr_gen_lifecycle symcr_gen_c_lifecycle_" << I
-         << " = {symcr_gen_create_" << I << ", symcr_gen_destroy_" << I
+         << S << ";\n"
+         << "const struct symcr_gen_lifecycle symcr_gen_c_lifecycle_" << S
+         << " = {symcr_gen_create_" << S << ", symcr_gen_destroy_" << S
          << ", NULL};\n";
     }
     for (std::uint32_t I : Home) {
       const TypeModel &T = Program.Types[I];
+    const std::string S = symbolOf(T.Symbol, I);
       if (T.Spelling.empty())
         continue;
       OS << "_Static_assert(sizeof(" << T.Spelling << ") == " << T.Size
@@ -115,8 +117,9 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
     }
     // Declared first, as in C++: -Wmissing-variable-declarations.
     for (std::uint32_t I : Roots)
-      OS << "extern void* const symcr_gen_root_" << I << ";\n"
-         << "void* const symcr_gen_root_" << I << " = "
+      OS << "extern void* const symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I)
+         << ";\n"
+         << "void* const symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I) << " = "
          << Program.Roots[I].AddressExpression << ";\n";
     if (!Clocks.empty())
       OS << "#include <stdint.h>\n";
@@ -157,27 +160,29 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
   };
   for (std::uint32_t I : Home) {
     const TypeModel &T = Program.Types[I];
+    const std::string S = symbolOf(T.Symbol, I);
     if (T.Spelling.empty() || IsScalar(T) || !Deduces)
       continue;
-    OS << "struct type_tag_" << I << " { friend auto type_of(type_tag_" << I
+    OS << "struct type_tag_" << S << " { friend auto type_of(type_tag_" << S
        << "); };\n"
-       << "template struct export_type<type_tag_" << I << ", " << T.Spelling
+       << "template struct export_type<type_tag_" << S << ", " << T.Spelling
        << ">;\n";
   }
   OS << "}  // namespace symcr_gen_access\n\n";
   OS << "namespace symcr_gen {\n";
   for (std::uint32_t I : Home) {
     const TypeModel &T = Program.Types[I];
+    const std::string S = symbolOf(T.Symbol, I);
     if (T.Spelling.empty() || (!Deduces && !T.Accessible))
       continue;
     std::string Type = T.Spelling;
     if (!IsScalar(T)) {
-      Type = "type_" + std::to_string(I);
+      Type = "type_" + S;
       OS << "// " << T.Name << "\n";
       if (Deduces)
         OS << "typedef std::remove_pointer<decltype(type_of(symcr_gen_access::"
               "type_tag_"
-           << I << "{}))>::type " << Type << ";\n";
+           << S << "{}))>::type " << Type << ";\n";
       else
         OS << "typedef " << T.Spelling << " " << Type << ";\n";
     }
@@ -190,36 +195,36 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
            << ") == " << F.Offset << ", \"symcr-gen: offset of " << T.Name
            << "::" << F.Name << " differs\");\n";
     if (emitsOps(Program, T))
-      OS << "extern const symcr::" << opsTableType(T.Ops) << " ops_" << I
+      OS << "extern const symcr::" << opsTableType(T.Ops) << " ops_" << S
          << ";\n"
-         << "const symcr::" << opsTableType(T.Ops) << " ops_" << I
+         << "const symcr::" << opsTableType(T.Ops) << " ops_" << S
          << " = symcr::ops::" << opsTemplate(T.Ops) << "<" << Type
          << ">::table;\n";
     if (emitsLifecycle(Program, T) && T.VtableSymbol.empty())
-      OS << "extern const symcr::Lifecycle lifecycle_" << I << ";\n"
-         << "const symcr::Lifecycle lifecycle_" << I
+      OS << "extern const symcr::Lifecycle lifecycle_" << S << ";\n"
+         << "const symcr::Lifecycle lifecycle_" << S
          << " = symcr::ops::lifecycle<" << Type << ">::table;\n";
     // A heap object's dynamic type is recognised by its vtable, named by its
     // mangled symbol (a GNU asm label: there is no other way to name it).
     if (emitsLifecycle(Program, T) && !T.VtableSymbol.empty())
-      OS << "extern const void* const vtable_" << I << "[] __asm__(\""
+      OS << "extern const void* const vtable_" << S << "[] __asm__(\""
          << T.VtableSymbol << "\");\n"
-         << "extern const symcr::Lifecycle lifecycle_" << I << ";\n"
-         << "const symcr::Lifecycle lifecycle_" << I
+         << "extern const symcr::Lifecycle lifecycle_" << S << ";\n"
+         << "const symcr::Lifecycle lifecycle_" << S
          << " = {&symcr::ops::lifecycle<" << Type << ">::create, "
-         << "&symcr::ops::lifecycle<" << Type << ">::destroy, vtable_" << I
+         << "&symcr::ops::lifecycle<" << Type << ">::destroy, vtable_" << S
          << " + " << T.VtableAddressPoint << "};\n";
     // Unqualified: argument-dependent lookup finds a hook in the type's
     // namespace (or a hidden friend), ordinary lookup a global one.
     if (T.hasValidate(Program))
-      OS << "bool validate_" << I << "(const void* object);\n"
-         << "bool validate_" << I << "(const void* object) {\n"
+      OS << "bool validate_" << S << "(const void* object);\n"
+         << "bool validate_" << S << "(const void* object) {\n"
          << "  return symcr_validate(*static_cast<const " << Type
          << "*>(object));\n}\n";
     if (hasMigrate(Program, T))
-      OS << "void migrate_" << I
+      OS << "void migrate_" << S
          << "(void* object, const symcr::OldValues& old);\n"
-         << "void migrate_" << I
+         << "void migrate_" << S
          << "(void* object, const symcr::OldValues& old) {\n"
          << "  symcr_migrate(*static_cast<" << Type << "*>(object), old);\n}\n";
   }
@@ -229,8 +234,9 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
   if (!Roots.empty()) {
     OS << "extern \"C\" {\n";
     for (std::uint32_t I : Roots)
-      OS << "extern void* const symcr_gen_root_" << I << ";\n"
-         << "void* const symcr_gen_root_" << I << " = "
+      OS << "extern void* const symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I)
+         << ";\n"
+         << "void* const symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I) << " = "
          << Program.Roots[I].AddressExpression << ";\n";
     OS << "}\n";
   }

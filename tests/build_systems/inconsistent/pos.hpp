@@ -1,0 +1,5 @@
+#pragma once
+struct Pos {
+  int x;
+  int y;
+};
