@@ -19,7 +19,7 @@ const char* result_text(Result result) {
     case Result::FutureVersion:
       return "record from a newer format";
     case Result::OtherSchema:
-      return "record of another build's schema";
+      return "record of another build's schema, with no plan for it";
     case Result::OtherProgram:
       return "record of another program";
     case Result::Rejected:
@@ -35,10 +35,11 @@ const char* result_text(Result result) {
 }
 
 Build program_build() {
-  Build build{nullptr, 0};
+  Build build{nullptr, 0, nullptr, 0};
   if (symcr_program_schema == nullptr || symcr_program_schema_hash == nullptr) return build;
   build.schema = symcr_program_schema();
   build.schema_hash = symcr_program_schema_hash();
+  if (symcr_program_plans != nullptr) build.plans = symcr_program_plans(&build.plan_count);
   return build;
 }
 
