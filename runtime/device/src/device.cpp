@@ -19,7 +19,7 @@ const char* result_text(Result result) {
     case Result::FutureVersion:
       return "record from a newer format";
     case Result::OtherSchema:
-      return "record of another build's schema, with no plan for it";
+      return "record of another build's schema";
     case Result::OtherProgram:
       return "record of another program";
     case Result::Rejected:
