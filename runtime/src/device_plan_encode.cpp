@@ -133,9 +133,8 @@ class DeviceEncoder {
     const bool ranged = field && field->has_range;
     switch (n.action) {
       case Action::Skip:
-        return;
-      case Action::Reject:
-        return fail(path, "cannot be restored into this build (" + n.detail + ")" + kFixes);
+      case Action::Reject:  // its type changed beyond the rules: this build's value stays, as
+        return;             // on the host (the build's report lists it)
       case Action::Union:
         return copy(wire, dst, r_.types[n.reader].size);
       case Action::Scalar: {

@@ -46,19 +46,7 @@ inline int save(int argc, char** argv) {
     std::fprintf(stderr, "checkpoint failed: %s\n", status.message());
     return 1;
   }
-  // XV_DEVICE_PLAN=1: restores v0's <checkpoint> through the device profile with the device plan
-// image made for v0's schema (embedded_plan_check.cpp), saves it (XV_RESAVE) and exits.
-inline void restore_through_device_plan_and_exit(const char* path) {
-  if (xv_restore_through_device_plan == nullptr) {
-    std::fprintf(stderr, "XV_DEVICE_PLAN: this program has no device plan check linked\n");
-    std::exit(1);
-  }
-  if (xv_restore_through_device_plan(path) != 0) std::exit(1);
-  save_if_asked("XV_RESAVE");
-  std::exit(0);
-}
-
-// The live pairs (live/host.cpp): XV_LIVE_AT_SAVE holds the address of the host's function
+  // The live pairs (live/host.cpp): XV_LIVE_AT_SAVE holds the address of the host's function
   // that runs v1 on this build's state, here, while it is live; its verdict is v0's.
   if (const char* hook = std::getenv("XV_LIVE_AT_SAVE")) {
     using RunV1 = int (*)(const void* v0_schema);
