@@ -162,10 +162,11 @@ class DeviceEncoder {
     const TypeInfo& wt = w_.types[n.writer];
     const TypeInfo& rt = r_.types[n.reader];
     const std::uint8_t from = scalar_of(w_, wt), to = scalar_of(r_, rt);
-    if (((from >> 4) == dp::kFloat) != ((to >> 4) == dp::kFloat)) {
+    if ((wt.kind == Kind::Enum) != (rt.kind == Kind::Enum) &&
+        ((from >> 4) == dp::kFloat || (to >> 4) == dp::kFloat)) {
       return fail(path, std::string("was a ") + wt.name + " and is a " + rt.name +
-                            " now: the device profile converts integers to integers and "
-                            "floating point to floating point only" + kFixes);
+                            " now: the device profile converts an enum to and from integers "
+                            "only" + kFixes);
     }
     std::vector<std::uint64_t> pairs;
     if (wt.kind == Kind::Enum && rt.kind == Kind::Enum) {

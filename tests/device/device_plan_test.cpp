@@ -380,19 +380,19 @@ TEST(DevicePlan, ADamagedImageOrRecordIsRefusedAndChangesNothing) {
 // What the device cannot carry out is refused when the image is made (symcr-gen's build-time
 // error), naming the member path and the fixes.
 TEST(DevicePlan, WhatTheDeviceCannotResolveIsRefusedWithThePathAndTheFix) {
-  // V1 with `speed` an integer: floating point to integer is the host's conversion only.
+  // V1 whose Mode has none of V0's enumerators: no value of it could be restored, which the
+  // host decides per value and the device, all or nothing, cannot.
   TypeInfo types[kTypes1];
   std::memcpy(static_cast<void*>(types), kTypesV1, sizeof types);
-  FieldInfo fields[10];
-  std::memcpy(static_cast<void*>(fields), kVehicleV1, sizeof fields);
-  fields[8].type = kI32_1;
-  types[kVehicle1].fields = fields;
+  const symcr::EnumeratorInfo renamed[] = {{"Hover", 1}, {"Mission", 2}};
+  types[kMode1].enumerators = renamed;
+  types[kMode1].enumerator_count = 2;
   const symcr::Schema reader{types, kTypes1, kRootsV1, 2, "plan-test"};
   std::vector<std::uint8_t> image;
   std::string error;
   EXPECT_FALSE(symcr::detail::device_plan_image_for(kSchemaV0, hash_of(kSchemaV0), reader,
                                                     hash_of(reader), image, error));
-  EXPECT_NE(error.find("'vehicle.speed'"), std::string::npos) << error;
+  EXPECT_NE(error.find("'vehicle.mode'"), std::string::npos) << error;
   EXPECT_NE(error.find("SYMCR_SKIP"), std::string::npos) << error;
   EXPECT_NE(error.find("symcr convert"), std::string::npos) << error;
 }

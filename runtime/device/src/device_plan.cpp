@@ -16,6 +16,7 @@ using detail::load16;
 using detail::load32;
 using detail::load64;
 namespace p = plan;
+constexpr double kFloatMax = 3.40282346638528859811704183484516925440e+38;
 
 class PlanRunner {
  public:
@@ -214,7 +215,7 @@ class PlanRunner {
       }
       if (!mapped) return Result::Rejected;
     }
-    const bool is_signed = from_kind == p::kSigned || (pairs != 0 && to_kind == p::kSigned);
+    bool is_signed = from_kind == p::kSigned || (pairs != 0 && to_kind == p::kSigned);
     const double as_real = from_float ? real
                            : is_signed ? static_cast<double>(static_cast<std::int64_t>(raw))
                                        : static_cast<double>(raw);
@@ -227,15 +228,34 @@ class PlanRunner {
     }
     std::uint64_t out = 0;
     if (to_kind == p::kFloat) {
-      if (!from_float) return Result::Corrupt;  // the encoder converts only float to float
+      // An integer must come back exactly; a double narrowed is rounded, within float's range.
+      const double value = as_real;
       if (to_size == 4) {
-        const float f = static_cast<float>(real);
+        const float f = static_cast<float>(value);
+        if (value == value && (value > kFloatMax || value < -kFloatMax) &&
+            value != value * 2) {  // finite, beyond float: not rounded to infinity
+          return Result::Rejected;
+        }
+        if (!from_float && !same_integer(static_cast<double>(f), raw, is_signed)) {
+          return Result::Rejected;
+        }
         std::memcpy(&out, &f, 4);
+      } else if (to_size == 8) {
+        if (!from_float && !same_integer(value, raw, is_signed)) return Result::Rejected;
+        std::memcpy(&out, &value, 8);
       } else {
-        std::memcpy(&out, &real, 8);
+        return Result::Corrupt;
       }
     } else {
-      if (from_float) return Result::Corrupt;
+      if (from_float) {  // to an integer: integral, then checked as one
+        if (!(real >= -9223372036854775808.0 && real < 18446744073709551616.0)) {
+          return Result::Rejected;
+        }
+        is_signed = real < 0;
+        raw = is_signed ? static_cast<std::uint64_t>(static_cast<std::int64_t>(real))
+                        : static_cast<std::uint64_t>(real);
+        if (!same_integer(real, raw, is_signed)) return Result::Rejected;
+      }
       // The value must survive the reader's integer (or bit-field) width.
       const unsigned bits = width != 0 ? width : static_cast<unsigned>(8 * to_size);
       const bool to_signed = to_kind == p::kSigned;
@@ -264,6 +284,18 @@ class PlanRunner {
     bits = (bits & ~(mask << bit_offset)) | ((out & mask) << bit_offset);
     std::memcpy(at, &bits, unit);
     return Result::Ok;
+  }
+
+  // Whether `value` is exactly the integer `raw` (signed or not).
+  static bool same_integer(double value, std::uint64_t raw, bool is_signed) {
+    if (is_signed) {
+      if (!(value >= -9223372036854775808.0 && value < 9223372036854775808.0)) return false;
+      return static_cast<std::int64_t>(value) == static_cast<std::int64_t>(raw) &&
+             static_cast<double>(static_cast<std::int64_t>(value)) == value;
+    }
+    if (!(value >= 0 && value < 18446744073709551616.0)) return false;
+    return static_cast<std::uint64_t>(value) == raw &&
+           static_cast<double>(static_cast<std::uint64_t>(value)) == value;
   }
 
   // A pointer: null, outside the roots (the running build's value stays), or a reference whose
