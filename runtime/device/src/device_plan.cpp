@@ -395,6 +395,14 @@ class PlanRunner {
 
 }  // namespace
 
+// What a build's generated code references when it carries plans, so that the linker takes
+// this file (the executor) into the firmware; others leave it out.
+extern "C" const char symcr_device_plan_executor = 1;
+
+Build::Build(const Schema* schema_, std::uint64_t schema_hash_, const PlannedSchema* plans_,
+             std::uint32_t plan_count_)
+    : schema(schema_), schema_hash(schema_hash_), plans(plans_), plan_count(plan_count_) {}
+
 const PlannedSchema* detail::plan_for_writer(const Build& build, std::uint64_t writer_hash) {
   for (std::uint32_t i = 0; build.plans != nullptr && i < build.plan_count; ++i) {
     const PlannedSchema& planned = build.plans[i];

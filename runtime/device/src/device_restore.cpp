@@ -277,7 +277,7 @@ Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t s
   }
   *planned = nullptr;
   if (schema_hash != build.schema_hash) {
-    *planned = detail::plan_for_writer(build, schema_hash);
+    if (detail::plan_for_writer != nullptr) *planned = detail::plan_for_writer(build, schema_hash);
     if (*planned == nullptr) return Result::OtherSchema;
   }
   const std::uint32_t writer = load32(bytes + detail::kOffsetProgramId);

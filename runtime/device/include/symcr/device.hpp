@@ -46,10 +46,16 @@ const char* result_text(Result result);
 // symcr-gen emits as constants (symcr_program_schema_hash()).
 // `plans`: how checkpoints of previous builds restore into this one (symcr-gen's
 // PREVIOUS_SCHEMA, one plan image per previous build; null and 0 when there are none).
+//
+// Restoring through plans needs the cross-version executor, which a firmware links only when
+// it uses plans (a few KB of flash): the generated code of a build with PREVIOUS_SCHEMA links
+// it, and so does the four-argument constructor. A Build given plans any other way restores
+// another build's record as OtherSchema.
 struct Build {
-  Build(const Schema* schema_ = nullptr, std::uint64_t schema_hash_ = 0,
-        const PlannedSchema* plans_ = nullptr, std::uint32_t plan_count_ = 0)
-      : schema(schema_), schema_hash(schema_hash_), plans(plans_), plan_count(plan_count_) {}
+  Build(const Schema* schema_ = nullptr, std::uint64_t schema_hash_ = 0)
+      : schema(schema_), schema_hash(schema_hash_), plans(nullptr), plan_count(0) {}
+  Build(const Schema* schema_, std::uint64_t schema_hash_, const PlannedSchema* plans_,
+        std::uint32_t plan_count_);
   const Schema* schema;
   std::uint64_t schema_hash;
   const PlannedSchema* plans;
