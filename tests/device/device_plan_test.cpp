@@ -280,6 +280,22 @@ TEST(DevicePlan, RestoresAPreviousBuildsCheckpointValueByValue) {
   EXPECT_EQ(v1.target, &v1.route[0]);
 }
 
+// After restoring V0's checkpoint, V1 checkpoints in its own format: the same-build path.
+TEST(DevicePlan, TheNewBuildThenRestoresItsOwnCheckpoints) {
+  const Devices devices;
+  clock_now = 0;
+  fill_v0(5);
+  ASSERT_EQ(devices.restore_v1(devices.save_v0()), Result::Ok);
+  const VehicleV1 restored = v1;
+  std::vector<std::uint8_t> own(symcr::device::record_size(kSchemaV1));
+  std::size_t size = 0;
+  ASSERT_EQ(symcr::device::save(devices.v1_build, 6, own.data(), own.size(), &size), Result::Ok);
+  own.resize(size);
+  initial_v1();
+  ASSERT_EQ(devices.restore_v1(own), Result::Ok);
+  expect_same_v1(restored, 9);
+}
+
 TEST(DevicePlan, EqualsTheHostRuntimesCrossVersionRestore) {
   const Devices devices;
   for (int seed = 0; seed < 12; ++seed) {
