@@ -285,6 +285,7 @@ TEST(DevicePlan, TheNewBuildThenRestoresItsOwnCheckpoints) {
   const Devices devices;
   clock_now = 0;
   fill_v0(5);
+  initial_v1();
   ASSERT_EQ(devices.restore_v1(devices.save_v0()), Result::Ok);
   const VehicleV1 restored = v1;
   std::vector<std::uint8_t> own(symcr::device::record_size(kSchemaV1));
