@@ -53,7 +53,11 @@ class DeviceEncoder {
       error = error_;
       return false;
     }
-    paths();
+    if (!paths()) {
+      error = "'" + std::string(w_.root_count ? w_.roots[0].name : "") +
+              "' makes a plan too large for the device (more than 65,534 types or members)";
+      return false;
+    }
     image.clear();
     image.insert(image.end(), dp::kPlanMagic, dp::kPlanMagic + sizeof dp::kPlanMagic);
     put_u16(image, dp::kPlanVersion);
@@ -66,6 +70,7 @@ class DeviceEncoder {
     put_u16(image, static_cast<std::uint16_t>(path_roots_.size() / 2));
     put_u16(image, static_cast<std::uint16_t>(path_types_.size() / 2));
     put_u32(image, static_cast<std::uint32_t>(path_fields_.size() / 2));
+    static_assert(dp::kPathEntrySize == 4, "path entries are u16 pairs");
     for (const Op& op : ops_) {
       put_u8(image, op.code);
       put_u8(image, op.a);
@@ -74,8 +79,8 @@ class DeviceEncoder {
       put_u32(image, op.dst);
     }
     for (std::uint64_t entry : table_) put_u64(image, entry);
-    for (const std::vector<std::uint32_t>* words : {&path_roots_, &path_types_, &path_fields_}) {
-      for (std::uint32_t word : *words) put_u32(image, word);
+    for (const std::vector<std::uint32_t>* halves : {&path_roots_, &path_types_, &path_fields_}) {
+      for (std::uint32_t half : *halves) put_u16(image, static_cast<std::uint16_t>(half));
     }
     return true;
   }
@@ -264,11 +269,20 @@ class DeviceEncoder {
   }
 
   // References by path: the writer's roots and types, each struct's members mapped to the
-  // reader's by the plan. Only for a writer with pointers.
-  void paths() {
+  // reader's by the plan. Only for a writer with pointers. False when an index does not fit
+  // the tables' 16 bits.
+  bool paths() {
     bool pointers = false;
     for (std::uint32_t t = 0; t < w_.type_count; ++t) pointers |= w_.types[t].kind == Kind::Pointer;
-    if (!pointers) return;
+    if (!pointers) return true;
+    // kNone (removed) becomes kNoPathIndex; any other index must stay below it.
+    const auto narrow = [](std::vector<std::uint32_t>& halves) {
+      for (std::uint32_t& half : halves) {
+        if (half == dp::kNone) half = dp::kNoPathIndex;
+        else if (half >= dp::kNoPathIndex) return false;
+      }
+      return true;
+    };
     for (std::uint32_t i = 0; i < w_.root_count; ++i) {
       path_roots_.push_back(w_.roots[i].type);
       path_roots_.push_back(plan_.roots[i].reader_root);
@@ -286,7 +300,8 @@ class DeviceEncoder {
             break;
           }
         }
-        path_types_.push_back(dp::kPathStruct | type.field_count << 8);
+        if (type.field_count >= dp::kNoPathIndex >> 2) return false;
+        path_types_.push_back(dp::kPathStruct | type.field_count << 2);
         path_types_.push_back(static_cast<std::uint32_t>(path_fields_.size() / 2));
         for (std::uint32_t f = 0; f < type.field_count; ++f) {
           path_fields_.push_back(type.fields[f].type);
@@ -298,6 +313,7 @@ class DeviceEncoder {
         path_types_.push_back(0);
       }
     }
+    return narrow(path_roots_) && narrow(path_types_) && narrow(path_fields_);
   }
 
   const Plan& plan_;

@@ -47,7 +47,8 @@ class PlanRunner {
     ops_ = image_ + p::kPlanHeaderSize;
     table_ = ops_ + op_count_ * p::kOpSize;
     paths_ = table_ + table_count_ * std::size_t{8};
-    const std::size_t paths = (std::size_t{writer_roots_} + writer_types_ + path_fields_) * 8;
+    const std::size_t paths =
+        (std::size_t{writer_roots_} + writer_types_ + path_fields_) * p::kPathEntrySize;
     if (path_fields_ > image_size_ || writer_clocks_ > kMaxClocks ||
         static_cast<std::size_t>(paths_ - image_) + paths != image_size_) {
       return Result::Corrupt;
@@ -323,26 +324,27 @@ class PlanRunner {
     const std::uint32_t writer_root = load32(payload_ + at + 1);
     const std::size_t step_count = load16(payload_ + at + 5);
     if (writer_root >= writer_roots_) return Result::Corrupt;
+    // Each table's entries: two u16, the first at `entry`, the second 2 bytes on.
     const std::uint8_t* roots = paths_;
-    const std::uint8_t* types = roots + 8 * std::size_t{writer_roots_};
-    const std::uint8_t* fields = types + 8 * std::size_t{writer_types_};
-    std::uint32_t writer_type = load32(roots + 8 * writer_root);
-    const std::uint32_t reader_root = load32(roots + 8 * writer_root + 4);
-    if (reader_root == p::kNone) return Result::Rejected;  // its root was removed
+    const std::uint8_t* types = roots + p::kPathEntrySize * writer_roots_;
+    const std::uint8_t* fields = types + p::kPathEntrySize * writer_types_;
+    std::uint32_t writer_type = load16(roots + p::kPathEntrySize * writer_root);
+    const std::uint32_t reader_root = load16(roots + p::kPathEntrySize * writer_root + 2);
+    if (reader_root == p::kNoPathIndex) return Result::Rejected;  // its root was removed
     std::uint32_t steps[kMaxPathSteps];
     for (std::size_t s = 0; s < step_count; ++s) {
       const std::uint32_t step = load32(payload_ + at + 7 + 4 * s);
       if (writer_type >= writer_types_) return Result::Corrupt;
-      const std::uint32_t kind = load32(types + 8 * writer_type);
-      const std::uint32_t next = load32(types + 8 * writer_type + 4);
-      if ((kind & 0xFF) == p::kPathStruct) {
-        if (step >= (kind >> 8) || next > path_fields_ || step >= path_fields_ - next) {
+      const std::uint32_t kind = load16(types + p::kPathEntrySize * writer_type);
+      const std::uint32_t next = load16(types + p::kPathEntrySize * writer_type + 2);
+      if ((kind & 3) == p::kPathStruct) {
+        if (step >= (kind >> 2) || next > path_fields_ || step >= path_fields_ - next) {
           return Result::Corrupt;
         }
-        writer_type = load32(fields + 8 * (next + step));
-        steps[s] = load32(fields + 8 * (next + step) + 4);
-        if (steps[s] == p::kNone) return Result::Rejected;  // its member was removed
-      } else if ((kind & 0xFF) == p::kPathArray) {
+        writer_type = load16(fields + p::kPathEntrySize * (next + step));
+        steps[s] = load16(fields + p::kPathEntrySize * (next + step) + 2);
+        if (steps[s] == p::kNoPathIndex) return Result::Rejected;  // its member was removed
+      } else if ((kind & 3) == p::kPathArray) {
         writer_type = next;
         steps[s] = step;  // an element beyond the reader's count fails the path below
       } else {

@@ -9,17 +9,18 @@
 //     u16 writer roots, u16 writer types, u32 path fields
 //   ops: op count x 12 bytes (Op)
 //   table: table entries x 8 bytes (i64, doubles by their bits): what an op needs beyond its 12
-//   references by path, present when the writer had pointers (writer roots > 0):
-//     per writer root: u32 writer type, u32 reader root (kNone: removed)
-//     per writer type: u32 kind (kPathStruct, kPathArray, or 0) | field count << 8, u32 its
-//       first path field (struct) or its element type (array)
-//     path fields: u32 writer field type, u32 reader field index (kNone: removed)
+//   references by path, present when the writer had pointers (writer roots > 0), u16 pairs:
+//     per writer root: writer type, reader root (kNoPathIndex: removed)
+//     per writer type: kind (kPathStruct, kPathArray, or 0) | field count << 2, its first path
+//       field (struct) or its element type (array)
+//     path fields: writer field type, reader field index (kNoPathIndex: removed)
 //
 // The writer's payload holds fixed-size values only (the device profile's kinds): every value
 // the plan reads is at a wire offset known at build time.
 #ifndef SYMCR_DEVICE_PLAN_HPP
 #define SYMCR_DEVICE_PLAN_HPP
 
+#include <cstddef>
 #include <cstdint>
 
 namespace symcr {
@@ -58,8 +59,10 @@ inline std::uint8_t scalar(ScalarKind kind, unsigned size) {
 // The enum pairs are (writer value, reader value): a writer value not among them is refused.
 constexpr std::uint64_t kTargetHasRange = std::uint64_t{1} << 48;
 
-// Path kinds of writer types (references by path).
-constexpr std::uint32_t kPathStruct = 1, kPathArray = 2;
+// Path kinds of writer types (references by path), in a type entry's low two bits.
+constexpr std::uint16_t kPathStruct = 1, kPathArray = 2;
+constexpr std::uint16_t kNoPathIndex = 0xFFFF;
+constexpr std::size_t kPathEntrySize = 4;
 
 }  // namespace plan
 }  // namespace device
