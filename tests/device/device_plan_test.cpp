@@ -374,6 +374,39 @@ TEST(DevicePlan, ACheckpointOfAnUnknownBuildLeavesTheStateInitial) {
   EXPECT_EQ(v1_bytes(), before);
 }
 
+// Several previous releases: each record restores through the plan for its own build.
+TEST(DevicePlan, SeveralPreviousReleasesEachThroughItsOwnPlan) {
+  const Devices devices;
+  // The second previous release: V0 without its retired root.
+  const symcr::Schema v0_one_root{kTypesV0, kTypes0, kRootsV0, 1, "plan-test"};
+  std::vector<std::uint8_t> image;
+  std::string error;
+  ASSERT_TRUE(symcr::detail::device_plan_image_for(v0_one_root, hash_of(v0_one_root), kSchemaV1,
+                                                   hash_of(kSchemaV1), image, error))
+      << error;
+  const symcr::PlannedSchema plans[] = {
+      {hash_of(v0_one_root), image.data(), static_cast<std::uint32_t>(image.size())},
+      devices.planned};
+  const symcr::device::Build build(&kSchemaV1, hash_of(kSchemaV1), plans, 2);
+  std::vector<std::uint8_t> scratch(symcr::device::scratch_size(kSchemaV1));
+  clock_now = 0;
+  for (int release = 0; release < 2; ++release) {
+    fill_v0(6 + release);
+    const symcr::device::Build writer(release == 0 ? &v0_one_root : &kSchemaV0,
+                                      release == 0 ? hash_of(v0_one_root) : hash_of(kSchemaV0));
+    std::vector<std::uint8_t> record(symcr::device::record_size(kSchemaV0));
+    std::size_t size = 0;
+    ASSERT_EQ(symcr::device::save(writer, 1, record.data(), record.size(), &size), Result::Ok);
+    initial_v1();
+    ASSERT_EQ(symcr::device::restore(build, record.data(), size, scratch.data(), scratch.size()),
+              Result::Ok)
+        << release;
+    EXPECT_EQ(v1.altitude, -50 + 37 * (6 + release));
+    EXPECT_EQ(v1.battery, 11006u + static_cast<unsigned>(release));
+    EXPECT_EQ(v1.target, &v1.route[(6 + release) % 3]);
+  }
+}
+
 TEST(DevicePlan, ADamagedImageOrRecordIsRefusedAndChangesNothing) {
   const Devices devices;
   fill_v0(2);
