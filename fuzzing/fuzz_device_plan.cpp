@@ -70,8 +70,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Pair& pair = device_pairs()[(control & 0x0f) % device_pairs().size()];
   const std::size_t image_size = std::min<std::size_t>(data[1] | data[2] << 8, size - 3);
   const bool genuine = (control & 0x20) != 0;
-  std::vector<std::uint8_t> image = genuine ? pair.image
-                                            : std::vector<std::uint8_t>(data + 3, data + 3 + image_size);
+  std::vector<std::uint8_t> image =
+      genuine ? pair.image : std::vector<std::uint8_t>(data + 3, data + 3 + image_size);
   std::vector<std::uint8_t> record(data + 3 + image_size, data + size);
   if (control & 0x10) fuzz::fix_record_integrity(record.data(), record.size());
 

@@ -34,7 +34,8 @@ class DeviceEncoder {
   bool encode(std::uint64_t writer_hash, std::uint64_t reader_hash,
               std::vector<std::uint8_t>& image, std::string& error) {
     if (!plan_.status.ok()) {
-      error = std::string("nothing of it restores into this build (") + plan_.status.message() + ")";
+      error =
+          std::string("nothing of it restores into this build (") + plan_.status.message() + ")";
       return false;
     }
     std::uint64_t wire = 0;
@@ -171,7 +172,8 @@ class DeviceEncoder {
         ((from >> 4) == dp::kFloat || (to >> 4) == dp::kFloat)) {
       return fail(path, std::string("was a ") + wt.name + " and is a " + rt.name +
                             " now: the device profile converts an enum to and from integers "
-                            "only" + kFixes);
+                            "only" +
+                            kFixes);
     }
     std::vector<std::uint64_t> pairs;
     if (wt.kind == Kind::Enum && rt.kind == Kind::Enum) {
@@ -230,7 +232,8 @@ class DeviceEncoder {
                  const std::string& path) {
     if (n.migrates) {
       return fail(path, std::string("has a symcr_migrate hook, which the device profile does "
-                                    "not run") + kFixes);
+                                    "not run") +
+                            kFixes);
     }
     const TypeInfo& wt = w_.types[n.writer];
     std::uint64_t at = wire;
@@ -248,8 +251,10 @@ class DeviceEncoder {
         if (const FieldTime* time = reader_time(r_, n, field)) {
           const TypeInfo& rt = r_.types[field.node->reader];
           if (rt.kind != Kind::Int && rt.kind != Kind::UInt) {
-            return fail(member, "holds times in an array: the device profile rebases times "
-                                "of integer members only" + std::string(kFixes));
+            return fail(member,
+                        "holds times in an array: the device profile rebases times "
+                        "of integer members only" +
+                            std::string(kFixes));
           }
           const std::uint32_t reader_clock = time->clock->index;
           const std::uint32_t writer_clock = reader_clock < plan_.writer_clock_of.size()
@@ -278,8 +283,10 @@ class DeviceEncoder {
     // kNone (removed) becomes kNoPathIndex; any other index must stay below it.
     const auto narrow = [](std::vector<std::uint32_t>& halves) {
       for (std::uint32_t& half : halves) {
-        if (half == dp::kNone) half = dp::kNoPathIndex;
-        else if (half >= dp::kNoPathIndex) return false;
+        if (half == dp::kNone)
+          half = dp::kNoPathIndex;
+        else if (half >= dp::kNoPathIndex)
+          return false;
       }
       return true;
     };
@@ -305,8 +312,8 @@ class DeviceEncoder {
         path_types_.push_back(static_cast<std::uint32_t>(path_fields_.size() / 2));
         for (std::uint32_t f = 0; f < type.field_count; ++f) {
           path_fields_.push_back(type.fields[f].type);
-          path_fields_.push_back(mapped && f < mapped->fields.size() ? mapped->fields[f].reader_field
-                                                                     : dp::kNone);
+          path_fields_.push_back(
+              mapped && f < mapped->fields.size() ? mapped->fields[f].reader_field : dp::kNone);
         }
       } else {
         path_types_.push_back(0);

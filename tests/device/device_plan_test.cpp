@@ -46,16 +46,31 @@ struct VehicleV0 {
   std::uint32_t battery_mv;  // renamed to battery in V1, narrowed to 16 bits
   std::uint16_t retired;     // removed in V1
   FlagsV0 flags;
-  PointV0 route[3];          // grown to 5 in V1
+  PointV0 route[3];  // grown to 5 in V1
   PointV0* target;
-  float speed;               // a double in V1
+  float speed;                // a double in V1
   std::uint32_t last_fix_ms;  // a time of the boot clock
 };
 VehicleV0 v0;
 std::int32_t v0_retired_root;  // a root V1 no longer has
 
-enum : std::uint32_t { kBool0, kMode0, kU8_0, kI16_0, kU32_0, kU16_0, kI32_0, kFlags0, kF64_0,
-                       kPoint0, kRoute0, kPointPtr0, kF32_0, kVehicle0, kTypes0 };
+enum : std::uint32_t {
+  kBool0,
+  kMode0,
+  kU8_0,
+  kI16_0,
+  kU32_0,
+  kU16_0,
+  kI32_0,
+  kFlags0,
+  kF64_0,
+  kPoint0,
+  kRoute0,
+  kPointPtr0,
+  kF32_0,
+  kVehicle0,
+  kTypes0
+};
 const symcr::EnumeratorInfo kModesV0[] = {{"Stabilize", 0}, {"Auto", 3}, {"Land", 4}, {"Flip", 5}};
 const FieldInfo kPointV0[] = {field("x", kI32_0, offsetof(PointV0, x)),
                               field("y", kF64_0, offsetof(PointV0, y))};
@@ -116,11 +131,29 @@ struct VehicleV1 {
 VehicleV1 v1;
 std::uint8_t v1_extra;  // a root V0 did not have
 
-bool valid_v1(const void* object) { return static_cast<const VehicleV1*>(object)->altitude != 4321; }
+bool valid_v1(const void* object) {
+  return static_cast<const VehicleV1*>(object)->altitude != 4321;
+}
 
-enum : std::uint32_t { kBool1, kMode1, kI16_1, kI64_1, kU16_1, kI32_1, kU32_1, kFlags1, kF64_1,
-                       kPoint1, kRoute1, kPointPtr1, kU8_1, kVehicle1, kTypes1 };
-const symcr::EnumeratorInfo kModesV1[] = {{"Land", 1}, {"Stabilize", 2}, {"Auto", 7}, {"Guided", 9}};
+enum : std::uint32_t {
+  kBool1,
+  kMode1,
+  kI16_1,
+  kI64_1,
+  kU16_1,
+  kI32_1,
+  kU32_1,
+  kFlags1,
+  kF64_1,
+  kPoint1,
+  kRoute1,
+  kPointPtr1,
+  kU8_1,
+  kVehicle1,
+  kTypes1
+};
+const symcr::EnumeratorInfo kModesV1[] = {
+    {"Land", 1}, {"Stabilize", 2}, {"Auto", 7}, {"Guided", 9}};
 const char* const kBatteryWas[] = {"battery_mv", nullptr};
 constexpr symcr::FieldRange kAltitudeRange{-100, 5000};
 constexpr symcr::FieldRange kTrimRange{-12, 12};
@@ -160,7 +193,9 @@ const symcr::RootInfo kRootsV1[] = {{"vehicle", kVehicle1, &v1, 0, nullptr},
                                     {"extra", kU8_1, &v1_extra, 0, nullptr}};
 const symcr::Schema kSchemaV1{kTypesV1, kTypes1, kRootsV1, 2, "plan-test"};
 
-std::uint64_t hash_of(const symcr::Schema& schema) { return symcr::detail::schema_blob(schema).hash; }
+std::uint64_t hash_of(const symcr::Schema& schema) {
+  return symcr::detail::schema_blob(schema).hash;
+}
 
 void fill_v0(int seed) {
   std::memset(static_cast<void*>(&v0), 0, sizeof v0);
@@ -307,8 +342,8 @@ TEST(DevicePlan, EqualsTheHostRuntimesCrossVersionRestore) {
     std::vector<std::uint8_t> checkpoint;  // the host's, with V0's schema inline
     ASSERT_TRUE(symcr::checkpoint_to_buffer(kSchemaV0, checkpoint, 3).ok());
     initial_v1();
-    const symcr::Report host = symcr::restore_from_buffer(kSchemaV1, checkpoint.data(),
-                                                          checkpoint.size());
+    const symcr::Report host =
+        symcr::restore_from_buffer(kSchemaV1, checkpoint.data(), checkpoint.size());
     ASSERT_TRUE(host.ok()) << host.to_text();
     const VehicleV1 by_host = v1;
     const std::uint8_t host_extra = v1_extra;
@@ -326,11 +361,11 @@ TEST(DevicePlan, EqualsTheHostRuntimesCrossVersionRestore) {
 TEST(DevicePlan, AValueTheNewBuildRefusesRefusesTheWholeCheckpoint) {
   const Devices devices;
   const auto cases = {
-      +[] { v0.altitude = 6000; },            // outside V1's range
-      +[] { v0.altitude = 4321; },            // refused by V1's validator
-      +[] { v0.battery_mv = 70000; },         // does not fit 16 bits
-      +[] { v0.mode = ModeV0::Flip; },        // no enumerator of that name in V1
-      +[] { v0.flags.trim = -13; },           // the range of V1's wider bit-field
+      +[] { v0.altitude = 6000; },      // outside V1's range
+      +[] { v0.altitude = 4321; },      // refused by V1's validator
+      +[] { v0.battery_mv = 70000; },   // does not fit 16 bits
+      +[] { v0.mode = ModeV0::Flip; },  // no enumerator of that name in V1
+      +[] { v0.flags.trim = -13; },     // the range of V1's wider bit-field
   };
   for (void (*change)() : cases) {
     fill_v0(2);
@@ -358,9 +393,9 @@ TEST(DevicePlan, ACheckpointOfAnUnknownBuildLeavesTheStateInitial) {
   // Without the plan, and with a plan for another writer or another reader: OtherSchema.
   std::vector<std::uint8_t> scratch(symcr::device::scratch_size(kSchemaV1));
   const symcr::device::Build bare(&kSchemaV1, hash_of(kSchemaV1));
-  EXPECT_EQ(symcr::device::restore(bare, record.data(), record.size(), scratch.data(),
-                                   scratch.size()),
-            Result::OtherSchema);
+  EXPECT_EQ(
+      symcr::device::restore(bare, record.data(), record.size(), scratch.data(), scratch.size()),
+      Result::OtherSchema);
   const symcr::PlannedSchema elsewhere{devices.planned.writer_hash ^ 1, devices.planned.image,
                                        devices.planned.size};
   const symcr::device::Build other_writer(&kSchemaV1, hash_of(kSchemaV1), &elsewhere, 1);
@@ -419,9 +454,9 @@ TEST(DevicePlan, ADamagedImageOrRecordIsRefusedAndChangesNothing) {
                                        static_cast<std::uint32_t>(image.size())};
   const symcr::device::Build build(&kSchemaV1, hash_of(kSchemaV1), &truncated, 1);
   std::vector<std::uint8_t> scratch(symcr::device::scratch_size(kSchemaV1));
-  EXPECT_EQ(symcr::device::restore(build, record.data(), record.size(), scratch.data(),
-                                   scratch.size()),
-            Result::Corrupt);
+  EXPECT_EQ(
+      symcr::device::restore(build, record.data(), record.size(), scratch.data(), scratch.size()),
+      Result::Corrupt);
   record[100] ^= 0x40;  // the record's CRC no longer holds
   EXPECT_EQ(devices.restore_v1(record), Result::Corrupt);
   EXPECT_EQ(v1_bytes(), before);

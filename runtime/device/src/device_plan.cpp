@@ -3,10 +3,11 @@
 // image's ops move each of the writer's values into a staged copy of the reader's roots,
 // converting, range-checking, mapping enums and rebasing times; references are followed by
 // their writer path translated to the reader's. Any failure refuses the whole checkpoint.
+#include "device_plan.hpp"
+
 #include <cstring>
 
 #include "device_format.hpp"
-#include "device_plan.hpp"
 
 namespace symcr {
 namespace device {
@@ -22,8 +23,12 @@ class PlanRunner {
  public:
   PlanRunner(const Schema& reader, const std::uint8_t* image, std::size_t image_size,
              const std::uint8_t* payload, std::size_t payload_size, std::uint8_t* stage)
-      : reader_(reader), image_(image), image_size_(image_size), payload_(payload),
-        payload_size_(payload_size), stage_(stage) {}
+      : reader_(reader),
+        image_(image),
+        image_size_(image_size),
+        payload_(payload),
+        payload_size_(payload_size),
+        stage_(stage) {}
 
   Result run() {
     Result result = read_image();
@@ -135,8 +140,8 @@ class PlanRunner {
             return Result::Corrupt;
           }
           for (std::uint64_t e = 0; e < count; ++e) {
-            result = ops(i + 1, i + 1 + body, wire + e * wire_stride, dst + e * dst_stride,
-                         depth + 1);
+            result =
+                ops(i + 1, i + 1 + body, wire + e * wire_stride, dst + e * dst_stride, depth + 1);
             if (result != Result::Ok) return result;
           }
           i += body;
@@ -217,7 +222,7 @@ class PlanRunner {
       if (!mapped) return Result::Rejected;
     }
     bool is_signed = from_kind == p::kSigned || (pairs != 0 && to_kind == p::kSigned);
-    const double as_real = from_float ? real
+    const double as_real = from_float  ? real
                            : is_signed ? static_cast<double>(static_cast<std::int64_t>(raw))
                                        : static_cast<double>(raw);
     if (ranged) {
@@ -310,7 +315,8 @@ class PlanRunner {
     std::uintptr_t target = 0;
     if (code != detail::kNullCode) {
       if (code - detail::kFirstReference >= reference_count_) return Result::Corrupt;
-      const Result result = reference(code - detail::kFirstReference, entry(pointee_index), &target);
+      const Result result =
+          reference(code - detail::kFirstReference, entry(pointee_index), &target);
       if (result != Result::Ok) return result;
     }
     std::memcpy(stage_root_ + dst, &target, sizeof target);
@@ -319,7 +325,8 @@ class PlanRunner {
 
   Result reference(std::uint32_t index, std::uint64_t pointee, std::uintptr_t* address) const {
     std::size_t at = references_;
-    for (std::uint32_t i = 0; i < index; ++i) at += 7 + 4 * std::size_t{load16(payload_ + at + 5)} + 4;
+    for (std::uint32_t i = 0; i < index; ++i)
+      at += 7 + 4 * std::size_t{load16(payload_ + at + 5)} + 4;
     if (payload_[at] != detail::kBaseObject) return Result::Corrupt;
     const std::uint32_t writer_root = load32(payload_ + at + 1);
     const std::size_t step_count = load16(payload_ + at + 5);
@@ -371,9 +378,11 @@ class PlanRunner {
     const std::uint32_t reader_clock = static_cast<std::uint32_t>(entry(index + 1));
     if (writer_clock >= writer_clocks_) return Result::Corrupt;
     const ClockInfo* clock = detail::clock_at(reader_, reader_clock);
-    const std::uint64_t saved = load64(payload_ + references_end_ + 8 + 8 * std::size_t{writer_clock});
-    const std::uint64_t delta =
-        clock != nullptr && clock->read != nullptr ? static_cast<std::uint64_t>(clock->read()) - saved : 0;
+    const std::uint64_t saved =
+        load64(payload_ + references_end_ + 8 + 8 * std::size_t{writer_clock});
+    const std::uint64_t delta = clock != nullptr && clock->read != nullptr
+                                    ? static_cast<std::uint64_t>(clock->read()) - saved
+                                    : 0;
     detail::rebase_time(stage_root_ + dst, size, never, delta);
     return Result::Ok;
   }
@@ -435,8 +444,7 @@ Result detail::restore_planned_payload(const Schema& reader, const PlannedSchema
     std::memcpy(stage, reader.roots[r].address, root_size);
     stage += detail::stage_size(root_size);
   }
-  const Result result =
-      PlanRunner(reader, planned.image, planned.size, payload, size, first).run();
+  const Result result = PlanRunner(reader, planned.image, planned.size, payload, size, first).run();
   if (result != Result::Ok) return result;
   stage = first;
   for (std::uint32_t r = 0; r < reader.root_count; ++r) {

@@ -40,9 +40,9 @@ constexpr std::size_t kMaxLoopDepth = 8;
 enum OpCode : std::uint8_t {
   kOpRoot = 1,      // dst: reader root; bases reset to its staged copy and the values' start
   kOpCopy = 2,      // b: bytes copied as they are
-  kOpScalar = 3,    // a: writer scalar (Scalar); b: table index of the reader's (ScalarTarget)
+  kOpScalar = 3,    // a: writer scalar (scalar()); b: table index of the reader's side
   kOpPointer = 4,   // b: table index of the reader pointee type
-  kOpTime = 5,      // a: bytes of the time; b: table index of never, then (writer clock, reader clock)
+  kOpTime = 5,      // a: the time's bytes; b: table index of never, (writer, reader clock)
   kOpValidate = 6,  // b: table index of the reader type whose validator judges the value at dst
   kOpLoop = 7,      // b: table index of (count, body ops), then (wire stride, dst stride)
 };

@@ -38,7 +38,8 @@ inline symcr::device::Storage backup_storage() {
 inline bool load_backup() {
   std::FILE* file = std::fopen(kBackupFile, "rb");
   if (file == nullptr) return false;
-  const std::size_t n = std::fread(symcr_backup_sram.slots, 1, sizeof symcr_backup_sram.slots, file);
+  const std::size_t n =
+      std::fread(symcr_backup_sram.slots, 1, sizeof symcr_backup_sram.slots, file);
   std::fclose(file);
   return n == sizeof symcr_backup_sram.slots;
 }

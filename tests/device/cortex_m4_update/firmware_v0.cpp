@@ -1,8 +1,7 @@
 // Firmware V0 of the update test: the vehicle flies a mission and checkpoints it into the ring
 // in backup SRAM, three times; then the firmware is replaced (firmware_v1.cpp).
-#include <symcr/symcr.hpp>
-
 #include <cstring>
+#include <symcr/symcr.hpp>
 
 #include "board.hpp"
 
@@ -22,9 +21,9 @@ struct Vehicle {
   std::int16_t climb_rate;
   std::uint32_t retired_counter;  // V1 has no such member
   Battery battery;
-  Waypoint mission[4];            // V1 holds six
-  Waypoint* next;                 // a reference by path
-  std::uint8_t fence_radius_m;    // V1: fence_radius, 16 bits
+  Waypoint mission[4];          // V1 holds six
+  Waypoint* next;               // a reference by path
+  std::uint8_t fence_radius_m;  // V1: fence_radius, 16 bits
   std::uint8_t mission_count;
 };
 
@@ -59,8 +58,7 @@ int main() {
                "V0: ring opened");
   for (int step = 1; step <= 3; ++step) {
     fly(step);
-    board::check(ring.save(build, board::record, sizeof board::record) ==
-                     symcr::device::Result::Ok,
+    board::check(ring.save(build, board::record, sizeof board::record) == symcr::device::Result::Ok,
                  "V0: checkpoint saved");
   }
   board::check(board::keep_backup(), "V0: backup SRAM kept across the update");

@@ -39,8 +39,8 @@ using symcr::device::Result;
 bool initial() {
   bool same = vehicle.mode == Mode::Stabilize && !vehicle.armed && vehicle.battery.cycles == 0 &&
               vehicle.battery.millivolts == 0 && vehicle.climb_rate == 0 &&
-              vehicle.mission_count == 0 && vehicle.next == nullptr &&
-              vehicle.fence_radius == 50 && vehicle.boots_since_update == 1;
+              vehicle.mission_count == 0 && vehicle.next == nullptr && vehicle.fence_radius == 50 &&
+              vehicle.boots_since_update == 1;
   for (const Waypoint& w : vehicle.mission) {
     same = same && w.alt == 0.0f && w.lng == 0 && w.lat == 0 && w.speed == 5;
   }
@@ -80,9 +80,9 @@ int main() {
   // A record of a build V1 has no plan for: refused, nothing changed.
   std::size_t size = 0;
   const symcr::device::Build unknown(build.schema, build.schema_hash ^ 0x5A5Au);
-  board::check(symcr::device::save(unknown, 9, board::record, sizeof board::record, &size) ==
-                   Result::Ok,
-               "V1: a record of an unknown build");
+  board::check(
+      symcr::device::save(unknown, 9, board::record, sizeof board::record, &size) == Result::Ok,
+      "V1: a record of an unknown build");
   board::check(symcr::device::restore(build, board::record, size, board::scratch,
                                       sizeof board::scratch) == Result::OtherSchema &&
                    initial(),
@@ -90,10 +90,11 @@ int main() {
 
   std::uint64_t sequence = 0;
   std::size_t skipped = 0;
-  const Result result = ring.restore_latest(build, board::record, sizeof board::record,
-                                            board::scratch, sizeof board::scratch, &sequence,
-                                            nullptr, &skipped);
-  if (result != Result::Ok) std::printf("  restore_latest: %s\n", symcr::device::result_text(result));
+  const Result result =
+      ring.restore_latest(build, board::record, sizeof board::record, board::scratch,
+                          sizeof board::scratch, &sequence, nullptr, &skipped);
+  if (result != Result::Ok)
+    std::printf("  restore_latest: %s\n", symcr::device::result_text(result));
   board::check(result == Result::Ok && sequence == 3 && skipped == 0,
                "V1: restored V0's newest checkpoint");
   board::check(restored_from_v0(), "V1: every value of V0's checkpoint, as V1 holds it");

@@ -1,8 +1,8 @@
 // symcr's device profile: checkpoints for a microcontroller. C++11, no heap, no exceptions, no
 // RTTI, no standard containers, no files: the caller gives the memory. It saves a program's
 // roots into a buffer and restores a checkpoint written by the same build (the same schema
-// hash) or by a previous build it carries a plan for (PREVIOUS_SCHEMA), in the record format of docs/format.md (schema referenced by hash), so the host's
-// tools read what a device wrote.
+// hash) or by a previous build it carries a plan for (PREVIOUS_SCHEMA), in the record format
+// of docs/format.md (schema referenced by hash), so the host's tools read what a device wrote.
 //
 // What it holds: bool, integers, floating point (4 and 8 bytes), enums, structs (bit-fields,
 // bases), unions (raw bytes), fixed arrays, and raw pointers to objects inside the roots
