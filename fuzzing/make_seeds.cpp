@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "device_plan_encode.hpp"
 #include "freshness.hpp"
 #include "fuzz_worlds.hpp"
 #include "restore_journal.hpp"
@@ -518,6 +519,53 @@ int main(int argc, char** argv) {
       written += 2;
     }
     ++held;
+  }
+  // Previous builds' records restored through device plan images: per pair the device holds
+  // (the harness's order), the x0 world's device record, with the genuine image and with the
+  // image in the input.
+  const std::string device_plans = dir_of(root, "device_plan");
+  std::uint8_t pair = 0;
+  for (unsigned world = 0; world < kP; world += 2) {  // x0, x1 pairs
+    const symcr::Schema& writer = world_schema(world);
+    const symcr::Schema& reader = world_schema(world + 1);
+    if (symcr::device::check_schema(writer) != symcr::device::Result::Ok ||
+        symcr::device::check_schema(reader) != symcr::device::Result::Ok) {
+      continue;
+    }
+    std::vector<std::uint8_t> image;
+    std::string error;
+    if (!symcr::detail::device_plan_image_for(writer, symcr::detail::schema_blob(writer).hash,
+                                              reader, symcr::detail::schema_blob(reader).hash,
+                                              image, error)) {
+      std::printf("device plan %s: not the device's: %s\n", world_name(world), error.c_str());
+      continue;
+    }
+    fill_world(world);
+    std::vector<std::uint8_t> record(symcr::device::record_size(writer));
+    std::size_t size = 0;
+    const symcr::device::Result result = symcr::device::save(
+        {&writer, symcr::detail::schema_blob(writer).hash}, 3, record.data(), record.size(),
+        &size);
+    reset_world(world);
+    if (result != symcr::device::Result::Ok) {
+      std::fprintf(stderr, "device plan %s: %s\n", world_name(world),
+                   symcr::device::result_text(result));
+      return 1;
+    }
+    record.resize(size);
+    for (std::uint8_t mode : {std::uint8_t{0x30}, std::uint8_t{0x10}, std::uint8_t{0x50}}) {
+      const bool genuine = (mode & 0x20) != 0;
+      std::vector<std::uint8_t> seed{static_cast<std::uint8_t>(pair | mode)};
+      const std::size_t length = genuine ? 0 : image.size();
+      seed.push_back(static_cast<std::uint8_t>(length));
+      seed.push_back(static_cast<std::uint8_t>(length >> 8));
+      if (!genuine) seed.insert(seed.end(), image.begin(), image.end());
+      seed.insert(seed.end(), record.begin(), record.end());
+      write_seed(device_plans, std::string(world_name(world)) + "-plan-" + std::to_string(mode),
+                 seed);
+      ++written;
+    }
+    ++pair;
   }
   std::printf("wrote %zu seeds under %s\n", written, root.c_str());
   return 0;

@@ -9,6 +9,7 @@
 #include "PreviousPlans.h"
 #include "SchemaTables.h"
 
+#include "device_plan_encode.hpp"
 #include "engine.hpp"
 #include "plan.hpp"
 #include "schema_file.hpp"
@@ -21,14 +22,6 @@ bool planPreviousSchemas(ProgramModel &Program,
   Program.PreviousPlans.clear();
   if (SchemaFiles.empty())
     return true;
-  if (Program.Profile == RuntimeProfile::Device) {
-    Diags.error(
-        Location(),
-        "--previous-schema: the device profile restores only its own "
-        "build's checkpoints (convert older ones with `symcr convert`), "
-        "so it has no plan to embed");
-    return false;
-  }
   SchemaTables Tables(Program);
   const std::uint64_t OwnHash = Tables.serialised().hash;
   const std::uint32_t OwnProgram =
@@ -61,8 +54,22 @@ bool planPreviousSchemas(ProgramModel &Program,
     PreviousPlanModel Plan;
     Plan.SchemaFile = File;
     Plan.WriterHash = Previous.hash();
-    symcr::detail::plan_image_for(Previous.schema(), Previous.hash(),
-                                  Tables.schema(), OwnHash, Plan.Image);
+    if (Program.Profile != RuntimeProfile::Device) {
+      symcr::detail::plan_image_for(Previous.schema(), Previous.hash(),
+                                    Tables.schema(), OwnHash, Plan.Image);
+    } else {
+      // The device executes a compiled form of the same plan: what it cannot
+      // carry out is refused here, by member path, rather than on the device.
+      std::string Error;
+      if (!symcr::detail::device_plan_image_for(Previous.schema(),
+                                                Previous.hash(), Tables.schema(),
+                                                OwnHash, Plan.Image, Error)) {
+        Diags.error(Location(), "--previous-schema '" + File +
+                                    "': the device profile cannot restore "
+                                    "its checkpoints: " + Error);
+        return false;
+      }
+    }
     Program.PreviousPlans.push_back(std::move(Plan));
   }
   return true;

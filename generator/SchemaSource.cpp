@@ -297,6 +297,13 @@ private:
           "  *count = "
        << Program.PreviousPlans.size()
        << "u;\n  return planned_schemas;\n}\n";
+    // The device profile links its cross-version executor only into a
+    // firmware that has plans: this reference takes it in.
+    if (Device)
+      OS << "\nextern \"C\" const char symcr_device_plan_executor;\n"
+            "extern \"C\" const char* symcr_program_plan_executor();\n"
+            "extern \"C\" const char* symcr_program_plan_executor() {\n"
+            "  return &symcr_device_plan_executor;\n}\n";
   }
 
   static std::string hashText(std::uint64_t Value) {

@@ -17,6 +17,7 @@
 // embedded_plan_check.cpp, linked into the C++ v1 programs: the failures of checking the plan
 // symcr-gen embedded for `checkpoint`'s schema.
 extern "C" int xv_check_embedded_plan(const char* checkpoint) __attribute__((weak));
+extern "C" int xv_restore_through_device_plan(const char* checkpoint) __attribute__((weak));
 
 namespace xv {
 
@@ -91,6 +92,18 @@ inline void restore_through_device_and_exit(const char* path) {
   std::exit(0);
 }
 
+// XV_DEVICE_PLAN=1: restores v0's <checkpoint> through the device profile with the device plan
+// image made for v0's schema (embedded_plan_check.cpp), saves it (XV_RESAVE) and exits.
+inline void restore_through_device_plan_and_exit(const char* path) {
+  if (xv_restore_through_device_plan == nullptr) {
+    std::fprintf(stderr, "XV_DEVICE_PLAN: this program has no device plan check linked\n");
+    std::exit(1);
+  }
+  if (xv_restore_through_device_plan(path) != 0) std::exit(1);
+  save_if_asked("XV_RESAVE");
+  std::exit(0);
+}
+
 // The live pairs (live/host.cpp): XV_LIVE_FROM holds the address of the v0 module's schema in
 // this process, whose roots are transferred into this build's (from v0's live state, at v0's
 // save point) instead of restoring a file.
@@ -114,6 +127,7 @@ inline symcr::Report restore(int argc, char** argv, bool strict = false) {
     return report;
   }
   if (std::getenv("XV_DEVICE") != nullptr) restore_through_device_and_exit(argv[1]);
+  if (std::getenv("XV_DEVICE_PLAN") != nullptr) restore_through_device_plan_and_exit(argv[1]);
   if (xv_check_embedded_plan != nullptr) failures() += xv_check_embedded_plan(argv[1]);
   save_if_asked("XV_INITIAL");
   struct Resave {

@@ -35,10 +35,13 @@ const char* result_text(Result result) {
 }
 
 Build program_build() {
-  Build build{nullptr, 0};
+  Build build;
   if (symcr_program_schema == nullptr || symcr_program_schema_hash == nullptr) return build;
   build.schema = symcr_program_schema();
   build.schema_hash = symcr_program_schema_hash();
+  // Set here, not through the constructor that links the executor: the generated code links
+  // it when there are plans.
+  if (symcr_program_plans != nullptr) build.plans = symcr_program_plans(&build.plan_count);
   return build;
 }
 

@@ -82,6 +82,16 @@ std::size_t values_size(const Schema& schema);
 // once per schema, not once per restore).
 Result restore_held_payload(const Schema& schema, const std::uint8_t* payload, std::size_t size,
                             std::uint8_t* scratch, std::size_t scratch_capacity);
+// The cross-version executor (device_plan.cpp), weak: null unless the firmware links it (see
+// Build). The plan image `build` embeds for checkpoints of the build whose schema hashes to
+// `writer_hash` (device_plan.hpp), or null.
+const PlannedSchema* plan_for_writer(const Build& build, std::uint64_t writer_hash)
+    __attribute__((weak));
+// restore_held_payload() for a payload of the plan's writer: each value through the plan.
+Result restore_planned_payload(const Schema& reader, const PlannedSchema& planned,
+                               const std::uint8_t* payload, std::size_t size,
+                               std::uint8_t* scratch, std::size_t scratch_capacity)
+    __attribute__((weak));
 // The clocks the schema's time fields name (kFieldClockTime): their count (one more than the
 // greatest ClockInfo::index), and the clock of an index (null when no field names it). A
 // payload of a schema with clocks ends with an epoch and one reading per clock (format §3).

@@ -245,8 +245,10 @@ class Restorer {
 };
 
 // The record's header checked against this build; the payload's bounds in `*payload`.
+// `*planned`: the plan of the record's previous build, or null for this build's own record.
 Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t size,
-                    std::size_t* payload_offset, std::size_t* payload_size) {
+                    std::size_t* payload_offset, std::size_t* payload_size,
+                    const PlannedSchema** planned) {
   if (size < detail::kHeaderSize) return Result::Truncated;
   if (std::memcmp(bytes, detail::kMagic, sizeof detail::kMagic) != 0) return Result::Corrupt;
   const std::uint16_t version = load16(bytes + detail::kOffsetVersion);
@@ -273,7 +275,11 @@ Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t s
   if (schema_size != 0 && detail::fnv1a64(bytes + header, schema_size) != schema_hash) {
     return Result::Corrupt;
   }
-  if (schema_hash != build.schema_hash) return Result::OtherSchema;
+  *planned = nullptr;
+  if (schema_hash != build.schema_hash) {
+    if (detail::plan_for_writer != nullptr) *planned = detail::plan_for_writer(build, schema_hash);
+    if (*planned == nullptr) return Result::OtherSchema;
+  }
   const std::uint32_t writer = load32(bytes + detail::kOffsetProgramId);
   const std::uint32_t reader = detail::program_id(build.schema->program);
   if (writer != 0 && reader != 0 && writer != reader) return Result::OtherProgram;
@@ -315,10 +321,14 @@ Result restore(const Build& build, const std::uint8_t* bytes, std::size_t size,
   if (detail::first_unheld_type(schema) != kNoType) return Result::Unsupported;
   if (scratch == nullptr || scratch_capacity < scratch_size(schema)) return Result::NoSpace;
   std::size_t payload = 0, payload_size = 0;
-  Result result = check_record(build, bytes, size, &payload, &payload_size);
+  const PlannedSchema* planned = nullptr;
+  Result result = check_record(build, bytes, size, &payload, &payload_size, &planned);
   if (result != Result::Ok) return result;
-  result = detail::restore_held_payload(schema, bytes + payload, payload_size, scratch,
-                                        scratch_capacity);
+  result = planned != nullptr
+               ? detail::restore_planned_payload(schema, *planned, bytes + payload, payload_size,
+                                                 scratch, scratch_capacity)
+               : detail::restore_held_payload(schema, bytes + payload, payload_size, scratch,
+                                              scratch_capacity);
   if (result == Result::Ok && sequence != nullptr) {
     *sequence = load64(bytes + detail::kOffsetSequence);
   }

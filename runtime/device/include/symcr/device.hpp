@@ -1,8 +1,8 @@
 // symcr's device profile: checkpoints for a microcontroller. C++11, no heap, no exceptions, no
 // RTTI, no standard containers, no files: the caller gives the memory. It saves a program's
 // roots into a buffer and restores a checkpoint written by the same build (the same schema
-// hash), in the record format of docs/format.md (schema referenced by hash), so the host's
-// tools read what a device wrote.
+// hash) or by a previous build it carries a plan for (PREVIOUS_SCHEMA), in the record format
+// of docs/format.md (schema referenced by hash), so the host's tools read what a device wrote.
 //
 // What it holds: bool, integers, floating point (4 and 8 bytes), enums, structs (bit-fields,
 // bases), unions (raw bytes), fixed arrays, and raw pointers to objects inside the roots
@@ -31,7 +31,7 @@ enum class Result : std::uint8_t {
   Truncated,        // fewer bytes than the record says it has
   Corrupt,          // bad magic, sizes or checksum, or a payload that does not decode
   FutureVersion,    // written by a newer record format
-  OtherSchema,      // written by another build (another schema hash): convert it on the host
+  OtherSchema,      // written by a build that is neither this one nor one it has a plan for
   OtherProgram,     // written by another program
   Rejected,         // a value outside its SYMCR_RANGE, or refused by its symcr_validate
   TooManyPointers,  // more distinct pointer targets than kMaxReferences
@@ -44,12 +44,25 @@ const char* result_text(Result result);
 
 // The identity of a build's schema: its tables and the hash of their serialised form, which
 // symcr-gen emits as constants (symcr_program_schema_hash()).
+// `plans`: how checkpoints of previous builds restore into this one (symcr-gen's
+// PREVIOUS_SCHEMA, one plan image per previous build; null and 0 when there are none).
+//
+// Restoring through plans needs the cross-version executor, which a firmware links only when
+// it uses plans (a few KB of flash): the generated code of a build with PREVIOUS_SCHEMA links
+// it, and so does the four-argument constructor. A Build given plans any other way restores
+// another build's record as OtherSchema.
 struct Build {
+  Build(const Schema* schema_ = nullptr, std::uint64_t schema_hash_ = 0)
+      : schema(schema_), schema_hash(schema_hash_), plans(nullptr), plan_count(0) {}
+  Build(const Schema* schema_, std::uint64_t schema_hash_, const PlannedSchema* plans_,
+        std::uint32_t plan_count_);
   const Schema* schema;
   std::uint64_t schema_hash;
+  const PlannedSchema* plans;
+  std::uint32_t plan_count;
 };
-// The program's own build (symcr_program_schema() and its emitted hash); `schema` is null when
-// the program has no generated code.
+// The program's own build (symcr_program_schema(), its emitted hash and its previous builds'
+// plans); `schema` is null when the program has no generated code.
 Build program_build();
 
 // Ok when every type reachable from the roots is one the device profile holds; else
