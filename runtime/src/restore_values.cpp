@@ -257,16 +257,13 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       const std::size_t frame = frames_.size();
       frames_.push_back({PathFrame::Kind::Name, "", 0});
       const FieldTime* outer_time = time_;
-      for (const FieldPlan& child : n->fields) {
-        frames_[frame].name = child.name;
-        counter_ = child.counter;
-        std::uint8_t* at =
-            dst && child.reader_field != kNoType ? dst + child.reader_offset : nullptr;
-        time_ = reader_time(reader_, *n, child);
-        // A time of a clock the checkpoint has no reading of keeps this build's value (the
-        // plan's report rejects the field).
-        if (time_ && plan_.writer_clock_of[time_->clock->index] == kNoType) at = nullptr;
-        if (!value(child.node, at, &child)) return false;
+      if (n->copy_segments.empty()) {
+        if (!fields(n, 0, static_cast<std::uint32_t>(n->fields.size()), dst, frame)) return false;
+      }
+      for (const CopySegment& segment : n->copy_segments) {
+        // A segment whose bytes fail the copy checks goes field by field, which names the fault.
+        if (segment.copy && copy(segment.copy, dst)) continue;
+        if (!fields(n, segment.first_field, segment.end_field, dst, frame)) return false;
       }
       time_ = outer_time;
       frames_.pop_back();
@@ -368,6 +365,23 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       return pointer(n, wt, dst);
   }
   return corrupt("unknown kind").ok();
+}
+
+// Fields [first, end) of struct `n` one by one, each under its name in path frame `frame`.
+bool Restorer::fields(const PlanNode* n, std::uint32_t first, std::uint32_t end,
+                      std::uint8_t* dst, std::size_t frame) {
+  for (std::uint32_t f = first; f < end; ++f) {
+    const FieldPlan& child = n->fields[f];
+    frames_[frame].name = child.name;
+    counter_ = child.counter;
+    std::uint8_t* at = dst && child.reader_field != kNoType ? dst + child.reader_offset : nullptr;
+    time_ = reader_time(reader_, *n, child);
+    // A time of a clock the checkpoint has no reading of keeps this build's value (the plan's
+    // report rejects the field).
+    if (time_ && plan_.writer_clock_of[time_->clock->index] == kNoType) at = nullptr;
+    if (!value(child.node, at, &child)) return false;
+  }
+  return true;
 }
 
 // A copy-only value in one step: check it (pass 1), copy it (writing passes). False,

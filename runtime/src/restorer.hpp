@@ -115,6 +115,55 @@ struct AppliedSlot {
   std::uint8_t* address;
 };
 
+// The decoding tables of one restore. A thread keeps one set between restores (a restore
+// of the same state then allocates nothing), unless a restore grew it past
+// kKeptRestoreTableBytes (a large graph's tables are freed when it is done).
+struct RestoreTables {
+  std::vector<PathFrame> frames;
+  std::vector<std::uint32_t> rejection_counts;
+  std::vector<std::uint32_t> handed_counts;
+  std::vector<std::uint8_t> verdicts;
+  std::vector<std::uint8_t> part_verdicts;
+  std::vector<SlotRecord> slots;
+  std::vector<ContainerRecord> containers;
+  std::vector<HeapRecord> heap;
+  std::vector<RefRecord> refs;
+  std::vector<std::uint32_t> steps;
+  std::vector<MappedStep> mapped;
+  std::vector<void*> claimed;
+  std::vector<bool> materialisable;
+  std::vector<std::uint32_t> element_needed;
+  std::vector<void*> heap_live;
+  std::vector<void*> holders;
+  std::vector<AppliedSlot> applied_slots;
+  std::vector<std::uint32_t> element_slots;
+  std::vector<std::vector<void*>> element_addresses;
+  std::vector<std::uint8_t> string_scratch;
+  std::vector<std::int64_t> clock_deltas;
+
+  // Capacity in bytes (thread_scratch_bytes).
+  std::size_t bytes() const;
+  void clear();
+};
+
+constexpr std::size_t kKeptRestoreTableBytes = 64 * 1024;
+
+// The tables a Restorer decodes with: the thread's kept set, or a set of its own when a
+// restore runs inside another one on this thread (a hook or validator that restores).
+class RestoreTablesLease {
+ public:
+  RestoreTablesLease();
+  ~RestoreTablesLease();
+  RestoreTablesLease(const RestoreTablesLease&) = delete;
+  RestoreTablesLease& operator=(const RestoreTablesLease&) = delete;
+  RestoreTables& tables() { return *tables_; }
+  const RestoreTables& tables() const { return *tables_; }
+
+ private:
+  RestoreTables* tables_;
+  bool kept_;  // the thread's set, handed back at the end
+};
+
 class Restorer {
  public:
   // `dry_run`: a plan of a build known only by its schema (no code): types it can create are
@@ -128,7 +177,28 @@ class Restorer {
         payload_(payload),
         size_(size),
         report_(report),
-        dry_run_(dry_run) {}
+        dry_run_(dry_run),
+        frames_(lease_.tables().frames),
+        rejection_counts_(lease_.tables().rejection_counts),
+        handed_counts_(lease_.tables().handed_counts),
+        verdicts_(lease_.tables().verdicts),
+        part_verdicts_(lease_.tables().part_verdicts),
+        slots_(lease_.tables().slots),
+        containers_(lease_.tables().containers),
+        heap_(lease_.tables().heap),
+        refs_(lease_.tables().refs),
+        steps_(lease_.tables().steps),
+        mapped_(lease_.tables().mapped),
+        claimed_(lease_.tables().claimed),
+        materialisable_(lease_.tables().materialisable),
+        element_needed_(lease_.tables().element_needed),
+        heap_live_(lease_.tables().heap_live),
+        holders_(lease_.tables().holders),
+        applied_slots_(lease_.tables().applied_slots),
+        element_slots_(lease_.tables().element_slots),
+        element_addresses_(lease_.tables().element_addresses),
+        string_scratch_(lease_.tables().string_scratch),
+        clock_deltas_(lease_.tables().clock_deltas) {}
 
   Status check();
 
@@ -179,6 +249,10 @@ class Restorer {
   bool validated_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);
 
   bool plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);
+
+  // Fields [first, end) of struct `n` at `dst`, one by one (path frame `frame` names each).
+  bool fields(const PlanNode* n, std::uint32_t first, std::uint32_t end, std::uint8_t* dst,
+              std::size_t frame);
 
   // A copy-only value in one step: check it (pass 1), copy it (writing passes). False,
   // consuming nothing, when the bytes are short or a bool or bit-field value is invalid: the
@@ -283,51 +357,52 @@ class Restorer {
   std::size_t size_;
   Report& report_;
   const bool dry_run_;
+  RestoreTablesLease lease_;
 
   Mode mode_ = Mode::Check;
   int depth_ = 0;
-  std::vector<PathFrame> frames_;
+  std::vector<PathFrame>& frames_;
   std::uint32_t counter_ = 0;
   std::uint32_t heap_counter_ = 0;
   std::uint32_t current_object_ = 0;
-  std::vector<std::uint32_t> rejection_counts_;
+  std::vector<std::uint32_t>& rejection_counts_;
   std::size_t value_rejections_ = 0;
   // The innermost object being decoded whose migration hook runs (not across pointers: a
   // pointee is an object of its own), or null.
   const PlanNode* migrating_ = nullptr;
-  std::vector<std::uint32_t> handed_counts_;  // per field, as rejection_counts_
+  std::vector<std::uint32_t>& handed_counts_;  // per field, as rejection_counts_
   std::size_t values_handed_ = 0;
   std::size_t outside_count_ = 0;
 
   std::uint32_t container_ordinal_ = 0;
   std::uint32_t slot_ordinal_ = 0;
-  std::vector<std::uint8_t> verdicts_;
+  std::vector<std::uint8_t>& verdicts_;
   std::size_t verdict_cursor_ = 0;
-  std::vector<std::uint8_t> part_verdicts_;  // begin_part / end_part
+  std::vector<std::uint8_t>& part_verdicts_;  // begin_part / end_part
   std::size_t part_cursor_ = 0;
   std::uint32_t refusals_ = 0;  // pass 1: values refused by validators, not yet taken in
 
-  std::vector<SlotRecord> slots_;
+  std::vector<SlotRecord>& slots_;
   std::unordered_map<std::uint32_t, std::string> explained_;  // slot ordinal -> path
-  std::vector<ContainerRecord> containers_;
-  std::vector<HeapRecord> heap_;
-  std::vector<RefRecord> refs_;
-  std::vector<std::uint32_t> steps_;
-  std::vector<MappedStep> mapped_;
-  std::vector<void*> claimed_;
-  std::vector<bool> materialisable_;
-  std::vector<std::uint32_t> element_needed_;
+  std::vector<ContainerRecord>& containers_;
+  std::vector<HeapRecord>& heap_;
+  std::vector<RefRecord>& refs_;
+  std::vector<std::uint32_t>& steps_;
+  std::vector<MappedStep>& mapped_;
+  std::vector<void*>& claimed_;
+  std::vector<bool>& materialisable_;
+  std::vector<std::uint32_t>& element_needed_;
 
-  std::vector<void*> heap_live_;
-  std::vector<void*> holders_;
-  std::vector<AppliedSlot> applied_slots_;
-  std::vector<std::uint32_t> element_slots_;
-  std::vector<std::vector<void*>> element_addresses_;
-  std::vector<std::uint8_t> string_scratch_;
+  std::vector<void*>& heap_live_;
+  std::vector<void*>& holders_;
+  std::vector<AppliedSlot>& applied_slots_;
+  std::vector<std::uint32_t>& element_slots_;
+  std::vector<std::vector<void*>>& element_addresses_;
+  std::vector<std::uint8_t>& string_scratch_;
 
   const FieldTime* time_ = nullptr;  // the reader field being decoded is a time of this clock
   bool rebasing_ = false;
-  std::vector<std::int64_t> clock_deltas_;  // per reader clock
+  std::vector<std::int64_t>& clock_deltas_;  // per reader clock
 };
 
 }  // namespace symcr::detail::restoring
