@@ -164,6 +164,8 @@ __attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c, co
                                                              const ShiftTable& t) {
   std::uint64_t c0 = c, c1 = 0, c2 = 0;
   const std::uint8_t* const end = p + block;
+  // Unrolled: the loop's own increment, compare and branch were a third of its instructions.
+#pragma GCC unroll 4
   for (; p < end; p += 8) {
     c0 = _mm_crc32_u64(c0, load_word(p));
     c1 = _mm_crc32_u64(c1, load_word(p + block));
@@ -193,6 +195,7 @@ __attribute__((target("sse4.2"))) std::uint32_t crc32c_extend_hardware(std::uint
     }
   }
   std::uint64_t c64 = c;
+#pragma GCC unroll 4
   while (size >= 8) {
     c64 = _mm_crc32_u64(c64, load_word(p));
     p += 8;

@@ -47,6 +47,8 @@ struct FieldPlan {
   double range_min = 0, range_max = 0;
   std::uint32_t counter = 0;  // per-field index for capping value-level entries
   const char* name = "";      // writer field name (concrete paths)
+  // reader_time() of this field, looked up once (derive_copy_segments; never encoded).
+  const FieldTime* time = nullptr;
 };
 
 struct EnumMapping {
@@ -213,7 +215,8 @@ const FieldTime* reader_time(const Schema& reader, const PlanNode& n, const Fiel
 void mark_validated_parts(std::deque<PlanNode>& nodes);
 
 // Sets every struct node's copy_segments (and fills Plan::segment_programs) from the nodes'
-// copy programs: once a plan's nodes are final (planned, or decoded from an image).
+// copy programs, and every FieldPlan::time: once a plan's nodes are final (planned, or decoded
+// from an image).
 void derive_copy_segments(Plan& plan);
 
 }  // namespace symcr::detail

@@ -149,11 +149,11 @@ bool Planner::build_copy(PlanNode& n) {
   }
 }
 
-bool Planner::segment_field(const PlanNode& n, const FieldPlan& field) const {
+bool Planner::segment_field(const FieldPlan& field) {
   const PlanNode* child = field.node;
   return field.reader_field != kNoType && !field.has_range && !field.bit_width && child &&
          child->copy_only && !child->validated && !child->migrates &&
-         !reader_time(reader_, n, field);
+         !field.time;
 }
 
 // Splits a struct that is not copy-only into segments; none when no field could be copied
@@ -168,7 +168,7 @@ void Planner::derive_segments(PlanNode& n) {
   bool any_copy = false;
   for (std::uint32_t f = 0; f < n.fields.size(); ++f) {
     const FieldPlan& field = n.fields[f];
-    if (!segment_field(n, field)) {
+    if (!segment_field(field)) {
       program = nullptr;
       segments.push_back(CopySegment{f, f + 1, nullptr});
       continue;
@@ -193,13 +193,22 @@ void Planner::derive_segments(PlanNode& n) {
     segments.push_back(CopySegment{f, f + 1, program});
     any_copy = true;
   }
-  if (any_copy) n.copy_segments = std::move(segments);
+  if (!any_copy) return;
+  // A program of no bytes (fields of empty structs) has nothing to check or copy.
+  segments.erase(std::remove_if(segments.begin(), segments.end(),
+                                [](const CopySegment& segment) {
+                                  return segment.copy && segment.copy->copy_wire == 0;
+                                }),
+                 segments.end());
+  n.copy_segments = std::move(segments);
 }
 
 void Planner::derive_copy_segments() {
   plan_.segment_programs.clear();
-  if (!plan_.status.ok()) return;
-  for (PlanNode& n : plan_.nodes) derive_segments(n);
+  for (PlanNode& n : plan_.nodes) {
+    for (FieldPlan& field : n.fields) field.time = reader_time(reader_, n, field);
+    if (plan_.status.ok()) derive_segments(n);
+  }
 }
 
 }  // namespace symcr::detail::planning

@@ -175,9 +175,9 @@ class Planner {
 
   __attribute__((noinline, cold)) bool build_copy(PlanNode& n);
 
-  // A field of struct `n` a copy segment can hold: kept, no range or bit-field, not a time of
-  // a clock, and copy-only without a validator or migration of its own.
-  __attribute__((cold)) bool segment_field(const PlanNode& n, const FieldPlan& field) const;
+  // A field a copy segment can hold: kept, no range or bit-field, not a time of a clock
+  // (FieldPlan::time set), and copy-only without a validator or migration of its own.
+  __attribute__((cold)) static bool segment_field(const FieldPlan& field);
   __attribute__((cold)) void derive_segments(PlanNode& n);
 
   __attribute__((cold)) void add(std::string path, Decision decision, std::string detail,

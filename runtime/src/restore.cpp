@@ -52,8 +52,6 @@ void Restorer::begin_pass(Mode mode) {
 
 Status Restorer::check() {
   begin_pass(Mode::Check);
-  rejection_counts_.assign(plan_.counter_paths.size() + 1, 0);
-  handed_counts_.assign(plan_.counter_paths.size() + 1, 0);
   heap_counter_ = static_cast<std::uint32_t>(plan_.counter_paths.size());
   ClockReadings readings;
   if (!decode_objects() || !decode_references() || !in_.clock_readings(readings) ||

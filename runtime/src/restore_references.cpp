@@ -355,7 +355,7 @@ void Restorer::decide_slots() {
     auto reject = [&](const std::string& why) {
       slot.outcome = SlotOutcome::Rejected;
       ++value_rejections_;
-      if (++rejection_counts_[slot.counter] > kMaxConcretePerField) return;
+      if (++entry_count(rejection_counts_, slot.counter) > kMaxConcretePerField) return;
       pending.push_back({static_cast<std::uint32_t>(ordinal), Decision::Rejected,
                          "pointer not restored: " + why});
     };

@@ -45,7 +45,9 @@ void Restorer::report_value(const PlanNode* hook, std::uint32_t counter, const c
                             va_list args) {
   if (mode_ != Mode::Check) return;
   ++(hook ? values_handed_ : value_rejections_);
-  if (++(hook ? handed_counts_ : rejection_counts_)[counter] > kMaxConcretePerField) return;
+  if (++entry_count(hook ? handed_counts_ : rejection_counts_, counter) > kMaxConcretePerField) {
+    return;
+  }
   char buffer[240];
   std::vsnprintf(buffer, sizeof buffer, format, args);
   if (hook) {
@@ -375,7 +377,7 @@ bool Restorer::fields(const PlanNode* n, std::uint32_t first, std::uint32_t end,
     frames_[frame].name = child.name;
     counter_ = child.counter;
     std::uint8_t* at = dst && child.reader_field != kNoType ? dst + child.reader_offset : nullptr;
-    time_ = reader_time(reader_, *n, child);
+    time_ = child.time;
     // A time of a clock the checkpoint has no reading of keeps this build's value (the plan's
     // report rejects the field).
     if (time_ && plan_.writer_clock_of[time_->clock->index] == kNoType) at = nullptr;
@@ -390,9 +392,12 @@ bool Restorer::fields(const PlanNode* n, std::uint32_t first, std::uint32_t end,
 bool Restorer::copy(const PlanNode* n, std::uint8_t* dst) {
   if (in_.remaining() < n->copy_wire) return false;
   const std::uint8_t* base = in_.position();
-  // Checked in every pass: a value the first pass sent to the general path (a rejected
-  // bit-field value) must take it in the second too.
-  if (!copy_only_valid(*n, base)) return false;
+  // A value the first pass sent to the general path (a rejected bit-field value) must take it
+  // in the second too: checked again unless every copy of the first pass was valid.
+  if ((mode_ != Mode::Apply || copy_refused_) && !copy_only_valid(*n, base)) {
+    copy_refused_ = true;
+    return false;
+  }
   if (dst && writing()) copy_only_write(*n, base, dst);
   in_.seek(base + n->copy_wire);
   return true;

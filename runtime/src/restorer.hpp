@@ -22,10 +22,32 @@
 namespace symcr::detail::restoring {
 
 // ---- copy-only values (PlanNode::copy_only) ------------------------------------------------
+// Little-endian, as the copy runs assume; the planner allows sizes 1, 2, 4 and 8.
 inline std::uint64_t bit_field_raw(const CopyBits& bits, const std::uint8_t* wire) {
-  std::uint64_t raw = 0;
-  std::memcpy(&raw, wire + bits.wire, bits.size);  // little-endian, as the copy runs assume
-  return raw;
+  const std::uint8_t* at = wire + bits.wire;
+  switch (bits.size) {
+    case 1: return at[0];
+    case 2: {
+      std::uint16_t raw;
+      std::memcpy(&raw, at, sizeof raw);
+      return raw;
+    }
+    case 4: {
+      std::uint32_t raw;
+      std::memcpy(&raw, at, sizeof raw);
+      return raw;
+    }
+    case 8: {
+      std::uint64_t raw;
+      std::memcpy(&raw, at, sizeof raw);
+      return raw;
+    }
+    default: {
+      std::uint64_t raw = 0;
+      std::memcpy(&raw, at, bits.size);
+      return raw;
+    }
+  }
 }
 
 inline Number bit_field_value(const CopyBits& bits, const std::uint8_t* wire) {
@@ -42,6 +64,16 @@ inline Number bit_field_value(const CopyBits& bits, const std::uint8_t* wire) {
   return value;
 }
 
+// fits_bits(bit_field_value(bits, wire), ...) for the wire integer `raw`, inline.
+inline bool copy_bits_fit(const CopyBits& bits, std::uint64_t raw) {
+  if (bits.width >= 64) return true;
+  if (!bits.is_signed) return (raw >> bits.width) == 0;
+  const unsigned unused = 64 - 8 * unsigned{bits.size};
+  const std::int64_t value = static_cast<std::int64_t>(raw << unused) >> unused;
+  const std::int64_t high = value >> (bits.width - 1);  // all sign: 0 or -1 when it fits
+  return high == 0 || high == -1;
+}
+
 // The first pass's checks of a copy-only value at `wire`: bools are 0 or 1, bit-field values
 // fit their widths. False sends the value to the general path, which names the fault.
 inline bool copy_only_valid(const PlanNode& n, const std::uint8_t* wire) {
@@ -49,15 +81,36 @@ inline bool copy_only_valid(const PlanNode& n, const std::uint8_t* wire) {
     if (wire[offset] > 1) return false;
   }
   for (const CopyBits& bits : n.copy_bits) {
-    if (!fits_bits(bit_field_value(bits, wire), bits.width, bits.is_signed)) return false;
+    if (!copy_bits_fit(bits, bit_field_raw(bits, wire))) return false;
   }
   return true;
+}
+
+// Writes a bit-field's value (its checked wire integer) into its storage unit, byte by byte:
+// the unit's bytes past the field are not touched.
+inline void copy_bits_to(std::uint8_t* unit, const CopyBits& bits, std::uint64_t raw) {
+  const unsigned end = unsigned{bits.bit_offset} + bits.width;
+  if (end > 64) {  // the field's low bits are all that is stored: its sign does not matter
+    Number value;
+    value.tag = Number::Tag::Unsigned;
+    value.u = raw;
+    store_bits(unit, bits.bit_offset, bits.width, value);
+    return;
+  }
+  const unsigned bytes = (end + 7) / 8;
+  std::uint64_t word = 0;
+  for (unsigned i = 0; i < bytes; ++i) word |= std::uint64_t{unit[i]} << (8 * i);
+  const std::uint64_t mask =
+      (bits.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits.width) - 1)
+      << bits.bit_offset;
+  word = (word & ~mask) | ((raw << bits.bit_offset) & mask);
+  for (unsigned i = 0; i < bytes; ++i) unit[i] = static_cast<std::uint8_t>(word >> (8 * i));
 }
 
 inline void copy_only_write(const PlanNode& n, const std::uint8_t* wire, std::uint8_t* dst) {
   for (const CopyRun& run : n.copy_runs) std::memcpy(dst + run.dst, wire + run.wire, run.length);
   for (const CopyBits& bits : n.copy_bits) {
-    store_bits(dst + bits.dst, bits.bit_offset, bits.width, bit_field_value(bits, wire));
+    copy_bits_to(dst + bits.dst, bits, bit_field_raw(bits, wire));
   }
 }
 
@@ -213,6 +266,16 @@ class Restorer {
   // ---- errors and report ---------------------------------------------------------------
   __attribute__((format(printf, 2, 3))) const Status& corrupt(const char* format, ...);
 
+  // `counts` (rejection_counts_ or handed_counts_) at `counter`: both are sized on the first
+  // value-level entry, so that a restore without one never fills them.
+  std::uint32_t& entry_count(std::vector<std::uint32_t>& counts, std::uint32_t counter) {
+    if (counts.empty()) {
+      rejection_counts_.assign(plan_.counter_paths.size() + 1, 0);
+      handed_counts_.assign(plan_.counter_paths.size() + 1, 0);
+    }
+    return counts[counter];
+  }
+
   // A value-level rejection: the reader keeps its value. Concrete paths are capped per field.
   // Inside an object whose migration hook runs, the value is the hook's to handle (it reads
   // the old value by name): reported Converted, not lossy, and not counted as a rejection.
@@ -365,7 +428,9 @@ class Restorer {
   std::uint32_t counter_ = 0;
   std::uint32_t heap_counter_ = 0;
   std::uint32_t current_object_ = 0;
-  std::vector<std::uint32_t>& rejection_counts_;
+  std::vector<std::uint32_t>& rejection_counts_;  // per counter, sized by entry_count
+  // A copy of a copy-only value failed its checks (copy): the second pass checks again.
+  bool copy_refused_ = false;
   std::size_t value_rejections_ = 0;
   // The innermost object being decoded whose migration hook runs (not across pointers: a
   // pointee is an object of its own), or null.
