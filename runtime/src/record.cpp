@@ -94,7 +94,8 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
     }
     out.insert(out.end(), blob.data, blob.data + blob.size);
   }
-  Status status = append_payload(schema, out);
+  PayloadCrc payload_crc;
+  Status status = append_payload(schema, out, &payload_crc);
   if (!status.ok()) return status;
   const std::size_t payload_size = out.size() - header_size - schema_size;
   if (payload_size > UINT32_MAX) {
@@ -121,7 +122,13 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   if (authenticated && signing->binding != nullptr) {  // the CRC then covers the MAC too
     sign_record(*signing->keys, out.data(), out.size(), *signing->binding);
   }
-  le::store32(out.data() + kRecordChecksumOffset, record_checksum(out.data(), out.size()));
+  // A large payload's CRC was computed as it was copied: only the header and schema are read.
+  const std::uint32_t checksum =
+      payload_crc.known
+          ? crc32c_combine(record_checksum(out.data(), header_size + schema_size),
+                           payload_crc.value, payload_size)
+          : record_checksum(out.data(), out.size());
+  le::store32(out.data() + kRecordChecksumOffset, checksum);
   return Status();
 }
 

@@ -105,7 +105,7 @@ void RestoreTables::clear() {
   holders.clear();
   applied_slots.clear();
   element_slots.clear();
-  element_addresses.clear();
+  for (std::vector<void*>& addresses : element_addresses) addresses.clear();  // kept for reuse
   string_scratch.clear();
   clock_deltas.clear();
 }

@@ -190,7 +190,7 @@ struct RestoreTables {
   std::vector<void*> holders;
   std::vector<AppliedSlot> applied_slots;
   std::vector<std::uint32_t> element_slots;
-  std::vector<std::vector<void*>> element_addresses;
+  std::vector<std::vector<void*>> element_addresses;  // cleared lists stay, for their capacity
   std::vector<std::uint8_t> string_scratch;
   std::vector<std::int64_t> clock_deltas;
 
@@ -462,7 +462,8 @@ class Restorer {
   std::vector<void*>& holders_;
   std::vector<AppliedSlot>& applied_slots_;
   std::vector<std::uint32_t>& element_slots_;
-  std::vector<std::vector<void*>>& element_addresses_;
+  std::vector<std::vector<void*>>& element_addresses_;  // the first element_lists_ in use
+  std::size_t element_lists_ = 0;
   std::vector<std::uint8_t>& string_scratch_;
 
   const FieldTime* time_ = nullptr;  // the reader field being decoded is a time of this clock
