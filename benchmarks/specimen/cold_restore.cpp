@@ -1,6 +1,7 @@
 #include "cold_restore.hpp"
 
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -41,22 +42,34 @@ void write_bytes(const std::string& path, const void* data, std::size_t size) {
   if (!out) die("write", path);
 }
 
+// Page faults of this process so far (minor: a first touch of a page of code, data or heap).
+std::uint64_t page_faults() {
+  rusage usage{};
+  ::getrusage(RUSAGE_SELF, &usage);
+  return static_cast<std::uint64_t>(usage.ru_minflt + usage.ru_majflt);
+}
+
 // --- the child: one restore in a fresh process --------------------------------------------
 
 // The experiment's symcr method: the store is opened when the autopilot starts; the timed part
-// is restore_latest(), from the call to the state written. Prints "open_ns restore_ns".
+// is restore_latest(), from the call to the state written. Prints "open_ns restore_ns
+// open_faults restore_faults".
 int child_symcr(const char* store_path, bool (*restored)()) {
+  const std::uint64_t f0 = page_faults();
   const std::uint64_t t0 = now_ns();
   symcr::Store store;
   const symcr::Status opened = symcr::Store::open(store_path, symcr::StoreOptions{}, store);
   const std::uint64_t t1 = now_ns();
+  const std::uint64_t f1 = page_faults();
   if (!opened.ok()) die("open", opened.message());
   const symcr::Report report = store.restore_latest();
   const std::uint64_t t2 = now_ns();
+  const std::uint64_t f2 = page_faults();
   if (!report.ok()) die("restore_latest", report.status().message());
   if (!restored()) die("restore_latest", "wrong values restored");
-  std::printf("%llu %llu\n", static_cast<unsigned long long>(t1 - t0),
-              static_cast<unsigned long long>(t2 - t1));
+  std::printf("%llu %llu %llu %llu\n", static_cast<unsigned long long>(t1 - t0),
+              static_cast<unsigned long long>(t2 - t1), static_cast<unsigned long long>(f1 - f0),
+              static_cast<unsigned long long>(f2 - f1));
   return 0;
 }
 
@@ -65,9 +78,11 @@ int child_symcr(const char* store_path, bool (*restored)()) {
 // heap and code addresses are the parent's, meaningless here, so the process ends at once,
 // running no destructor over them.
 int child_raw(const char* image_path) {
+  const std::uint64_t f0 = page_faults();
   const std::uint64_t t0 = now_ns();
   const int fd = ::open(image_path, O_RDONLY | O_CLOEXEC);
   const std::uint64_t t1 = now_ns();
+  const std::uint64_t f1 = page_faults();
   if (fd < 0) die("open", image_path);
   std::vector<std::uint8_t> image(sizeof(Copter));
   if (::pread(fd, image.data(), image.size(), 0) != static_cast<ssize_t>(image.size())) {
@@ -75,8 +90,10 @@ int child_raw(const char* image_path) {
   }
   std::memcpy(static_cast<void*>(&copter), image.data(), image.size());
   const std::uint64_t t2 = now_ns();
-  std::printf("%llu %llu\n", static_cast<unsigned long long>(t1 - t0),
-              static_cast<unsigned long long>(t2 - t1));
+  const std::uint64_t f2 = page_faults();
+  std::printf("%llu %llu %llu %llu\n", static_cast<unsigned long long>(t1 - t0),
+              static_cast<unsigned long long>(t2 - t1), static_cast<unsigned long long>(f1 - f0),
+              static_cast<unsigned long long>(f2 - f1));
   std::fflush(stdout);
   std::_Exit(0);
 }
@@ -86,6 +103,8 @@ int child_raw(const char* image_path) {
 struct Timing {
   std::uint64_t open_ns = 0;
   std::uint64_t restore_ns = 0;
+  std::uint64_t open_faults = 0;
+  std::uint64_t restore_faults = 0;
 };
 
 // Runs this program again as `--cold-restore-child method path` and reads its timing line.
@@ -112,13 +131,16 @@ Timing run_child(const char* method, const std::string& path) {
   int status = 0;
   ::waitpid(pid, &status, 0);
   Timing timing;
-  unsigned long long open_ns = 0, restore_ns = 0;
+  unsigned long long open_ns = 0, restore_ns = 0, open_faults = 0, restore_faults = 0;
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 ||
-      std::sscanf(text.c_str(), "%llu %llu", &open_ns, &restore_ns) != 2) {
+      std::sscanf(text.c_str(), "%llu %llu %llu %llu", &open_ns, &restore_ns, &open_faults,
+                  &restore_faults) != 4) {
     die("cold restore", std::string("the ") + method + " child failed");
   }
   timing.open_ns = open_ns;
   timing.restore_ns = restore_ns;
+  timing.open_faults = open_faults;
+  timing.restore_faults = restore_faults;
   return timing;
 }
 
@@ -129,17 +151,21 @@ std::uint64_t median(std::vector<std::uint64_t> values) {
 }
 
 void print_row(const char* method, const std::vector<Timing>& timings) {
-  std::vector<std::uint64_t> restore, open;
+  std::vector<std::uint64_t> restore, open, open_faults, restore_faults;
   for (const Timing& t : timings) {
     restore.push_back(t.restore_ns);
     open.push_back(t.open_ns);
+    open_faults.push_back(t.open_faults);
+    restore_faults.push_back(t.restore_faults);
   }
   std::printf(
       "cold-restore %s: runs %zu, restore median %.1f us (min %.1f, max %.1f), "
-      "open median %.1f us\n",
+      "open median %.1f us, page faults median: open %llu, restore %llu\n",
       method, timings.size(), median(restore) / 1000.0,
       *std::min_element(restore.begin(), restore.end()) / 1000.0,
-      *std::max_element(restore.begin(), restore.end()) / 1000.0, median(open) / 1000.0);
+      *std::max_element(restore.begin(), restore.end()) / 1000.0, median(open) / 1000.0,
+      static_cast<unsigned long long>(median(open_faults)),
+      static_cast<unsigned long long>(median(restore_faults)));
 }
 
 int parent(int runs, const std::string& fixture_store, bool (*restored)()) {

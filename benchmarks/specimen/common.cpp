@@ -51,4 +51,13 @@ void fail(benchmark::State& state, const char* what, const char* message) {
   state.SkipWithError(text.c_str());
 }
 
+void measured_iterations(benchmark::internal::Benchmark* row) {
+  const char* fixed = std::getenv("SYMCR_BENCH_ITERATIONS");
+  if (fixed == nullptr || *fixed == '\0') return;
+  char* end = nullptr;
+  const long long iterations = std::strtoll(fixed, &end, 10);
+  if (*end != '\0' || iterations <= 0) die("SYMCR_BENCH_ITERATIONS", fixed);
+  row->Iterations(static_cast<benchmark::IterationCount>(iterations));
+}
+
 }  // namespace specimen_bench

@@ -12,7 +12,10 @@
 
 namespace benchmark {
 class State;
+namespace internal {
+class Benchmark;
 }
+}  // namespace benchmark
 
 namespace specimen_bench {
 
@@ -34,6 +37,12 @@ std::string scratch_path(const char* name);
 
 // Marks the benchmark as failed with "what: message".
 void fail(benchmark::State& state, const char* what, const char* message);
+
+// Every row is registered with ->Apply(measured_iterations): with SYMCR_BENCH_ITERATIONS=N in
+// the environment the row runs exactly N iterations instead of running for a time, so that
+// benchmarks/run can count instructions per operation under callgrind as the difference of
+// two runs (N and a larger N), which cancels the setup and the first, cold operation.
+void measured_iterations(benchmark::internal::Benchmark* row);
 
 }  // namespace specimen_bench
 

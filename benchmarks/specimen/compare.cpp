@@ -65,7 +65,7 @@ void BM_CerealSave(benchmark::State& state) {
   }
   state.counters["bytes"] = static_cast<double>(buffer.written());
 }
-BENCHMARK(BM_CerealSave);
+BENCHMARK(BM_CerealSave)->Apply(measured_iterations);
 
 void BM_CerealLoad(benchmark::State& state) {
   reset_to_flight_state();
@@ -82,7 +82,7 @@ void BM_CerealLoad(benchmark::State& state) {
   if (!matches_flight_state()) fail(state, "cereal", "the loaded state differs");
   state.counters["bytes"] = static_cast<double>(size);
 }
-BENCHMARK(BM_CerealLoad);
+BENCHMARK(BM_CerealLoad)->Apply(measured_iterations);
 
 // ---- Boost.Serialization ---------------------------------------------------------------------
 void BM_BoostSave(benchmark::State& state) {
@@ -98,7 +98,7 @@ void BM_BoostSave(benchmark::State& state) {
   FixedBuffer with_header;
   state.counters["bytes_with_header"] = static_cast<double>(boost_save_once(with_header, 0));
 }
-BENCHMARK(BM_BoostSave);
+BENCHMARK(BM_BoostSave)->Apply(measured_iterations);
 
 void BM_BoostLoad(benchmark::State& state) {
   reset_to_flight_state();
@@ -114,7 +114,7 @@ void BM_BoostLoad(benchmark::State& state) {
   if (!matches_flight_state()) fail(state, "boost", "the loaded state differs");
   state.counters["bytes"] = static_cast<double>(size);
 }
-BENCHMARK(BM_BoostLoad);
+BENCHMARK(BM_BoostLoad)->Apply(measured_iterations);
 
 }  // namespace
 }  // namespace specimen_bench

@@ -87,7 +87,7 @@ void BM_SchemaChangeRestoreCached(benchmark::State& state) {
   if (!restored()) fail(state, "V0 -> patched", "wrong values restored");
   report_counters(state, report, bytes.size());
 }
-BENCHMARK(BM_SchemaChangeRestoreCached);
+BENCHMARK(BM_SchemaChangeRestoreCached)->Apply(measured_iterations);
 
 // Not cached: the runtime keeps a few plans keyed by the reader Schema object, so restoring in
 // turn into more distinct (identical) reader Schema objects than it keeps makes every restore
@@ -113,7 +113,7 @@ void BM_SchemaChangeRestoreUncached(benchmark::State& state) {
   if (!restored()) fail(state, "V0 -> patched", "wrong values restored");
   report_counters(state, report, bytes.size());
 }
-BENCHMARK(BM_SchemaChangeRestoreUncached);
+BENCHMARK(BM_SchemaChangeRestoreUncached)->Apply(measured_iterations);
 
 // The store the V0 build wrote, opened by this build: restore_latest with the store's parsed
 // schema and the cached plan (the periodic-checkpoint deployment after a patch). Works on a
@@ -147,7 +147,7 @@ void BM_SchemaChangeStoreRestoreLatest(benchmark::State& state) {
   store.close();
   ::unlink(path.c_str());
 }
-BENCHMARK(BM_SchemaChangeStoreRestoreLatest);
+BENCHMARK(BM_SchemaChangeStoreRestoreLatest)->Apply(measured_iterations);
 
 }  // namespace
 }  // namespace specimen_bench

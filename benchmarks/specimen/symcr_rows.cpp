@@ -35,7 +35,7 @@ void BM_Memcpy(benchmark::State& state) {
   }
   state.counters["bytes"] = static_cast<double>(sizeof buffer);
 }
-BENCHMARK(BM_Memcpy);
+BENCHMARK(BM_Memcpy)->Apply(measured_iterations);
 
 // One positioned write of as many bytes as the values symcr saves (no header, schema or counts).
 void BM_RawPwrite(benchmark::State& state) {
@@ -53,7 +53,7 @@ void BM_RawPwrite(benchmark::State& state) {
   ::close(fd);
   ::unlink(path.c_str());
 }
-BENCHMARK(BM_RawPwrite);
+BENCHMARK(BM_RawPwrite)->Apply(measured_iterations);
 
 // ---- symcr: in memory (the bytes of a single-file checkpoint, schema inline) ------------------
 void BM_CheckpointToBuffer(benchmark::State& state) {
@@ -71,7 +71,7 @@ void BM_CheckpointToBuffer(benchmark::State& state) {
   state.counters["payload_bytes"] = static_cast<double>(payload_size(buffer));
   state.counters["schema_bytes"] = static_cast<double>(schema_size(buffer));
 }
-BENCHMARK(BM_CheckpointToBuffer);
+BENCHMARK(BM_CheckpointToBuffer)->Apply(measured_iterations);
 
 void BM_RestoreFromBuffer(benchmark::State& state) {
   reset_to_flight_state();
@@ -88,7 +88,7 @@ void BM_RestoreFromBuffer(benchmark::State& state) {
   if (!matches_flight_state()) fail(state, "restore_from_buffer", "the restored state differs");
   state.counters["bytes"] = static_cast<double>(buffer.size());
 }
-BENCHMARK(BM_RestoreFromBuffer);
+BENCHMARK(BM_RestoreFromBuffer)->Apply(measured_iterations);
 
 // ---- symcr: the checkpoint store --------------------------------------------------------------
 // Authenticated checkpoints for the rows that ask for them: every save signs its record and
@@ -132,9 +132,9 @@ void BM_StoreSave(benchmark::State& state, symcr::Durability durability, bool au
   store.close();
   ::unlink(path.c_str());
 }
-BENCHMARK_CAPTURE(BM_StoreSave, page_cache, symcr::Durability::PageCache, false);
-BENCHMARK_CAPTURE(BM_StoreSave, fdatasync, symcr::Durability::Fdatasync, false)->Iterations(200);
-BENCHMARK_CAPTURE(BM_StoreSave, page_cache_authenticated, symcr::Durability::PageCache, true);
+BENCHMARK_CAPTURE(BM_StoreSave, page_cache, symcr::Durability::PageCache, false)->Apply(measured_iterations);
+BENCHMARK_CAPTURE(BM_StoreSave, fdatasync, symcr::Durability::Fdatasync, false)->Iterations(200)->Apply(measured_iterations);
+BENCHMARK_CAPTURE(BM_StoreSave, page_cache_authenticated, symcr::Durability::PageCache, true)->Apply(measured_iterations);
 
 void store_restore_latest(benchmark::State& state, bool authenticated) {
   reset_to_flight_state();  // before the keys: its checkpoint is not authenticated
@@ -164,11 +164,11 @@ void store_restore_latest(benchmark::State& state, bool authenticated) {
   ::unlink(path.c_str());
 }
 void BM_StoreRestoreLatest(benchmark::State& state) { store_restore_latest(state, false); }
-BENCHMARK(BM_StoreRestoreLatest);
+BENCHMARK(BM_StoreRestoreLatest)->Apply(measured_iterations);
 void BM_StoreRestoreLatestAuthenticated(benchmark::State& state) {
   store_restore_latest(state, true);
 }
-BENCHMARK(BM_StoreRestoreLatestAuthenticated);
+BENCHMARK(BM_StoreRestoreLatestAuthenticated)->Apply(measured_iterations);
 
 // ---- symcr: single-file checkpoints (exclusive temp file + rename) ---------------------------
 void BM_CheckpointFile(benchmark::State& state) {
@@ -184,7 +184,7 @@ void BM_CheckpointFile(benchmark::State& state) {
   state.counters["bytes"] = static_cast<double>(flight_checkpoint().size());
   ::unlink(path.c_str());
 }
-BENCHMARK(BM_CheckpointFile);
+BENCHMARK(BM_CheckpointFile)->Apply(measured_iterations);
 
 void BM_RestoreFile(benchmark::State& state) {
   reset_to_flight_state();
@@ -203,7 +203,7 @@ void BM_RestoreFile(benchmark::State& state) {
   state.counters["bytes"] = static_cast<double>(flight_checkpoint().size());
   ::unlink(path.c_str());
 }
-BENCHMARK(BM_RestoreFile);
+BENCHMARK(BM_RestoreFile)->Apply(measured_iterations);
 
 }  // namespace
 }  // namespace specimen_bench

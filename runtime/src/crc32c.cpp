@@ -23,6 +23,20 @@ namespace {
 
 constexpr std::uint32_t kPolynomial = 0x82F63B78u;  // Castagnoli, bit-reflected
 
+// Appending zero bits to a CRC register is linear: a 32x32 GF(2) matrix, one column per
+// register bit.
+constexpr std::uint32_t gf2_times(const std::uint32_t* matrix, std::uint32_t vector) {
+  std::uint32_t sum = 0;
+  for (; vector; vector >>= 1, ++matrix) {
+    if (vector & 1u) sum ^= *matrix;
+  }
+  return sum;
+}
+
+constexpr void gf2_square(std::uint32_t* square, const std::uint32_t* matrix) {
+  for (int n = 0; n < 32; ++n) square[n] = gf2_times(matrix, matrix[n]);
+}
+
 struct SlicingTables {
   std::uint32_t table[8][256];
 };
@@ -96,18 +110,6 @@ namespace {
 constexpr std::size_t kLongBlock = 8192;  // bytes per chain; powers of two
 constexpr std::size_t kShortBlock = 256;
 
-constexpr std::uint32_t gf2_times(const std::uint32_t* matrix, std::uint32_t vector) {
-  std::uint32_t sum = 0;
-  for (; vector; vector >>= 1, ++matrix) {
-    if (vector & 1u) sum ^= *matrix;
-  }
-  return sum;
-}
-
-constexpr void gf2_square(std::uint32_t* square, const std::uint32_t* matrix) {
-  for (int n = 0; n < 32; ++n) square[n] = gf2_times(matrix, matrix[n]);
-}
-
 struct ShiftTable {
   std::uint32_t table[4][256];
 };
@@ -164,6 +166,8 @@ __attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c, co
                                                              const ShiftTable& t) {
   std::uint64_t c0 = c, c1 = 0, c2 = 0;
   const std::uint8_t* const end = p + block;
+  // Unrolled: the loop's own increment, compare and branch were a third of its instructions.
+#pragma GCC unroll 4
   for (; p < end; p += 8) {
     c0 = _mm_crc32_u64(c0, load_word(p));
     c1 = _mm_crc32_u64(c1, load_word(p + block));
@@ -193,6 +197,7 @@ __attribute__((target("sse4.2"))) std::uint32_t crc32c_extend_hardware(std::uint
     }
   }
   std::uint64_t c64 = c;
+#pragma GCC unroll 4
   while (size >= 8) {
     c64 = _mm_crc32_u64(c64, load_word(p));
     p += 8;
@@ -212,6 +217,28 @@ std::uint32_t crc32c_extend_hardware(std::uint32_t crc, const void* data, std::s
 }
 
 #endif
+
+// zlib's crc32_combine: the operator for one zero byte, squared once per bit of the length,
+// applied to crc_a where the length has a one bit.
+std::uint32_t crc32c_combine(std::uint32_t crc_a, std::uint32_t crc_b, std::uint64_t length_b) {
+  if (length_b == 0) return crc_a;
+  std::uint32_t odd[32], even[32];
+  odd[0] = kPolynomial;  // one zero bit
+  std::uint32_t row = 1;
+  for (int n = 1; n < 32; ++n, row <<= 1) odd[n] = row;
+  gf2_square(even, odd);  // two zero bits
+  gf2_square(odd, even);  // four zero bits
+  do {
+    gf2_square(even, odd);  // first: one zero byte
+    if (length_b & 1) crc_a = gf2_times(even, crc_a);
+    length_b >>= 1;
+    if (length_b == 0) break;
+    gf2_square(odd, even);
+    if (length_b & 1) crc_a = gf2_times(odd, crc_a);
+    length_b >>= 1;
+  } while (length_b != 0);
+  return crc_a ^ crc_b;
+}
 
 std::uint32_t crc32c_extend(std::uint32_t crc, const void* data, std::size_t size) {
   using Implementation = std::uint32_t (*)(std::uint32_t, const void*, std::size_t);

@@ -14,6 +14,10 @@ inline std::uint32_t crc32c(const void* data, std::size_t size) {
   return crc32c_extend(0, data, size);
 }
 
+// crc32c(a+b) from crc32c(a), crc32c(b) and b's length: a few dozen 32x32 GF(2) matrix
+// squarings (tens of thousands of instructions), worth it only to avoid a pass over megabytes.
+std::uint32_t crc32c_combine(std::uint32_t crc_a, std::uint32_t crc_b, std::uint64_t length_b);
+
 // The two implementations behind crc32c_extend, exposed so tests can compare them.
 std::uint32_t crc32c_extend_portable(std::uint32_t crc, const void* data, std::size_t size);
 bool crc32c_hardware_available();

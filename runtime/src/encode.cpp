@@ -17,6 +17,7 @@
 
 #include "address_table.hpp"
 #include "clocks.hpp"
+#include "crc32c.hpp"
 #include "engine.hpp"
 #include "payload_grammar.hpp"
 #include "process_memory.hpp"
@@ -155,6 +156,10 @@ class Encoder {
     depth_ = 0;
     error_ = Status();
     pos_ = start_;
+    fused_crc_ = 0;
+    fused_to_ = start_;
+    fused_ = false;
+    fused_valid_ = true;
 
     for (std::uint32_t r = 0; r < schema_.root_count && ok(); ++r) {
       const RootInfo& root = schema_.roots[r];
@@ -307,6 +312,7 @@ class Encoder {
     if (n >= kBulk) {
       out_.resize(pos_);  // drops the slack: trivially, nothing is freed
       const auto* bytes = static_cast<const std::uint8_t*>(data);
+      if (n >= kFuseMin && fused_valid_) return put_fused(bytes, n);
       out_.insert(out_.end(), bytes, bytes + n);
       pos_ += n;
       return;
@@ -336,7 +342,44 @@ class Encoder {
   }
   void put_u16(std::uint16_t v) { std::memcpy(grow(2), &v, 2); }
   void put_u32(std::uint32_t v) { std::memcpy(grow(4), &v, 4); }
-  void patch_u32(std::size_t at, std::uint32_t v) { std::memcpy(out_.data() + at, &v, 4); }
+  void patch_u32(std::size_t at, std::uint32_t v) {
+    patched(at);
+    std::memcpy(out_.data() + at, &v, 4);
+  }
+
+  // ---- the payload's CRC-32C, fused with large copies ----------------------------------
+  // A copy of kFuseMin bytes or more is checksummed chunk by chunk, each chunk right after it
+  // was copied (still in cache), together with the bytes written before it; the record's CRC
+  // then combines the payload's (encode_record_as) instead of reading the payload once more.
+  static constexpr std::size_t kFuseMin = std::size_t{1} << 20;
+  static constexpr std::size_t kFuseChunk = 64 * 1024;
+  void put_fused(const std::uint8_t* bytes, std::size_t n) {
+    if (out_.capacity() < pos_ + n + kSlack) out_.reserve(pos_ + n + kSlack);  // one growth
+    fused_crc_ = crc32c_extend(fused_crc_, out_.data() + fused_to_, pos_ - fused_to_);
+    for (std::size_t done = 0; done < n;) {
+      const std::size_t length = n - done < kFuseChunk ? n - done : kFuseChunk;
+      out_.insert(out_.end(), bytes + done, bytes + done + length);
+      fused_crc_ = crc32c_extend(fused_crc_, out_.data() + pos_ + done, length);
+      done += length;
+    }
+    pos_ += n;
+    fused_to_ = pos_;
+    fused_ = true;
+  }
+  // A byte at `at` written again: a CRC already over it no longer holds.
+  void patched(std::size_t at) {
+    if (at < fused_to_) fused_valid_ = false;
+  }
+
+ public:
+  // After run(): the payload's CRC-32C when a large copy computed most of it on the way.
+  bool fused_payload_crc(std::uint32_t& crc) const {
+    if (!fused_ || !fused_valid_ || !ok()) return false;
+    crc = crc32c_extend(fused_crc_, out_.data() + fused_to_, pos_ - fused_to_);
+    return true;
+  }
+
+ private:
 
   // ---- values --------------------------------------------------------------------------
   void encode(std::uint32_t type_index, const std::uint8_t* p) {
@@ -792,7 +835,9 @@ class Encoder {
             "checkpointed object",
             types_[reference.type].name, reinterpret_cast<const void*>(reference.address));
       }
-      out_[s_.heap[region.object - schema_.root_count].owner_byte] = 1;
+      const std::size_t owner_byte = s_.heap[region.object - schema_.root_count].owner_byte;
+      patched(owner_byte);
+      out_[owner_byte] = 1;
     }
   }
 
@@ -1093,6 +1138,10 @@ class Encoder {
   bool exact_ = false;  // heap objects indexed too (the second pass)
   bool overlap_suspected_ = false;
   bool refold_ = false;                     // an enclosure was learned: the pass runs again
+  std::uint32_t fused_crc_ = 0;  // CRC-32C of out_ from start_ to fused_to_ (put_fused)
+  std::size_t fused_to_ = 0;
+  bool fused_ = false;        // a large copy was checksummed as it was made
+  bool fused_valid_ = true;   // and nothing before fused_to_ was written again since
   std::uint32_t encoding_heap_ = kNoRegion;  // region of the heap object being encoded
   std::uint32_t container_ordinal_ = 0;
   int depth_ = 0;
@@ -1120,13 +1169,18 @@ std::size_t encode_scratch_bytes() {
          capacity_bytes(s.enclosures);
 }
 
-Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out) {
+Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out,
+                      PayloadCrc* payload_crc) {
   const SchemaCacheEntry& cached = schema_cache_entry(schema);
   EncodeScratch& scratch = thread_encode_scratch();
   const std::size_t start = out.size();
   Encoder encoder(schema, out, scratch, cached.facts());
   encoder.start_ = start;
-  return encoder.run();
+  const Status status = encoder.run();
+  if (payload_crc) {
+    payload_crc->known = status.ok() && encoder.fused_payload_crc(payload_crc->value);
+  }
+  return status;
 }
 
 Status encode_payload(const Schema& schema, std::vector<std::uint8_t>& out) {

@@ -78,8 +78,15 @@ Status parse_schema(const std::uint8_t* data, std::size_t size, ParsedSchema& ou
 // Reuses the capacity of `out` and of internal per-thread scratch: a steady state allocates
 // nothing after the first call.
 Status encode_payload(const Schema& schema, std::vector<std::uint8_t>& out);
-// Same, appending at out.size() (so a caller can reserve room for a header first).
-Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out);
+// The payload's CRC-32C, when saving computed it while copying (large flat values).
+struct PayloadCrc {
+  bool known = false;
+  std::uint32_t value = 0;
+};
+// Same, appending at out.size() (so a caller can reserve room for a header first); sets
+// `payload_crc` if given.
+Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out,
+                      PayloadCrc* payload_crc = nullptr);
 
 // Restores a payload written with `writer` into the live roots of `reader`: resolves (plans are
 // cached per writer-hash/reader pair), decodes and checks everything, and only then writes.

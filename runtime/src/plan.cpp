@@ -285,6 +285,7 @@ std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_
     }
     Planner(*plan).run();
   }
+  derive_copy_segments(*plan);
   std::lock_guard<std::mutex> lock(plan_cache_mutex());
   plan_cache().push_front(CachedPlan{writer_hash, &reader, reader.types, reader.roots, plan});
   if (plan_cache().size() > kMaxPlans) plan_cache().pop_back();

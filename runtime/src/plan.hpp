@@ -47,6 +47,8 @@ struct FieldPlan {
   double range_min = 0, range_max = 0;
   std::uint32_t counter = 0;  // per-field index for capping value-level entries
   const char* name = "";      // writer field name (concrete paths)
+  // reader_time() of this field, looked up once (derive_copy_segments; never encoded).
+  const FieldTime* time = nullptr;
 };
 
 struct EnumMapping {
@@ -72,6 +74,18 @@ struct CopyBits {
   std::uint16_t width;
   std::uint8_t size;
   bool is_signed;
+};
+
+struct PlanNode;
+
+// Fields [first_field, end_field) of a struct that is not copy-only as a whole: when `copy` is
+// set, consecutive copy-only fields restored as one copy program (its offsets are the
+// struct's); else the one field the decoder handles in place (a pointer, a container, a
+// converted, ranged or validated value, a bit-field, a time of a clock, a removed field).
+struct CopySegment {
+  std::uint32_t first_field;
+  std::uint32_t end_field;
+  const PlanNode* copy;
 };
 
 struct PlanNode {
@@ -116,6 +130,10 @@ struct PlanNode {
   std::vector<CopyRun> copy_runs;
   std::vector<std::uint32_t> copy_bools;  // wire offsets of bools, each must be 0 or 1
   std::vector<CopyBits> copy_bits;
+  // Struct, not copy-only, with a run of copy-only fields: its fields as segments
+  // (derive_copy_segments), so that a state holding a few pointers still restores its
+  // plain bytes by bulk copies. Derived from the other nodes, never encoded in a plan image.
+  std::vector<CopySegment> copy_segments;
 };
 
 struct RootPlan {
@@ -154,6 +172,8 @@ struct Plan final : ReportSource {
   // bools and copies, without the general decoder.
   bool copy_only_payload = false;
   std::uint64_t copy_only_payload_size = 0;
+  // The copy programs of PlanNode::copy_segments (stable addresses; not plan nodes).
+  std::deque<PlanNode> segment_programs;
   // The reader's clocks (by ClockInfo::index) and, for each, the writer's clock of that name
   // (kNoType when the checkpoint has no reading of it): map_clocks().
   std::vector<const ClockInfo*> reader_clocks;
@@ -193,6 +213,11 @@ const FieldTime* reader_time(const Schema& reader, const PlanNode& n, const Fiel
 // Sets every node's holds_validated from the nodes' `validated` and their parts: once a plan's
 // nodes are final (planned, or decoded from an image).
 void mark_validated_parts(std::deque<PlanNode>& nodes);
+
+// Sets every struct node's copy_segments (and fills Plan::segment_programs) from the nodes'
+// copy programs, and every FieldPlan::time: once a plan's nodes are final (planned, or decoded
+// from an image).
+void derive_copy_segments(Plan& plan);
 
 }  // namespace symcr::detail
 

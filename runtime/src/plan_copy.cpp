@@ -149,4 +149,72 @@ bool Planner::build_copy(PlanNode& n) {
   }
 }
 
+bool Planner::segment_field(const FieldPlan& field) {
+  const PlanNode* child = field.node;
+  return field.reader_field != kNoType && !field.has_range && !field.bit_width && child &&
+         child->copy_only && !child->validated && !child->migrates &&
+         !field.time;
+}
+
+// Splits a struct that is not copy-only into segments; none when no field could be copied
+// (nothing gained) or a program outgrows the copy limits (the fields then go one by one, as
+// they would without segments).
+void Planner::derive_segments(PlanNode& n) {
+  n.copy_segments.clear();
+  if (n.action != Action::Struct || n.copy_only || n.reader == kNoType) return;
+  std::vector<CopySegment> segments;
+  PlanNode* program = nullptr;  // the open segment's program
+  std::uint64_t wire = 0;       // its wire bytes so far
+  bool any_copy = false;
+  for (std::uint32_t f = 0; f < n.fields.size(); ++f) {
+    const FieldPlan& field = n.fields[f];
+    if (!segment_field(field)) {
+      program = nullptr;
+      segments.push_back(CopySegment{f, f + 1, nullptr});
+      continue;
+    }
+    if (program) {
+      // A failed append leaves the program part-written: no segments then.
+      if (!append_copy(*program, *field.node, wire, field.reader_offset)) return;
+      wire += field.node->copy_wire;
+      program->copy_wire = static_cast<std::uint32_t>(wire);
+      segments.back().end_field = f + 1;
+      continue;
+    }
+    plan_.segment_programs.emplace_back();
+    program = &plan_.segment_programs.back();
+    program->writer = n.writer;
+    program->reader = n.reader;
+    program->copy_only = true;
+    program->copy_state = 1;
+    if (!append_copy(*program, *field.node, 0, field.reader_offset)) return;
+    wire = field.node->copy_wire;
+    program->copy_wire = static_cast<std::uint32_t>(wire);
+    segments.push_back(CopySegment{f, f + 1, program});
+    any_copy = true;
+  }
+  if (!any_copy) return;
+  // A program of no bytes (fields of empty structs) has nothing to check or copy.
+  segments.erase(std::remove_if(segments.begin(), segments.end(),
+                                [](const CopySegment& segment) {
+                                  return segment.copy && segment.copy->copy_wire == 0;
+                                }),
+                 segments.end());
+  n.copy_segments = std::move(segments);
+}
+
+void Planner::derive_copy_segments() {
+  plan_.segment_programs.clear();
+  for (PlanNode& n : plan_.nodes) {
+    for (FieldPlan& field : n.fields) field.time = reader_time(reader_, n, field);
+    if (plan_.status.ok()) derive_segments(n);
+  }
+}
+
 }  // namespace symcr::detail::planning
+
+namespace symcr::detail {
+
+void derive_copy_segments(Plan& plan) { planning::Planner(plan).derive_copy_segments(); }
+
+}  // namespace symcr::detail

@@ -58,6 +58,8 @@ class Planner {
   // The schema-level report of a finished plan (Plan::entries()): touches only the plan's
   // report fields.
   __attribute__((cold)) void build_report();
+  // derive_copy_segments (plan.hpp) on this planner's plan.
+  __attribute__((cold)) void derive_copy_segments();
 
  private:
   // Per writer type: the writer knew a class equal to it or derived from it that it could save
@@ -172,6 +174,11 @@ class Planner {
   __attribute__((cold)) bool child_copy_only(const PlanNode* child);
 
   __attribute__((noinline, cold)) bool build_copy(PlanNode& n);
+
+  // A field a copy segment can hold: kept, no range or bit-field, not a time of a clock
+  // (FieldPlan::time set), and copy-only without a validator or migration of its own.
+  __attribute__((cold)) static bool segment_field(const FieldPlan& field);
+  __attribute__((cold)) void derive_segments(PlanNode& n);
 
   __attribute__((cold)) void add(std::string path, Decision decision, std::string detail,
                                  bool lossy);

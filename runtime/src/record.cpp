@@ -94,7 +94,8 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
     }
     out.insert(out.end(), blob.data, blob.data + blob.size);
   }
-  Status status = append_payload(schema, out);
+  PayloadCrc payload_crc;
+  Status status = append_payload(schema, out, &payload_crc);
   if (!status.ok()) return status;
   const std::size_t payload_size = out.size() - header_size - schema_size;
   if (payload_size > UINT32_MAX) {
@@ -121,7 +122,13 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   if (authenticated && signing->binding != nullptr) {  // the CRC then covers the MAC too
     sign_record(*signing->keys, out.data(), out.size(), *signing->binding);
   }
-  le::store32(out.data() + kRecordChecksumOffset, record_checksum(out.data(), out.size()));
+  // A large payload's CRC was computed as it was copied: only the header and schema are read.
+  const std::uint32_t checksum =
+      payload_crc.known
+          ? crc32c_combine(record_checksum(out.data(), header_size + schema_size),
+                           payload_crc.value, payload_size)
+          : record_checksum(out.data(), out.size());
+  le::store32(out.data() + kRecordChecksumOffset, checksum);
   return Status();
 }
 
@@ -204,7 +211,8 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
   out.payload = data + h.header_size + h.schema_size;
   out.payload_size = h.payload_size;
   out.record_size = static_cast<std::size_t>(record_size);
-  if (inline_schema && !is_blob(known, out.schema, h.schema_size, h.schema_hash) &&
+  out.schema_is_known = inline_schema && is_blob(known, out.schema, h.schema_size, h.schema_hash);
+  if (inline_schema && !out.schema_is_known &&
       fnv1a64(out.schema, h.schema_size) != h.schema_hash) {
     return Status(Error::Corrupt, "inline schema does not match its hash %016llx",
                   static_cast<unsigned long long>(h.schema_hash));
@@ -277,11 +285,11 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size, con
   }
   // Written by this very build (the usual case): the inline schema is byte for byte the
   // reader's own, so the reader serves as the writer schema and nothing needs parsing.
-  if (is_blob(&own, record.schema, record.header.schema_size, record.header.schema_hash)) {
+  // parse_record compared the bytes with the one candidate it was given.
+  if (!plan_blob.data && record.schema_is_known) {
     return restore_record(record, reader, own.hash, reader, options);
   }
-  if (plan_blob.data &&
-      is_blob(&plan_blob, record.schema, record.header.schema_size, record.header.schema_hash)) {
+  if (plan_blob.data && record.schema_is_known) {
     return restore_record(record, *plan->writer, record.header.schema_hash, reader, options,
                           plan->writer_owner);
   }

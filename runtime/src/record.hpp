@@ -61,6 +61,8 @@ struct RecordView {
   const std::uint8_t* payload = nullptr;
   std::size_t payload_size = 0;
   std::size_t record_size = 0;  // header_size + schema_size + payload_size
+  // The inline schema is byte for byte the blob parse_record was told it might be (`known`).
+  bool schema_is_known = false;
 };
 
 struct SchemaBlob;

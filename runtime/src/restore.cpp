@@ -52,8 +52,6 @@ void Restorer::begin_pass(Mode mode) {
 
 Status Restorer::check() {
   begin_pass(Mode::Check);
-  rejection_counts_.assign(plan_.counter_paths.size() + 1, 0);
-  handed_counts_.assign(plan_.counter_paths.size() + 1, 0);
   heap_counter_ = static_cast<std::uint32_t>(plan_.counter_paths.size());
   ClockReadings readings;
   if (!decode_objects() || !decode_references() || !in_.clock_readings(readings) ||
@@ -71,17 +69,65 @@ Status Restorer::check() {
 
 // Capacity of the decoding tables (thread_scratch_bytes).
 std::size_t Restorer::scratch_bytes() const {
-  std::size_t bytes =
-      bytes_of(frames_) + bytes_of(rejection_counts_) + bytes_of(handed_counts_) +
-      bytes_of(verdicts_) + bytes_of(part_verdicts_) + bytes_of(slots_) + bytes_of(containers_) + bytes_of(heap_) +
-      bytes_of(refs_) + bytes_of(steps_) +
-      bytes_of(mapped_) + bytes_of(claimed_) + materialisable_.capacity() / 8 +
-      bytes_of(element_needed_) + bytes_of(heap_live_) + bytes_of(holders_) +
-      bytes_of(applied_slots_) + bytes_of(element_slots_) + bytes_of(element_addresses_) +
-      bytes_of(string_scratch_) + explained_.bucket_count() * sizeof(void*) +
-      explained_.size() * (sizeof(std::pair<std::uint32_t, std::string>) + 2 * sizeof(void*));
-  for (const std::vector<void*>& addresses : element_addresses_) bytes += bytes_of(addresses);
-  return bytes;
+  return lease_.tables().bytes() + explained_.bucket_count() * sizeof(void*) +
+         explained_.size() * (sizeof(std::pair<std::uint32_t, std::string>) + 2 * sizeof(void*));
+}
+
+std::size_t RestoreTables::bytes() const {
+  std::size_t total =
+      bytes_of(frames) + bytes_of(rejection_counts) + bytes_of(handed_counts) +
+      bytes_of(verdicts) + bytes_of(part_verdicts) + bytes_of(slots) + bytes_of(containers) +
+      bytes_of(heap) + bytes_of(refs) + bytes_of(steps) + bytes_of(mapped) + bytes_of(claimed) +
+      materialisable.capacity() / 8 + bytes_of(element_needed) + bytes_of(heap_live) +
+      bytes_of(holders) + bytes_of(applied_slots) + bytes_of(element_slots) +
+      bytes_of(element_addresses) + bytes_of(string_scratch) + bytes_of(clock_deltas);
+  for (const std::vector<void*>& addresses : element_addresses) total += bytes_of(addresses);
+  for (const RefRecord& ref : refs) total += ref.why.capacity();
+  return total;
+}
+
+void RestoreTables::clear() {
+  frames.clear();
+  rejection_counts.clear();
+  handed_counts.clear();
+  verdicts.clear();
+  part_verdicts.clear();
+  slots.clear();
+  containers.clear();
+  heap.clear();
+  refs.clear();
+  steps.clear();
+  mapped.clear();
+  claimed.clear();
+  materialisable.clear();
+  element_needed.clear();
+  heap_live.clear();
+  holders.clear();
+  applied_slots.clear();
+  element_slots.clear();
+  for (std::vector<void*>& addresses : element_addresses) addresses.clear();  // kept for reuse
+  string_scratch.clear();
+  clock_deltas.clear();
+}
+
+namespace {
+thread_local RestoreTables kept_tables;
+thread_local bool kept_tables_leased = false;
+}  // namespace
+
+RestoreTablesLease::RestoreTablesLease() : kept_(!kept_tables_leased) {
+  tables_ = kept_ ? &kept_tables : new RestoreTables();
+  kept_tables_leased = true;
+  tables_->clear();
+}
+
+RestoreTablesLease::~RestoreTablesLease() {
+  if (!kept_) {
+    delete tables_;
+    return;
+  }
+  if (tables_->bytes() > kKeptRestoreTableBytes) *tables_ = RestoreTables();
+  kept_tables_leased = false;
 }
 
 void Restorer::apply() {

@@ -355,7 +355,7 @@ void Restorer::decide_slots() {
     auto reject = [&](const std::string& why) {
       slot.outcome = SlotOutcome::Rejected;
       ++value_rejections_;
-      if (++rejection_counts_[slot.counter] > kMaxConcretePerField) return;
+      if (++entry_count(rejection_counts_, slot.counter) > kMaxConcretePerField) return;
       pending.push_back({static_cast<std::uint32_t>(ordinal), Decision::Rejected,
                          "pointer not restored: " + why});
     };
@@ -420,9 +420,12 @@ void Restorer::create_heap_objects() {
   element_slots_.assign(containers_.size(), kNoType);
   for (std::uint32_t ordinal : element_needed_) {
     if (element_slots_[ordinal] != kNoType) continue;
-    element_slots_[ordinal] = static_cast<std::uint32_t>(element_addresses_.size());
-    element_addresses_.emplace_back();
-    element_addresses_.back().reserve(containers_[ordinal].count);
+    // The lists of an earlier restore on this thread are reused with their capacity.
+    element_slots_[ordinal] = static_cast<std::uint32_t>(element_lists_);
+    if (element_lists_ == element_addresses_.size()) element_addresses_.emplace_back();
+    std::vector<void*>& addresses = element_addresses_[element_lists_++];
+    addresses.clear();
+    addresses.reserve(containers_[ordinal].count);
   }
 }
 

@@ -45,7 +45,9 @@ void Restorer::report_value(const PlanNode* hook, std::uint32_t counter, const c
                             va_list args) {
   if (mode_ != Mode::Check) return;
   ++(hook ? values_handed_ : value_rejections_);
-  if (++(hook ? handed_counts_ : rejection_counts_)[counter] > kMaxConcretePerField) return;
+  if (++entry_count(hook ? handed_counts_ : rejection_counts_, counter) > kMaxConcretePerField) {
+    return;
+  }
   char buffer[240];
   std::vsnprintf(buffer, sizeof buffer, format, args);
   if (hook) {
@@ -257,16 +259,13 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       const std::size_t frame = frames_.size();
       frames_.push_back({PathFrame::Kind::Name, "", 0});
       const FieldTime* outer_time = time_;
-      for (const FieldPlan& child : n->fields) {
-        frames_[frame].name = child.name;
-        counter_ = child.counter;
-        std::uint8_t* at =
-            dst && child.reader_field != kNoType ? dst + child.reader_offset : nullptr;
-        time_ = reader_time(reader_, *n, child);
-        // A time of a clock the checkpoint has no reading of keeps this build's value (the
-        // plan's report rejects the field).
-        if (time_ && plan_.writer_clock_of[time_->clock->index] == kNoType) at = nullptr;
-        if (!value(child.node, at, &child)) return false;
+      if (n->copy_segments.empty()) {
+        if (!fields(n, 0, static_cast<std::uint32_t>(n->fields.size()), dst, frame)) return false;
+      }
+      for (const CopySegment& segment : n->copy_segments) {
+        // A segment whose bytes fail the copy checks goes field by field, which names the fault.
+        if (segment.copy && copy(segment.copy, dst)) continue;
+        if (!fields(n, segment.first_field, segment.end_field, dst, frame)) return false;
       }
       time_ = outer_time;
       frames_.pop_back();
@@ -370,15 +369,35 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
   return corrupt("unknown kind").ok();
 }
 
+// Fields [first, end) of struct `n` one by one, each under its name in path frame `frame`.
+bool Restorer::fields(const PlanNode* n, std::uint32_t first, std::uint32_t end,
+                      std::uint8_t* dst, std::size_t frame) {
+  for (std::uint32_t f = first; f < end; ++f) {
+    const FieldPlan& child = n->fields[f];
+    frames_[frame].name = child.name;
+    counter_ = child.counter;
+    std::uint8_t* at = dst && child.reader_field != kNoType ? dst + child.reader_offset : nullptr;
+    time_ = child.time;
+    // A time of a clock the checkpoint has no reading of keeps this build's value (the plan's
+    // report rejects the field).
+    if (time_ && plan_.writer_clock_of[time_->clock->index] == kNoType) at = nullptr;
+    if (!value(child.node, at, &child)) return false;
+  }
+  return true;
+}
+
 // A copy-only value in one step: check it (pass 1), copy it (writing passes). False,
 // consuming nothing, when the bytes are short or a bool or bit-field value is invalid: the
 // general path then finds and reports the same error at its place.
 bool Restorer::copy(const PlanNode* n, std::uint8_t* dst) {
   if (in_.remaining() < n->copy_wire) return false;
   const std::uint8_t* base = in_.position();
-  // Checked in every pass: a value the first pass sent to the general path (a rejected
-  // bit-field value) must take it in the second too.
-  if (!copy_only_valid(*n, base)) return false;
+  // A value the first pass sent to the general path (a rejected bit-field value) must take it
+  // in the second too: checked again unless every copy of the first pass was valid.
+  if ((mode_ != Mode::Apply || copy_refused_) && !copy_only_valid(*n, base)) {
+    copy_refused_ = true;
+    return false;
+  }
   if (dst && writing()) copy_only_write(*n, base, dst);
   in_.seek(base + n->copy_wire);
   return true;

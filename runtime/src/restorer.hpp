@@ -22,10 +22,32 @@
 namespace symcr::detail::restoring {
 
 // ---- copy-only values (PlanNode::copy_only) ------------------------------------------------
+// Little-endian, as the copy runs assume; the planner allows sizes 1, 2, 4 and 8.
 inline std::uint64_t bit_field_raw(const CopyBits& bits, const std::uint8_t* wire) {
-  std::uint64_t raw = 0;
-  std::memcpy(&raw, wire + bits.wire, bits.size);  // little-endian, as the copy runs assume
-  return raw;
+  const std::uint8_t* at = wire + bits.wire;
+  switch (bits.size) {
+    case 1: return at[0];
+    case 2: {
+      std::uint16_t raw;
+      std::memcpy(&raw, at, sizeof raw);
+      return raw;
+    }
+    case 4: {
+      std::uint32_t raw;
+      std::memcpy(&raw, at, sizeof raw);
+      return raw;
+    }
+    case 8: {
+      std::uint64_t raw;
+      std::memcpy(&raw, at, sizeof raw);
+      return raw;
+    }
+    default: {
+      std::uint64_t raw = 0;
+      std::memcpy(&raw, at, bits.size);
+      return raw;
+    }
+  }
 }
 
 inline Number bit_field_value(const CopyBits& bits, const std::uint8_t* wire) {
@@ -42,6 +64,16 @@ inline Number bit_field_value(const CopyBits& bits, const std::uint8_t* wire) {
   return value;
 }
 
+// fits_bits(bit_field_value(bits, wire), ...) for the wire integer `raw`, inline.
+inline bool copy_bits_fit(const CopyBits& bits, std::uint64_t raw) {
+  if (bits.width >= 64) return true;
+  if (!bits.is_signed) return (raw >> bits.width) == 0;
+  const unsigned unused = 64 - 8 * unsigned{bits.size};
+  const std::int64_t value = static_cast<std::int64_t>(raw << unused) >> unused;
+  const std::int64_t high = value >> (bits.width - 1);  // all sign: 0 or -1 when it fits
+  return high == 0 || high == -1;
+}
+
 // The first pass's checks of a copy-only value at `wire`: bools are 0 or 1, bit-field values
 // fit their widths. False sends the value to the general path, which names the fault.
 inline bool copy_only_valid(const PlanNode& n, const std::uint8_t* wire) {
@@ -49,15 +81,36 @@ inline bool copy_only_valid(const PlanNode& n, const std::uint8_t* wire) {
     if (wire[offset] > 1) return false;
   }
   for (const CopyBits& bits : n.copy_bits) {
-    if (!fits_bits(bit_field_value(bits, wire), bits.width, bits.is_signed)) return false;
+    if (!copy_bits_fit(bits, bit_field_raw(bits, wire))) return false;
   }
   return true;
+}
+
+// Writes a bit-field's value (its checked wire integer) into its storage unit, byte by byte:
+// the unit's bytes past the field are not touched.
+inline void copy_bits_to(std::uint8_t* unit, const CopyBits& bits, std::uint64_t raw) {
+  const unsigned end = unsigned{bits.bit_offset} + bits.width;
+  if (end > 64) {  // the field's low bits are all that is stored: its sign does not matter
+    Number value;
+    value.tag = Number::Tag::Unsigned;
+    value.u = raw;
+    store_bits(unit, bits.bit_offset, bits.width, value);
+    return;
+  }
+  const unsigned bytes = (end + 7) / 8;
+  std::uint64_t word = 0;
+  for (unsigned i = 0; i < bytes; ++i) word |= std::uint64_t{unit[i]} << (8 * i);
+  const std::uint64_t mask =
+      (bits.width >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << bits.width) - 1)
+      << bits.bit_offset;
+  word = (word & ~mask) | ((raw << bits.bit_offset) & mask);
+  for (unsigned i = 0; i < bytes; ++i) unit[i] = static_cast<std::uint8_t>(word >> (8 * i));
 }
 
 inline void copy_only_write(const PlanNode& n, const std::uint8_t* wire, std::uint8_t* dst) {
   for (const CopyRun& run : n.copy_runs) std::memcpy(dst + run.dst, wire + run.wire, run.length);
   for (const CopyBits& bits : n.copy_bits) {
-    store_bits(dst + bits.dst, bits.bit_offset, bits.width, bit_field_value(bits, wire));
+    copy_bits_to(dst + bits.dst, bits, bit_field_raw(bits, wire));
   }
 }
 
@@ -115,6 +168,55 @@ struct AppliedSlot {
   std::uint8_t* address;
 };
 
+// The decoding tables of one restore. A thread keeps one set between restores (a restore
+// of the same state then allocates nothing), unless a restore grew it past
+// kKeptRestoreTableBytes (a large graph's tables are freed when it is done).
+struct RestoreTables {
+  std::vector<PathFrame> frames;
+  std::vector<std::uint32_t> rejection_counts;
+  std::vector<std::uint32_t> handed_counts;
+  std::vector<std::uint8_t> verdicts;
+  std::vector<std::uint8_t> part_verdicts;
+  std::vector<SlotRecord> slots;
+  std::vector<ContainerRecord> containers;
+  std::vector<HeapRecord> heap;
+  std::vector<RefRecord> refs;
+  std::vector<std::uint32_t> steps;
+  std::vector<MappedStep> mapped;
+  std::vector<void*> claimed;
+  std::vector<bool> materialisable;
+  std::vector<std::uint32_t> element_needed;
+  std::vector<void*> heap_live;
+  std::vector<void*> holders;
+  std::vector<AppliedSlot> applied_slots;
+  std::vector<std::uint32_t> element_slots;
+  std::vector<std::vector<void*>> element_addresses;  // cleared lists stay, for their capacity
+  std::vector<std::uint8_t> string_scratch;
+  std::vector<std::int64_t> clock_deltas;
+
+  // Capacity in bytes (thread_scratch_bytes).
+  std::size_t bytes() const;
+  void clear();
+};
+
+constexpr std::size_t kKeptRestoreTableBytes = 64 * 1024;
+
+// The tables a Restorer decodes with: the thread's kept set, or a set of its own when a
+// restore runs inside another one on this thread (a hook or validator that restores).
+class RestoreTablesLease {
+ public:
+  RestoreTablesLease();
+  ~RestoreTablesLease();
+  RestoreTablesLease(const RestoreTablesLease&) = delete;
+  RestoreTablesLease& operator=(const RestoreTablesLease&) = delete;
+  RestoreTables& tables() { return *tables_; }
+  const RestoreTables& tables() const { return *tables_; }
+
+ private:
+  RestoreTables* tables_;
+  bool kept_;  // the thread's set, handed back at the end
+};
+
 class Restorer {
  public:
   // `dry_run`: a plan of a build known only by its schema (no code): types it can create are
@@ -128,7 +230,28 @@ class Restorer {
         payload_(payload),
         size_(size),
         report_(report),
-        dry_run_(dry_run) {}
+        dry_run_(dry_run),
+        frames_(lease_.tables().frames),
+        rejection_counts_(lease_.tables().rejection_counts),
+        handed_counts_(lease_.tables().handed_counts),
+        verdicts_(lease_.tables().verdicts),
+        part_verdicts_(lease_.tables().part_verdicts),
+        slots_(lease_.tables().slots),
+        containers_(lease_.tables().containers),
+        heap_(lease_.tables().heap),
+        refs_(lease_.tables().refs),
+        steps_(lease_.tables().steps),
+        mapped_(lease_.tables().mapped),
+        claimed_(lease_.tables().claimed),
+        materialisable_(lease_.tables().materialisable),
+        element_needed_(lease_.tables().element_needed),
+        heap_live_(lease_.tables().heap_live),
+        holders_(lease_.tables().holders),
+        applied_slots_(lease_.tables().applied_slots),
+        element_slots_(lease_.tables().element_slots),
+        element_addresses_(lease_.tables().element_addresses),
+        string_scratch_(lease_.tables().string_scratch),
+        clock_deltas_(lease_.tables().clock_deltas) {}
 
   Status check();
 
@@ -142,6 +265,16 @@ class Restorer {
  private:
   // ---- errors and report ---------------------------------------------------------------
   __attribute__((format(printf, 2, 3))) const Status& corrupt(const char* format, ...);
+
+  // `counts` (rejection_counts_ or handed_counts_) at `counter`: both are sized on the first
+  // value-level entry, so that a restore without one never fills them.
+  std::uint32_t& entry_count(std::vector<std::uint32_t>& counts, std::uint32_t counter) {
+    if (counts.empty()) {
+      rejection_counts_.assign(plan_.counter_paths.size() + 1, 0);
+      handed_counts_.assign(plan_.counter_paths.size() + 1, 0);
+    }
+    return counts[counter];
+  }
 
   // A value-level rejection: the reader keeps its value. Concrete paths are capped per field.
   // Inside an object whose migration hook runs, the value is the hook's to handle (it reads
@@ -179,6 +312,10 @@ class Restorer {
   bool validated_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);
 
   bool plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);
+
+  // Fields [first, end) of struct `n` at `dst`, one by one (path frame `frame` names each).
+  bool fields(const PlanNode* n, std::uint32_t first, std::uint32_t end, std::uint8_t* dst,
+              std::size_t frame);
 
   // A copy-only value in one step: check it (pass 1), copy it (writing passes). False,
   // consuming nothing, when the bytes are short or a bool or bit-field value is invalid: the
@@ -283,51 +420,55 @@ class Restorer {
   std::size_t size_;
   Report& report_;
   const bool dry_run_;
+  RestoreTablesLease lease_;
 
   Mode mode_ = Mode::Check;
   int depth_ = 0;
-  std::vector<PathFrame> frames_;
+  std::vector<PathFrame>& frames_;
   std::uint32_t counter_ = 0;
   std::uint32_t heap_counter_ = 0;
   std::uint32_t current_object_ = 0;
-  std::vector<std::uint32_t> rejection_counts_;
+  std::vector<std::uint32_t>& rejection_counts_;  // per counter, sized by entry_count
+  // A copy of a copy-only value failed its checks (copy): the second pass checks again.
+  bool copy_refused_ = false;
   std::size_t value_rejections_ = 0;
   // The innermost object being decoded whose migration hook runs (not across pointers: a
   // pointee is an object of its own), or null.
   const PlanNode* migrating_ = nullptr;
-  std::vector<std::uint32_t> handed_counts_;  // per field, as rejection_counts_
+  std::vector<std::uint32_t>& handed_counts_;  // per field, as rejection_counts_
   std::size_t values_handed_ = 0;
   std::size_t outside_count_ = 0;
 
   std::uint32_t container_ordinal_ = 0;
   std::uint32_t slot_ordinal_ = 0;
-  std::vector<std::uint8_t> verdicts_;
+  std::vector<std::uint8_t>& verdicts_;
   std::size_t verdict_cursor_ = 0;
-  std::vector<std::uint8_t> part_verdicts_;  // begin_part / end_part
+  std::vector<std::uint8_t>& part_verdicts_;  // begin_part / end_part
   std::size_t part_cursor_ = 0;
   std::uint32_t refusals_ = 0;  // pass 1: values refused by validators, not yet taken in
 
-  std::vector<SlotRecord> slots_;
+  std::vector<SlotRecord>& slots_;
   std::unordered_map<std::uint32_t, std::string> explained_;  // slot ordinal -> path
-  std::vector<ContainerRecord> containers_;
-  std::vector<HeapRecord> heap_;
-  std::vector<RefRecord> refs_;
-  std::vector<std::uint32_t> steps_;
-  std::vector<MappedStep> mapped_;
-  std::vector<void*> claimed_;
-  std::vector<bool> materialisable_;
-  std::vector<std::uint32_t> element_needed_;
+  std::vector<ContainerRecord>& containers_;
+  std::vector<HeapRecord>& heap_;
+  std::vector<RefRecord>& refs_;
+  std::vector<std::uint32_t>& steps_;
+  std::vector<MappedStep>& mapped_;
+  std::vector<void*>& claimed_;
+  std::vector<bool>& materialisable_;
+  std::vector<std::uint32_t>& element_needed_;
 
-  std::vector<void*> heap_live_;
-  std::vector<void*> holders_;
-  std::vector<AppliedSlot> applied_slots_;
-  std::vector<std::uint32_t> element_slots_;
-  std::vector<std::vector<void*>> element_addresses_;
-  std::vector<std::uint8_t> string_scratch_;
+  std::vector<void*>& heap_live_;
+  std::vector<void*>& holders_;
+  std::vector<AppliedSlot>& applied_slots_;
+  std::vector<std::uint32_t>& element_slots_;
+  std::vector<std::vector<void*>>& element_addresses_;  // the first element_lists_ in use
+  std::size_t element_lists_ = 0;
+  std::vector<std::uint8_t>& string_scratch_;
 
   const FieldTime* time_ = nullptr;  // the reader field being decoded is a time of this clock
   bool rebasing_ = false;
-  std::vector<std::int64_t> clock_deltas_;  // per reader clock
+  std::vector<std::int64_t>& clock_deltas_;  // per reader clock
 };
 
 }  // namespace symcr::detail::restoring

@@ -12,6 +12,7 @@
 namespace {
 
 using symcr::detail::crc32c;
+using symcr::detail::crc32c_combine;
 using symcr::detail::crc32c_extend;
 using symcr::detail::crc32c_extend_hardware;
 using symcr::detail::crc32c_extend_portable;
@@ -56,6 +57,20 @@ TEST(Crc32c, ExtendingEqualsOneCall) {
   for (std::size_t split = 0; split <= n; ++split) {
     EXPECT_EQ(crc32c_extend(crc32c(text, split), text + split, n - split), whole) << split;
   }
+}
+
+TEST(Crc32c, CombiningEqualsOneCall) {
+  std::mt19937 random(7);
+  std::vector<std::uint8_t> bytes(70000);
+  for (std::uint8_t& b : bytes) b = static_cast<std::uint8_t>(random());
+  const std::uint32_t whole = crc32c(bytes.data(), bytes.size());
+  for (std::size_t split : {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{4096},
+                            std::size_t{65536}, bytes.size() - 1, bytes.size()}) {
+    const std::uint32_t a = crc32c(bytes.data(), split);
+    const std::uint32_t b = crc32c(bytes.data() + split, bytes.size() - split);
+    EXPECT_EQ(crc32c_combine(a, b, bytes.size() - split), whole) << split;
+  }
+  EXPECT_EQ(crc32c_combine(0xE3069283u, 0, 0), 0xE3069283u);  // nothing appended
 }
 
 TEST(Crc32c, HardwareAndPortableAgreeAtEveryLengthAndAlignment) {

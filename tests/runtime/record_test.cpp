@@ -2,6 +2,7 @@
 // bytes that are not a whole, intact, current-version record.
 #include "record.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -68,6 +69,35 @@ TEST(Record, HeaderLayoutMatchesTheFormat) {
   EXPECT_EQ(view.header.sequence, 42u);
   EXPECT_EQ(view.schema, record.data() + 56);
   EXPECT_EQ(view.payload, record.data() + 56 + blob.size);
+}
+
+TEST(Record, ALargeValueChecksummedAsItIsCopiedGivesTheWholeRecordsCrc) {
+  // 2 MiB of doubles: saving computes their CRC while copying them, then combines it with the
+  // header's and the schema's.
+  static std::vector<double> samples(std::size_t{1} << 18);
+  static const symcr::TypeInfo types[] = {
+      schema_tables::scalar("float64", symcr::Kind::Float, 8),
+      schema_tables::array("float64[262144]", 0, samples.size(),
+                           static_cast<std::uint32_t>(samples.size() * sizeof(double)),
+                           alignof(double))};
+  static const symcr::RootInfo roots[] = {{"samples", 1, samples.data(), 0, nullptr}};
+  static const symcr::Schema schema{types, 2, roots, 1, nullptr};
+  for (std::size_t i = 0; i < samples.size(); ++i) samples[i] = static_cast<double>(i) * 0.25;
+  const std::vector<double> expected = samples;
+  std::vector<std::uint8_t> record;
+  // The first save grows the buffer; the second reuses its capacity (the steady state).
+  for (int save = 0; save < 2; ++save) {
+    ASSERT_TRUE(symcr::checkpoint_to_buffer(schema, record).ok());
+    std::vector<std::uint8_t> zeroed = record;
+    le::store32(zeroed.data() + 48, 0);
+    EXPECT_EQ(le::load32(record.data() + 48),
+              symcr::detail::crc32c(zeroed.data(), zeroed.size()))
+        << save;
+  }
+  std::fill(samples.begin(), samples.end(), -1.0);
+  const symcr::Report report = symcr::restore_from_buffer(schema, record.data(), record.size());
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(samples, expected);
 }
 
 TEST(Record, StoreRecordsReferenceTheirSchemaByHash) {
