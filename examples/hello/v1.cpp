@@ -25,7 +25,8 @@ SYMCR_CHECKPOINT Mission mission;
 int main(int argc, char** argv) {
   const char* path = argc > 1 ? argv[1] : "hello.ckpt";
   symcr::Report report = symcr::restore(path);
-  std::printf("%s\n", report.to_text().c_str());
+  // What the patch lost says so (here: the debug counter v1 removed); the rest goes on.
+  if (!report.lossless()) std::fputs(report.losses_to_text().c_str(), stderr);
   if (!report.ok()) return 1;
   std::printf("v1: resuming mission %s at waypoint %d, battery %.1f%%\n", mission.name.c_str(),
               mission.next_waypoint, mission.battery);
