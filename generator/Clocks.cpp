@@ -212,7 +212,10 @@ void resolveClocks(ASTContext &Context, unsigned TUIndex, ProgramModel &Program,
       continue;
     }
     Clock.HomeTU = static_cast<int>(TUIndex);
-    Clock.CallExpression = "::" + NameIndex::qualifiedDeclName(Usable) + "()";
+    // C has no scope operator; in C++ the global qualification keeps a wrapper's own names
+    // out of the lookup.
+    Clock.CallExpression = (Context.getLangOpts().CPlusPlus ? "::" : "") +
+                           NameIndex::qualifiedDeclName(Usable) + "()";
     QualType Result = Usable->getReturnType().getCanonicalType();
     Clock.Unsigned64 = Result->isUnsignedIntegerType() && Context.getTypeSize(Result) == 64;
   }
