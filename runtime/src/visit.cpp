@@ -37,7 +37,7 @@ class Walker {
     return error_;
   }
 
-  // Each clock's reading at the checkpoint, as a value "(clock NAME)" after the objects.
+  // Each clock's reading at the checkpoint, as a value "(clock).NAME" after the objects.
   void emit_clock_readings(const ClockReadings& readings) {
     static const TypeInfo kReading = [] {
       TypeInfo type{};
@@ -48,13 +48,15 @@ class Walker {
       return type;
     }();
     const std::vector<const ClockInfo*> clocks = schema_clocks(writer_);
+    // "(clock).millis": a visitor may keep the frames' names, which the schema owns.
+    push(PathFrame{PathFrame::Kind::Name, "(clock)", 0});
     for (std::uint32_t c = 0; c < readings.count && c < clocks.size(); ++c) {
-      const std::string name =
-          std::string("(clock ") + (clocks[c] && clocks[c]->name ? clocks[c]->name : "?") + ")";
-      push(PathFrame{PathFrame::Kind::Name, name.c_str(), 0});
+      push(PathFrame{PathFrame::Kind::Name, clocks[c] && clocks[c]->name ? clocks[c]->name : "?",
+                     0});
       leaf(kReading, readings.readings + 8 * std::size_t{c}, 8);
       pop();
     }
+    pop();
   }
 
   // ---- the sink of walk_value --------------------------------------------------------------

@@ -178,7 +178,7 @@ TEST_F(StoreReaderTest, NextStartOfAJournalWithoutADepthGoesOneLevelDeeper) {
   symcr::detail::RestoreJournal journal;
   journal.generation = 1;
   journal.unconfirmed = 6;
-  std::uint8_t copy[symcr::detail::kRestoreJournalSize];
+  std::uint8_t copy[symcr::detail::kRestoreJournalCopySize];  // the journal and its (empty) seal
   symcr::detail::encode_restore_journal(journal, copy);
   std::FILE* file = std::fopen(path_.c_str(), "r+b");
   ASSERT_NE(file, nullptr);
