@@ -3,6 +3,7 @@
 #include "symcr/symcr.h"
 
 #include <cstdio>
+#include <cstring>
 #include <new>
 #include <string>
 #include <vector>
@@ -157,6 +158,31 @@ void symcr_store_options_init(symcr_store_options* options) {
   options->slot_size = defaults.slot_size;
   options->fdatasync = defaults.durability == symcr::Durability::Fdatasync;
   options->fallback_depth = defaults.fallback_depth;
+  options->allow_unrecorded_restore = defaults.allow_unrecorded_restore;
+  options->freshness_counter = nullptr;
+  options->counter_path = defaults.counter_path;
+}
+
+namespace {
+// A C counter's result as a Status: its error code, or Io for a value that is not one.
+symcr::Status counter_status(int code, const char* operation) {
+  if (code == SYMCR_OK) return symcr::Status();
+  const bool known = std::strcmp(symcr_error_name(code), "Unknown") != 0;
+  return symcr::Status(known ? static_cast<symcr::Error>(code) : symcr::Error::Io,
+                       "the program's freshness counter: %s failed with %s", operation,
+                       known ? symcr_error_name(code) : "an unknown code");
+}
+}  // namespace
+
+symcr::Status symcr::detail::CFreshnessCounter::read(std::uint64_t& value) {
+  std::uint64_t read_value = 0;
+  const symcr::Status status = counter_status(counter_.read(counter_.context, &read_value), "read");
+  if (status.ok()) value = read_value;
+  return status;
+}
+
+symcr::Status symcr::detail::CFreshnessCounter::advance(std::uint64_t value) {
+  return counter_status(counter_.advance(counter_.context, value), "advance");
 }
 
 int symcr_store_open(const char* path, const symcr_schema* schema,
@@ -172,9 +198,24 @@ int symcr_store_open(const char* path, const symcr_schema* schema,
     store_options.durability =
         options->fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
     store_options.fallback_depth = options->fallback_depth;
+    store_options.allow_unrecorded_restore = options->allow_unrecorded_restore != 0;
+    store_options.counter_path = options->counter_path;
+  }
+  const symcr_freshness_counter* counter = options != nullptr ? options->freshness_counter : nullptr;
+  if (counter != nullptr && (counter->read == nullptr || counter->advance == nullptr)) {
+    return record_c_error(symcr::Status(
+        symcr::Error::Unsupported, "symcr_store_open: a freshness counter needs read and advance"));
   }
   auto* handle = new (std::nothrow) symcr_store;
   if (handle == nullptr) return record_c_error(symcr::Status(symcr::Error::Io, "out of memory"));
+  if (counter != nullptr) {
+    handle->counter.reset(new (std::nothrow) symcr::detail::CFreshnessCounter(*counter));
+    if (handle->counter == nullptr) {
+      delete handle;
+      return record_c_error(symcr::Status(symcr::Error::Io, "out of memory"));
+    }
+    store_options.freshness_counter = handle->counter.get();
+  }
   const symcr::Status status =
       schema != nullptr ? symcr::Store::open(path, *schema, store_options, handle->store)
                         : symcr::Store::open(path, store_options, handle->store);

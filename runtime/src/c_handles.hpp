@@ -4,6 +4,8 @@
 #ifndef SYMCR_SRC_C_HANDLES_HPP
 #define SYMCR_SRC_C_HANDLES_HPP
 
+#include <cstdint>
+#include <memory>
 #include <string>
 
 #include "symcr/symcr.h"
@@ -16,7 +18,24 @@ struct symcr_report {
   std::string losses;
 };
 
+namespace symcr {
+namespace detail {
+// The program's C freshness counter seen as a symcr::FreshnessCounter.
+class CFreshnessCounter final : public FreshnessCounter {
+ public:
+  explicit CFreshnessCounter(const symcr_freshness_counter& counter) : counter_(counter) {}
+  Status read(std::uint64_t& value) override;
+  Status advance(std::uint64_t value) override;
+
+ private:
+  symcr_freshness_counter counter_;
+};
+}  // namespace detail
+}  // namespace symcr
+
 struct symcr_store {
+  // Declared before the store, which uses it until the store is destroyed.
+  std::unique_ptr<symcr::detail::CFreshnessCounter> counter;
   symcr::Store store;
 };
 

@@ -246,6 +246,116 @@ static void crash_loop_fallback(const char* directory) {
   CHECK(symcr_report_skipped(NULL) == 0);
 }
 
+/* The program's freshness counter through the C API: advanced by every save, a store older
+   than it refused (SYMCR_ERROR_ROLLED_BACK), a counter that cannot be read refuses the
+   restore with its own code, and a counter file at the path the options name. */
+typedef struct test_counter {
+  uint64_t value;
+  int advances;
+  int read_result;
+} test_counter;
+
+static int test_counter_read(void* context, uint64_t* value) {
+  test_counter* counter = (test_counter*)context;
+  if (counter->read_result != SYMCR_OK) return counter->read_result;
+  *value = counter->value;
+  return SYMCR_OK;
+}
+
+static int test_counter_advance(void* context, uint64_t value) {
+  test_counter* counter = (test_counter*)context;
+  if (value > counter->value) counter->value = value;
+  ++counter->advances;
+  return SYMCR_OK;
+}
+
+static int copy_file(const char* from, const char* to) {
+  char buffer[4096];
+  size_t got;
+  FILE* in = fopen(from, "rb");
+  FILE* out = in != NULL ? fopen(to, "wb") : NULL;
+  int ok = out != NULL;
+  while (ok && (got = fread(buffer, 1, sizeof buffer, in)) > 0) ok = fwrite(buffer, 1, got, out) == got;
+  if (in != NULL) fclose(in);
+  if (out != NULL && fclose(out) != 0) ok = 0;
+  return ok;
+}
+
+static void freshness_counter(const char* directory) {
+  static const uint8_t key[] = {9, 8, 7, 6, 5, 4, 3, 2};
+  const symcr_checkpoint_key signing = {4, key, sizeof key};
+  test_counter counter = {0, 0, SYMCR_OK};
+  symcr_freshness_counter callbacks;
+  symcr_store_options options;
+  symcr_store* store = NULL;
+  char path[1024], old_copy[1024], counter_path[1024];
+  struct stat info;
+  snprintf(path, sizeof path, "%s/fresh.store", directory);
+  snprintf(old_copy, sizeof old_copy, "%s/fresh.store.old", directory);
+  snprintf(counter_path, sizeof counter_path, "%s/elsewhere.fresh", directory);
+  callbacks.context = &counter;
+  callbacks.read = test_counter_read;
+  callbacks.advance = test_counter_advance;
+
+  symcr_store_options_init(&options);
+  CHECK(options.freshness_counter == NULL && options.counter_path == NULL &&
+        options.allow_unrecorded_restore == 0);
+  CHECK(symcr_set_checkpoint_keys(&signing, 1) == SYMCR_OK);
+  options.freshness_counter = &callbacks;
+  CHECK(symcr_store_open(path, NULL, &options, &store) == SYMCR_OK);
+  if (store == NULL) return;
+  fill(20);
+  CHECK(symcr_store_save(store) == SYMCR_OK);
+  CHECK(copy_file(path, old_copy));
+  fill(21);
+  CHECK(symcr_store_save(store) == SYMCR_OK);
+  symcr_store_close(store);
+  CHECK(counter.advances >= 2 && counter.value >= 2);
+  /* no counter file next to the store: the program's counter was used */
+  snprintf(path + strlen(path), sizeof path - strlen(path), ".fresh");
+  CHECK(stat(path, &info) != 0);
+  path[strlen(path) - strlen(".fresh")] = '\0';
+
+  /* the older copy put back: refused, the state untouched */
+  CHECK(copy_file(old_copy, path));
+  store = NULL;
+  CHECK(symcr_store_open(path, NULL, &options, &store) == SYMCR_OK);
+  if (store == NULL) return;
+  fill(22);
+  CHECK(symcr_store_restore_latest(store, 0, NULL) == SYMCR_ERROR_ROLLED_BACK);
+  CHECK(holds(22));
+  symcr_store_close(store);
+
+  /* a counter that cannot be read: nothing restored, its code reported */
+  counter.read_result = SYMCR_ERROR_IO;
+  store = NULL;
+  if (symcr_store_open(path, NULL, &options, &store) == SYMCR_OK && store != NULL) {
+    CHECK(symcr_store_restore_latest(store, 0, NULL) == SYMCR_ERROR_IO);
+    symcr_store_close(store);
+  }
+  CHECK(strstr(symcr_last_error(), "freshness counter: read failed with Io") != NULL);
+  CHECK(holds(22));
+  counter.read_result = SYMCR_OK;
+
+  /* a counter without its functions is refused at open */
+  callbacks.advance = NULL;
+  store = NULL;
+  CHECK(symcr_store_open(path, NULL, &options, &store) == SYMCR_ERROR_UNSUPPORTED);
+  CHECK(store == NULL);
+
+  /* no program counter: an authenticated file where counter_path says */
+  options.freshness_counter = NULL;
+  options.counter_path = counter_path;
+  snprintf(path, sizeof path, "%s/fresh2.store", directory);
+  store = NULL;
+  CHECK(symcr_store_open(path, NULL, &options, &store) == SYMCR_OK);
+  if (store == NULL) return;
+  CHECK(symcr_store_save(store) == SYMCR_OK);
+  symcr_store_close(store);
+  CHECK(stat(counter_path, &info) == 0 && info.st_size > 0);
+  CHECK(symcr_set_checkpoint_keys(NULL, 0) == SYMCR_OK);
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     fprintf(stderr, "usage: %s <scratch directory>\n", argv[0]);
@@ -257,6 +367,7 @@ int main(int argc, char** argv) {
   authenticated(argv[1]);
   store_round_trip(argv[1]);
   crash_loop_fallback(argv[1]);
+  freshness_counter(argv[1]);
   if (failures == 0) printf("symcr C API: all checks passed\n");
   return failures == 0 ? 0 : 1;
 }

@@ -115,6 +115,18 @@ const char* symcr_report_json(symcr_report* report);
 const char* symcr_report_losses_text(symcr_report* report);
 void symcr_report_free(symcr_report* report);
 
+/* A store's freshness counter (symcr::FreshnessCounter), implemented by the program over a
+ * counter an attacker cannot reset (a TPM NV counter, eMMC RPMB, a backup register). `read`
+ * sets *value to the highest value advanced to (0 when never advanced); `advance` raises the
+ * counter to `value` when it is lower, never lowers it, and is durable once it returns. Each
+ * returns SYMCR_OK or an error code (any other value counts as SYMCR_ERROR_IO); a failed read
+ * means a store holding authenticated checkpoints restores nothing. */
+typedef struct symcr_freshness_counter {
+  void* context; /* passed to both functions */
+  int (*read)(void* context, uint64_t* value);
+  int (*advance)(void* context, uint64_t value);
+} symcr_freshness_counter;
+
 /* The checkpoint store: a preallocated ring of slots in one file. */
 typedef struct symcr_store symcr_store;
 typedef struct symcr_store_options {
@@ -123,6 +135,15 @@ typedef struct symcr_store_options {
   int fdatasync;      /* non-zero: fdatasync after each save */
   /* Crash-loop fallback (StoreOptions::fallback_depth): 0 (the default) turns it off. */
   uint32_t fallback_depth;
+  /* Non-zero: a store opened for writing that turns out read-only restores anyway, without
+   * the fallback, and says so in the report (StoreOptions::allow_unrecorded_restore). */
+  int allow_unrecorded_restore;
+  /* Freshness, with keys set (StoreOptions::freshness_counter, counter_path): the program's
+   * counter, copied at open (its context must outlive the store), or when NULL an
+   * authenticated file at `counter_path`, or when that is NULL too, at the store's path with
+   * ".fresh" appended. Both default to NULL. */
+  const symcr_freshness_counter* freshness_counter;
+  const char* counter_path;
 } symcr_store_options;
 
 void symcr_store_options_init(symcr_store_options* options);
