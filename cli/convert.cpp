@@ -3,6 +3,8 @@
 // checkpoint of that build. For a device, which restores only its own build's checkpoints: the
 // host converts across a firmware update, the device restores the result on its same-build
 // path. Nothing is written unless the whole conversion succeeds.
+#include <cstring>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -13,6 +15,7 @@
 #include "file_io.hpp"
 #include "header_fields.hpp"
 #include "host_layout.hpp"
+#include "payload_grammar.hpp"
 #include "record.hpp"
 #include "report_access.hpp"
 #include "report_table.hpp"
@@ -22,9 +25,52 @@
 namespace symcr::cli {
 namespace {
 
+// What ends a payload of a schema with clocks (docs/format.md §3), read from a payload that
+// restored (so it validated): the writing process's epoch and each clock's reading, by name.
+struct ClockTimebase {
+  std::uint64_t epoch = 0;
+  std::map<std::string, std::int64_t> readings;
+};
+ClockTimebase clock_timebase(const Schema& writer, const std::uint8_t* payload, std::size_t size) {
+  ClockTimebase timebase;
+  const std::vector<const ClockInfo*> clocks = detail::schema_clocks(writer);
+  if (clocks.empty() || size < 8 + 8 * clocks.size()) return timebase;
+  const std::uint8_t* trailer = payload + size - 8 - 8 * clocks.size();
+  std::memcpy(&timebase.epoch, trailer, 8);
+  for (std::size_t c = 0; c < clocks.size(); ++c) {
+    std::int64_t reading = 0;
+    std::memcpy(&reading, trailer + 8 + 8 * c, 8);
+    if (clocks[c] != nullptr) timebase.readings[clocks[c]->name] = reading;
+  }
+  return timebase;
+}
+
+// The readings that end the converted payload: the timebase its times are in, so that the
+// build's restore in any other process moves them by its clocks' advance since (by name; a
+// clock the timebase lacks reads 0, which no time of it needs: its times were kept, which
+// only --initial allows).
+std::vector<std::uint8_t> converted_readings(const Schema& build, const ClockTimebase& timebase,
+                                             detail::ClockReadings& out) {
+  const std::vector<const ClockInfo*> clocks = detail::schema_clocks(build);
+  std::vector<std::uint8_t> bytes(8 * clocks.size());
+  for (std::size_t c = 0; c < clocks.size(); ++c) {
+    std::int64_t reading = 0;
+    if (clocks[c] != nullptr) {
+      const auto found = timebase.readings.find(clocks[c]->name);
+      if (found != timebase.readings.end()) reading = found->second;
+    }
+    std::memcpy(bytes.data() + 8 * c, &reading, 8);
+  }
+  out.epoch = timebase.epoch;
+  out.readings = bytes.data();
+  out.count = static_cast<std::uint32_t>(clocks.size());
+  return bytes;
+}
+
 // The build's own values, into which the checkpoint is restored: what its restore keeps.
 Status restore_initial_state(const std::string& path, const std::string& build_schema_file,
-                             const detail::ParsedSchema& build, const HostLayout& layout) {
+                             const detail::ParsedSchema& build, const HostLayout& layout,
+                             ClockTimebase& timebase) {
   LoadedCheckpoint initial;
   // A device's record names its schema by hash: it is the build's own.
   Status status = load_checkpoint(path, std::nullopt, initial, build_schema_file);
@@ -38,6 +84,9 @@ Status restore_initial_state(const std::string& path, const std::string& build_s
   const Report restored =
       detail::restore_payload(*initial.writer, initial.writer_hash, initial.record.payload,
                               initial.record.payload_size, layout.schema(), RestoreOptions());
+  if (restored.ok()) {
+    timebase = clock_timebase(*initial.writer, initial.record.payload, initial.record.payload_size);
+  }
   return restored.status();
 }
 
@@ -65,6 +114,7 @@ int run_convert(const ConvertArgs& args) {
     status = detail::read_schema_file(resolve_links(args.schema).c_str(), build, &build_program_id);
   }
   HostLayout layout;
+  ClockTimebase initial_timebase;
   if (status.ok()) status = refuse_migrations(build.schema());
   if (status.ok()) {
     // What justifies the build's memory: the checkpoint's record and the build's schema.
@@ -72,7 +122,10 @@ int run_convert(const ConvertArgs& args) {
     status = layout.lay_out(build.schema(), input_size);
   }
   if (status.ok() && !args.initial.empty()) {
-    status = restore_initial_state(args.initial, args.schema, build, layout);
+    status = restore_initial_state(args.initial, args.schema, build, layout, initial_timebase);
+    // The checkpoint's times are moved into --initial's timebase, as the build's restore would
+    // move them in the process that saved that state: the times kept from it are in it already.
+    if (status.ok()) status = layout.read_clocks_as(initial_timebase.readings);
   }
   if (!status.ok()) {
     print_error(status.message());
@@ -126,9 +179,17 @@ int run_convert(const ConvertArgs& args) {
   identity.size = build.bytes().size();
   identity.hash = build.hash();
   identity.program_id = build_program_id;
+  // Without --initial, nothing was moved: the checkpoint's timebase.
+  detail::ClockReadings readings;
+  const std::vector<std::uint8_t> reading_bytes = converted_readings(
+      build.schema(),
+      !args.initial.empty() ? initial_timebase
+                            : clock_timebase(*checkpoint.writer, checkpoint.record.payload,
+                                             checkpoint.record.payload_size),
+      readings);
   std::vector<std::uint8_t> record;
   status = detail::encode_record_as(layout.schema(), identity, args.inline_schema,
-                                    checkpoint.record.header.sequence, record);
+                                    checkpoint.record.header.sequence, record, nullptr, &readings);
   if (status.ok()) {
     status = detail::write_file_atomically(args.output.c_str(), record.data(), record.size(),
                                            Durability::Fdatasync);

@@ -1,9 +1,29 @@
 #include "host_layout.hpp"
 
+#include <array>
 #include <cstddef>
+#include <utility>
 
 namespace symcr::cli {
 namespace {
+
+// ClockInfo::read takes no argument: one reading function per clock index, each returning its
+// entry of the conversion's "now".
+std::int64_t clock_now[HostLayout::kMaxClocks];
+template <std::size_t I>
+std::int64_t read_clock_now() {
+  return clock_now[I];
+}
+template <std::size_t... I>
+constexpr std::array<std::int64_t (*)(), sizeof...(I)> clock_readers(std::index_sequence<I...>) {
+  return {{&read_clock_now<I>...}};
+}
+constexpr auto kClockReaders = clock_readers(std::make_index_sequence<HostLayout::kMaxClocks>());
+
+bool is_clock_time(const FieldInfo& field) {
+  return (field.flags & kFieldClockTime) != 0 && field.time != nullptr &&
+         field.time->clock != nullptr;
+}
 
 constexpr int kMaxNesting = 64;  // as deep as a source nests types by value
 
@@ -136,6 +156,41 @@ Status HostLayout::lay_out(const Schema& build, std::uint64_t input_size) {
     root.address = memory_.back().get();
   }
   schema_ = Schema{types_.data(), build.type_count, roots_.data(), build.root_count, build.program};
+  return Status();
+}
+
+Status HostLayout::read_clocks_as(const std::map<std::string, std::int64_t>& now) {
+  std::uint32_t count = 0;
+  std::size_t time_fields = 0;
+  for (const std::vector<FieldInfo>& fields : fields_) {
+    for (const FieldInfo& field : fields) {
+      if (!is_clock_time(field)) continue;
+      if (field.time->clock->index >= kMaxClocks) {
+        return Status(Error::Unsupported, "the build has more than %u clocks", kMaxClocks);
+      }
+      if (field.time->clock->index >= count) count = field.time->clock->index + 1;
+      ++time_fields;
+    }
+  }
+  // Sized once: the fields point into both.
+  clocks_.assign(count, ClockInfo{nullptr, nullptr, 0});
+  times_.clear();
+  times_.reserve(time_fields);
+  for (std::vector<FieldInfo>& fields : fields_) {
+    for (FieldInfo& field : fields) {
+      if (!is_clock_time(field)) continue;
+      const ClockInfo& build_clock = *field.time->clock;
+      ClockInfo& ours = clocks_[build_clock.index];
+      if (ours.name == nullptr) {
+        ours = build_clock;
+        const auto found = build_clock.name ? now.find(build_clock.name) : now.end();
+        ours.read = found != now.end() ? kClockReaders[build_clock.index] : nullptr;
+        if (found != now.end()) clock_now[build_clock.index] = found->second;
+      }
+      times_.push_back(FieldTime{&ours, field.time->never});
+      field.time = &times_.back();
+    }
+  }
   return Status();
 }
 

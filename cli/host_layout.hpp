@@ -9,7 +9,9 @@
 #define SYMCR_CLI_HOST_LAYOUT_HPP
 
 #include <cstdint>
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "symcr/generated.hpp"
@@ -28,6 +30,12 @@ class HostLayout {
   static constexpr std::uint64_t kBytesPerInputByte = 16;
   Status lay_out(const Schema& build, std::uint64_t input_size);
   const Schema& schema() const { return schema_; }
+  // After lay_out: a restore into the layout moves the times of each clock named in `now` as
+  // the build's own restore would in a process whose clock reads now[name] (for `symcr
+  // convert`, the process that saved --initial's state); the times of other clocks stay as
+  // saved. Process-wide: one layout's clocks are read at a time.
+  static constexpr std::uint32_t kMaxClocks = 64;
+  Status read_clocks_as(const std::map<std::string, std::int64_t>& now);
 
  private:
   struct Extent {
@@ -41,6 +49,8 @@ class HostLayout {
   std::vector<std::vector<FieldInfo>> fields_;
   std::vector<Extent> extents_;
   std::vector<RootInfo> roots_;
+  std::vector<ClockInfo> clocks_;  // the build's, reading the conversion's "now"
+  std::vector<FieldTime> times_;   // the time fields', naming clocks_
   std::vector<std::unique_ptr<std::max_align_t[]>> memory_;
   Schema schema_{};
 };

@@ -230,6 +230,12 @@ class Encoder {
   // The clocks' readings end the payload (docs/format.md §3), after everything they describe
   // was read from memory.
   void put_clock_readings() {
+    if (given_readings_ != nullptr) {
+      std::memcpy(grow(8), &given_readings_->epoch, 8);
+      std::memcpy(grow(8 * std::size_t{given_readings_->count}), given_readings_->readings,
+                  8 * std::size_t{given_readings_->count});
+      return;
+    }
     const std::uint64_t epoch = process_epoch();
     std::memcpy(grow(8), &epoch, 8);
     for (const ClockInfo* clock : facts_.clocks) {
@@ -1124,6 +1130,7 @@ class Encoder {
 
  public:
   std::size_t start_ = 0;
+  const ClockReadings* given_readings_ = nullptr;  // append_payload's, or null: read them now
 
  private:
   const Schema& schema_;
@@ -1170,12 +1177,17 @@ std::size_t encode_scratch_bytes() {
 }
 
 Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out,
-                      PayloadCrc* payload_crc) {
+                      PayloadCrc* payload_crc, const ClockReadings* clock_readings) {
   const SchemaCacheEntry& cached = schema_cache_entry(schema);
   EncodeScratch& scratch = thread_encode_scratch();
   const std::size_t start = out.size();
   Encoder encoder(schema, out, scratch, cached.facts());
   encoder.start_ = start;
+  if (clock_readings != nullptr && clock_readings->count != cached.facts().clocks.size()) {
+    return Status(Error::Unsupported, "%u clock readings given for a schema of %zu clocks",
+                  clock_readings->count, cached.facts().clocks.size());
+  }
+  encoder.given_readings_ = clock_readings;
   const Status status = encoder.run();
   if (payload_crc) {
     payload_crc->known = status.ok() && encoder.fused_payload_crc(payload_crc->value);

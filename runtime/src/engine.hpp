@@ -84,9 +84,12 @@ struct PayloadCrc {
   std::uint32_t value = 0;
 };
 // Same, appending at out.size() (so a caller can reserve room for a header first); sets
-// `payload_crc` if given.
+// `payload_crc` if given. `clock_readings`, if given, ends the payload instead of this process's
+// epoch and its clocks' readings now (one per schema_clocks(schema), by index).
+struct ClockReadings;
 Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out,
-                      PayloadCrc* payload_crc = nullptr);
+                      PayloadCrc* payload_crc = nullptr,
+                      const ClockReadings* clock_readings = nullptr);
 
 // Restores a payload written with `writer` into the live roots of `reader`: resolves (plans are
 // cached per writer-hash/reader pair), decodes and checks everything, and only then writes.

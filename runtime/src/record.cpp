@@ -66,7 +66,7 @@ Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t seq
 
 Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inline_schema,
                         std::uint64_t sequence, std::vector<std::uint8_t>& out,
-                        const RecordSigning* signing) {
+                        const RecordSigning* signing, const ClockReadings* clock_readings) {
   // Without a store's signing, a standalone checkpoint signed with the keys in force: one
   // snapshot names the key and makes the MAC.
   KeySnapshot snapshot;
@@ -95,7 +95,7 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
     out.insert(out.end(), blob.data, blob.data + blob.size);
   }
   PayloadCrc payload_crc;
-  Status status = append_payload(schema, out, &payload_crc);
+  Status status = append_payload(schema, out, &payload_crc, clock_readings);
   if (!status.ok()) return status;
   const std::size_t payload_size = out.size() - header_size - schema_size;
   if (payload_size > UINT32_MAX) {

@@ -68,6 +68,7 @@ struct RecordView {
 struct SchemaBlob;
 struct KeyRing;
 struct RecordBinding;
+struct ClockReadings;
 
 // How a record is authenticated: with `keys` (null: not at all), bound to `binding`, carrying
 // `journal_freshness`. A store passes its own; without one, a record is signed with the keys in
@@ -85,10 +86,13 @@ Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t seq
                      std::vector<std::uint8_t>& out, const RecordSigning* signing = nullptr);
 // The same record of `schema`'s roots under another schema's identity: the header's hash and
 // program, and the inline bytes, are `identity`'s. For `symcr convert`, whose roots are another
-// build's, laid out for this machine's memory (the payload never depends on the layout).
+// build's, laid out for this machine's memory (the payload never depends on the layout), and
+// whose times of clocks hold the converted checkpoint's timebase: `clock_readings`, if given,
+// end the payload (append_payload).
 Status encode_record_as(const Schema& schema, const SchemaBlob& identity,
                         bool inline_schema, std::uint64_t sequence,
-                        std::vector<std::uint8_t>& out, const RecordSigning* signing = nullptr);
+                        std::vector<std::uint8_t>& out, const RecordSigning* signing = nullptr,
+                        const ClockReadings* clock_readings = nullptr);
 
 // Names `signing`'s key and journal freshness in an authenticated record's header, makes its
 // MAC for `signing.binding` and rewrites its checksum: a record signed where its slot is known,
