@@ -46,7 +46,7 @@ run() {
 if [ -n "$flags" ]; then
   mkdir -p "$work/compiler"
   for tool in g++ gcc; do
-    printf '#!/bin/sh\nexec /usr/bin/%s %s "$@"\n' "$tool" "$flags" >"$work/compiler/$tool"
+    printf '#!/bin/sh\nexec %s %s "$@"\n' "$(command -v $tool)" "$flags" >"$work/compiler/$tool"
     chmod +x "$work/compiler/$tool"
   done
   export PATH="$work/compiler:$PATH"
