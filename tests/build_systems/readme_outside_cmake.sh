@@ -80,8 +80,9 @@ while IFS= read -r line; do
     export\ *) eval "$line" ;;
     *--variable=symcr_gen*) # prints what README's comment says, the installed symcr-gen
       gen=$(cd "$work/pkg-config" && eval "$line")
-      [ "$gen" = "${line##*# }" ] && [ "$gen" -ef "$prefix/bin/symcr-gen" ] ||
-        fail "$line printed $gen" ;;
+      if [ "$gen" != "${line##*# }" ] || [ ! "$gen" -ef "$prefix/bin/symcr-gen" ]; then
+        fail "$line printed $gen"
+      fi ;;
     *) run "$work/pkg-config" "$line" ;;
   esac
 done <<<"$pkg"
