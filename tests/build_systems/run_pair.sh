@@ -17,7 +17,7 @@ set -euo pipefail
 system=$1 wrappers=$2 here=$3 work=$4 generator=$5 flags=${6:-}
 rm -rf "$work"
 mkdir -p "$work"
-cp -r "$here/rover_v0" "$here/rover_v1" "$work/"
+cp -r "$here/rover_v0" "$here/rover_v1" "$here/rover.mk" "$work/"
 export SYMCR_WRAPPER_LOG="$work/wrapper.log"
 cxx="$wrappers/symcr-c++ g++${flags:+ $flags}"
 

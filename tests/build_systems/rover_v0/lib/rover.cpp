@@ -11,6 +11,9 @@ int Rover::step() {
   ++steps_;
   heading_ += 1.5f;
   if (steps_ == 5) mode_ = 3;
-  if (steps_ % 4 == 0) route_.push_back(Waypoint{50.0 + steps_, 60.0});
+  if (steps_ % 4 == 0) {
+    route_.push_back(Waypoint{50.0 + steps_, 60.0});
+    return static_cast<int>(steps_);  // an early return: the exit point is reached here too
+  }
   return static_cast<int>(steps_);
 }
