@@ -11,6 +11,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "payload_error.hpp"
 #include "report_access.hpp"
 #include "restorer.hpp"
 #include "unicode.hpp"

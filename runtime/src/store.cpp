@@ -19,7 +19,6 @@
 
 #include "authentication.hpp"
 #include "crc32c.hpp"
-#include "engine.hpp"
 #include "file_io.hpp"
 #include "file_system.hpp"
 #include "freshness.hpp"
@@ -28,6 +27,8 @@
 #include "record.hpp"
 #include "report_access.hpp"
 #include "restore_journal.hpp"
+#include "restore_payload.hpp"
+#include "schema_blob.hpp"
 #include "store_layout.hpp"
 #include "symcr/symcr.hpp"
 
