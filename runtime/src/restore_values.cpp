@@ -11,6 +11,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "old_values_view.hpp"
 #include "payload_error.hpp"
 #include "report_access.hpp"
 #include "restorer.hpp"
