@@ -13,6 +13,7 @@
 
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
+#include "old_values_view.hpp"
 #include "parsed_schema.hpp"
 #include "payload_grammar.hpp"
 #include "restore_payload.hpp"
