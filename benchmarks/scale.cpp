@@ -35,10 +35,10 @@
 
 #include <benchmark/benchmark.h>
 
-#include "engine.hpp"  // thread_scratch_bytes: the memo tables' size
 #include "schema_tables.hpp"
-#include "symcr/ops.hpp"
+#include "scratch.hpp"
 #include "symcr/generated.hpp"
+#include "symcr/ops.hpp"
 #include "symcr/symcr.hpp"
 
 namespace {

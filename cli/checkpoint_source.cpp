@@ -12,6 +12,7 @@
 
 #include "file_io.hpp"
 #include "header_fields.hpp"
+#include "parsed_schema.hpp"
 #include "schema_file.hpp"
 #include "store_survey.hpp"
 #include "values.hpp"

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "engine.hpp"
+#include "parsed_schema.hpp"
 #include "record.hpp"
 #include "store_reader.hpp"
 #include "symcr/symcr.hpp"

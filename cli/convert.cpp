@@ -10,15 +10,17 @@
 
 #include "checkpoint_source.hpp"
 #include "commands.hpp"
-#include "engine.hpp"
 #include "exit_codes.hpp"
 #include "file_io.hpp"
 #include "header_fields.hpp"
 #include "host_layout.hpp"
+#include "parsed_schema.hpp"
 #include "payload_grammar.hpp"
 #include "record.hpp"
 #include "report_access.hpp"
 #include "report_table.hpp"
+#include "restore_payload.hpp"
+#include "schema_blob.hpp"
 #include "schema_file.hpp"
 #include "terminal.hpp"
 

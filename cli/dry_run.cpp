@@ -2,8 +2,8 @@
 // value-level decisions (a value that does not fit, an unknown enumerator) are reported too.
 #include "dry_run.hpp"
 
-#include "engine.hpp"
 #include "report_access.hpp"
+#include "restore_payload.hpp"
 
 namespace symcr::cli {
 

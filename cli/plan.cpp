@@ -17,6 +17,7 @@
 #include "exit_codes.hpp"
 #include "header_fields.hpp"
 #include "json_writer.hpp"
+#include "parsed_schema.hpp"
 #include "record.hpp"
 #include "report_access.hpp"
 #include "report_table.hpp"

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <unordered_map>
 
-#include "engine.hpp"
+#include "visit.hpp"
 
 namespace symcr::cli {
 namespace {

@@ -11,6 +11,7 @@
 #include "file_io.hpp"
 #include "header_fields.hpp"
 #include "json_writer.hpp"
+#include "parsed_schema.hpp"
 #include "store_survey.hpp"
 #include "terminal.hpp"
 #include "values.hpp"

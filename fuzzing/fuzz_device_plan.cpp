@@ -24,6 +24,7 @@
 #include "device_plan.hpp"
 #include "device_plan_encode.hpp"
 #include "fuzz_worlds.hpp"
+#include "schema_blob.hpp"
 #include "symcr/device.hpp"
 
 namespace {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "fuzz_worlds.hpp"
+#include "schema_blob.hpp"
 #include "symcr/device.hpp"
 
 namespace {

@@ -20,6 +20,8 @@
 #include <vector>
 
 #include "fuzz_worlds.hpp"
+#include "parsed_schema.hpp"
+#include "visit.hpp"
 
 namespace {
 

@@ -25,7 +25,11 @@
 #include <vector>
 
 #include "fuzz_worlds.hpp"
+#include "parsed_schema.hpp"
 #include "plan.hpp"
+#include "restore_payload.hpp"
+#include "schema_blob.hpp"
+#include "visit.hpp"
 
 namespace {
 

@@ -44,6 +44,7 @@
 #include "freshness.hpp"
 #include "fuzz_worlds.hpp"
 #include "restore_journal.hpp"
+#include "schema_blob.hpp"
 #include "store_reader.hpp"
 
 namespace {

@@ -19,10 +19,11 @@
 
 #include "authentication.hpp"
 #include "crc32c.hpp"
-#include "engine.hpp"
+#include "encode.hpp"
 #include "handwritten_schemas.hpp"
 #include "little_endian.hpp"
 #include "record.hpp"
+#include "schema_blob.hpp"
 #include "symcr/symcr.hpp"
 
 namespace fuzz {

@@ -14,9 +14,11 @@
 #include <vector>
 
 #include "device_plan_encode.hpp"
+#include "encode.hpp"
 #include "freshness.hpp"
 #include "fuzz_worlds.hpp"
 #include "restore_journal.hpp"
+#include "schema_blob.hpp"
 #include "symcr/device.hpp"
 
 namespace {

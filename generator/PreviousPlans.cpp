@@ -10,8 +10,9 @@
 #include "SchemaTables.h"
 
 #include "device_plan_encode.hpp"
-#include "engine.hpp"
+#include "parsed_schema.hpp"
 #include "plan.hpp"
+#include "schema_blob.hpp"
 #include "schema_file.hpp"
 
 namespace symcr_gen {

@@ -8,7 +8,7 @@
 #include "SchemaFile.h"
 #include "SchemaTables.h"
 
-#include "engine.hpp"
+#include "parsed_schema.hpp"
 #include "schema_file.hpp"
 
 namespace symcr_gen {

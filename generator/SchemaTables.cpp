@@ -5,6 +5,8 @@
 //===----------------------------------------------------------------------===//
 #include "SchemaTables.h"
 
+#include "schema_blob.hpp"
+
 namespace symcr_gen {
 
 SchemaTables::SchemaTables(const ProgramModel &Program) {

@@ -13,7 +13,7 @@
 #define SYMCR_GENERATOR_SCHEMATABLES_H
 
 #include "Model.h"
-#include "engine.hpp"
+#include "schema_blob.hpp"
 
 #include <list>
 #include <string>

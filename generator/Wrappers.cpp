@@ -79,23 +79,24 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
 
   if (TU.IsC) {
     OS << "#include <stddef.h>\n#include <stdlib.h>\n\n";
+    // The lifecycle's type is the runtime's own (symcr::Lifecycle in C++), from the header
+    // both languages include.
     bool LifecycleDeclared = false;
     for (std::uint32_t I : Home) {
       const TypeModel &T = Program.Types[I];
-    const std::string S = symbolOf(T.Symbol, I);
+      const std::string S = symbolOf(T.Symbol, I);
       if (!emitsLifecycle(Program, T))
         continue;
       if (!LifecycleDeclared)
-        OS << "struct symcr_gen_lifecycle {\n  void* (*create)(void);\n"
-              "  void (*destroy)(void* object);\n  const void* vtable;\n};\n";
+        OS << "#include <symcr/generated.h>\n\n";
       LifecycleDeclared = true;
       OS << "static void* symcr_gen_create_" << S
          << "(void) { return calloc(1, sizeof(" << T.Spelling << ")); }\n"
          << "static void symcr_gen_destroy_" << S
          << "(void* object) { free(object); }\n"
-         << "extern const struct symcr_gen_lifecycle symcr_gen_c_lifecycle_"
+         << "extern const struct symcr_lifecycle symcr_gen_c_lifecycle_"
          << S << ";\n"
-         << "const struct symcr_gen_lifecycle symcr_gen_c_lifecycle_" << S
+         << "const struct symcr_lifecycle symcr_gen_c_lifecycle_" << S
          << " = {symcr_gen_create_" << S << ", symcr_gen_destroy_" << S
          << ", NULL};\n";
     }

@@ -2,12 +2,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine.hpp"
 #include "file_io.hpp"
 #include "program_schema.hpp"
 #include "record.hpp"
-#include "symcr/symcr.hpp"
 #include "report_access.hpp"
+#include "symcr/symcr.hpp"
 
 namespace symcr {
 namespace {

@@ -18,10 +18,11 @@
 #include "address_table.hpp"
 #include "clocks.hpp"
 #include "crc32c.hpp"
-#include "engine.hpp"
+#include "encode.hpp"
 #include "payload_grammar.hpp"
 #include "process_memory.hpp"
 #include "schema_facts.hpp"
+#include "scratch.hpp"
 
 namespace symcr::detail {
 namespace {

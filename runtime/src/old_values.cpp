@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "old_values_view.hpp"
 #include "payload_grammar.hpp"
 #include "scalar.hpp"
 
@@ -293,9 +294,16 @@ OldValues OldValues::element(const char* field, std::size_t index) const {
 
 namespace symcr::detail {
 
+struct OldValuesAccess {
+  static OldValues view(const Schema& writer, const WireSizes& sizes, std::uint32_t type,
+                        const std::uint8_t* bytes, std::size_t size) {
+    return OldValues(writer, sizes, type, bytes, size);
+  }
+};
+
 OldValues old_values_view(const Schema& writer, const WireSizes& sizes, std::uint32_t type,
                           const std::uint8_t* bytes, std::size_t size) {
-  return OldValues(writer, sizes, type, bytes, size);
+  return OldValuesAccess::view(writer, sizes, type, bytes, size);
 }
 
 }  // namespace symcr::detail

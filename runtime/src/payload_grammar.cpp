@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <utility>
 
-#include "engine.hpp"
+#include "payload_error.hpp"
 
 namespace symcr::detail {
 namespace {

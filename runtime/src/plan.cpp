@@ -13,8 +13,10 @@
 #include <utility>
 #include <vector>
 
+#include "parsed_schema.hpp"
 #include "plan_image.hpp"
 #include "planner.hpp"
+#include "schema_blob.hpp"
 #include "schema_facts.hpp"
 #include "unicode.hpp"
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "engine.hpp"
+#include "parsed_schema.hpp"
 #include "payload_grammar.hpp"
 #include "report_access.hpp"
 #include "symcr/generated.hpp"

@@ -7,10 +7,13 @@
 
 #include "authentication.hpp"
 #include "crc32c.hpp"
-#include "engine.hpp"
+#include "encode.hpp"
 #include "little_endian.hpp"
+#include "parsed_schema.hpp"
 #include "plan.hpp"
 #include "report_access.hpp"
+#include "restore_payload.hpp"
+#include "schema_blob.hpp"
 
 namespace symcr::detail {
 namespace {

@@ -9,6 +9,8 @@
 #include <memory>
 #include <vector>
 
+#include "parsed_schema.hpp"
+#include "schema_blob.hpp"
 #include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 

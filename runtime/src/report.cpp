@@ -96,34 +96,40 @@ const std::vector<ReportEntry>& Report::entries() const {
   return source_ ? source_->entries() : entries_;
 }
 
-void Report::add(std::string path, Decision decision, std::string detail, bool lossy) {
-  if (source_) {
-    entries_ = source_->entries();
-    source_.reset();
+namespace detail {
+
+void ReportAccess::add(Report& report, std::string path, Decision decision, std::string detail,
+                       bool lossy) {
+  if (report.source_) {
+    report.entries_ = report.source_->entries();
+    report.source_.reset();
   }
-  entries_.push_back(ReportEntry{std::move(path), decision, std::move(detail), lossy});
+  report.entries_.push_back(ReportEntry{std::move(path), decision, std::move(detail), lossy});
 }
 
-void Report::remove(Decision decision) {
-  if (source_) {
-    entries_ = source_->entries();
-    source_.reset();
+void ReportAccess::remove(Report& report, Decision decision) {
+  if (report.source_) {
+    report.entries_ = report.source_->entries();
+    report.source_.reset();
   }
-  entries_.erase(std::remove_if(entries_.begin(), entries_.end(),
-                                [decision](const ReportEntry& e) { return e.decision == decision; }),
-                 entries_.end());
+  std::vector<ReportEntry>& entries = report.entries_;
+  entries.erase(std::remove_if(entries.begin(), entries.end(),
+                               [decision](const ReportEntry& e) { return e.decision == decision; }),
+                entries.end());
 }
+
+void ReportAccess::set_source(Report& report, std::shared_ptr<const ReportSource> source) {
+  report.entries_.clear();
+  report.source_ = std::move(source);
+}
+
+}  // namespace detail
 
 Report::~Report() = default;
 Report::Report(const Report& other) = default;
 Report::Report(Report&& other) noexcept = default;
 Report& Report::operator=(const Report& other) = default;
 Report& Report::operator=(Report&& other) noexcept = default;
-
-void Report::set_source(std::shared_ptr<const detail::ReportSource> source) {
-  entries_.clear();
-  source_ = std::move(source);
-}
 
 std::size_t Report::count(Decision decision) const {
   return static_cast<std::size_t>(

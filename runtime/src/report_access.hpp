@@ -25,21 +25,18 @@ struct ReportSource {
 struct ReportAccess {
   static void set_status(Report& report, const Status& status) { report.status_ = status; }
   static void set_sequence(Report& report, std::uint64_t sequence) { report.sequence_ = sequence; }
+  // Adds an entry (copying shared entries first).
   static void add(Report& report, std::string path, Decision decision, std::string detail,
-                  bool lossy) {
-    report.add(std::move(path), decision, std::move(detail), lossy);
-  }
+                  bool lossy);
   // Removes every entry of `decision` (copying shared entries first).
-  static void remove(Report& report, Decision decision) { report.remove(decision); }
+  static void remove(Report& report, Decision decision);
   static std::vector<SkippedCheckpoint>& skipped(Report& report) { return report.skipped_; }
   static void warn(Report& report, std::string warning) {
     report.warnings_.push_back(std::move(warning));
   }
   // Starts an empty report with the entries of `source` (shared, not copied); a later add()
   // copies them first.
-  static void set_source(Report& report, std::shared_ptr<const ReportSource> source) {
-    report.set_source(std::move(source));
-  }
+  static void set_source(Report& report, std::shared_ptr<const ReportSource> source);
 };
 
 }  // namespace symcr::detail

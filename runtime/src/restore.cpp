@@ -20,9 +20,12 @@
 #include <vector>
 
 #include "device_format.hpp"
+#include "parsed_schema.hpp"
 #include "report_access.hpp"
+#include "restore_payload.hpp"
 #include "restorer.hpp"
 #include "schema_facts.hpp"
+#include "scratch.hpp"
 #include "symcr/device.hpp"
 
 namespace symcr::detail {

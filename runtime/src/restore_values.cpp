@@ -11,6 +11,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "old_values_view.hpp"
+#include "payload_error.hpp"
 #include "report_access.hpp"
 #include "restorer.hpp"
 #include "unicode.hpp"

@@ -14,7 +14,6 @@
 #include <unordered_map>
 #include <vector>
 
-#include "engine.hpp"
 #include "payload_grammar.hpp"
 #include "plan.hpp"
 #include "scalar.hpp"

@@ -2,8 +2,8 @@
 #include <cstring>
 
 #include "device_format.hpp"
-#include "engine.hpp"
 #include "payload_grammar.hpp"
+#include "schema_blob.hpp"
 #include "schema_facts.hpp"
 #include "wire.hpp"
 

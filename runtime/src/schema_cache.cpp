@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "device_format.hpp"
-#include "engine.hpp"
+#include "schema_blob.hpp"
 #include "schema_facts.hpp"
 
 namespace symcr::detail {

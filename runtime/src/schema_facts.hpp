@@ -8,8 +8,8 @@
 #include <mutex>
 #include <vector>
 
-#include "engine.hpp"
 #include "payload_grammar.hpp"
+#include "schema_blob.hpp"
 #include "symcr/device.hpp"
 #include "symcr/generated.hpp"
 

@@ -9,7 +9,9 @@
 #include "crc32c.hpp"
 #include "file_io.hpp"
 #include "little_endian.hpp"
+#include "parsed_schema.hpp"
 #include "record.hpp"
+#include "schema_blob.hpp"
 
 namespace symcr::detail {
 namespace {

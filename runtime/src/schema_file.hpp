@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "engine.hpp"
+#include "parsed_schema.hpp"
 #include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 

@@ -9,8 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "engine.hpp"
+#include "parsed_schema.hpp"
 #include "payload_grammar.hpp"
+#include "schema_blob.hpp"
 #include "wire.hpp"
 
 namespace symcr::detail {

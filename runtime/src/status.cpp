@@ -3,7 +3,7 @@
 #include <cstdarg>
 #include <cstdio>
 
-#include "engine.hpp"
+#include "payload_error.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr {

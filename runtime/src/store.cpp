@@ -19,7 +19,6 @@
 
 #include "authentication.hpp"
 #include "crc32c.hpp"
-#include "engine.hpp"
 #include "file_io.hpp"
 #include "file_system.hpp"
 #include "freshness.hpp"
@@ -28,6 +27,8 @@
 #include "record.hpp"
 #include "report_access.hpp"
 #include "restore_journal.hpp"
+#include "restore_payload.hpp"
+#include "schema_blob.hpp"
 #include "store_layout.hpp"
 #include "symcr/symcr.hpp"
 
@@ -77,6 +78,13 @@ bool geometry_from_file_size(const StoreOptions& options, std::uint64_t file_siz
 }  // namespace
 
 struct Store::Impl {
+  // For writing: create if absent, and fall back to read-only where the file or its file
+  // system cannot be written. Every failure closes `out` (and removes a file it created).
+  static Status open(const char* path, const Schema& schema, const StoreOptions& options,
+                     bool writable, Store& out);
+  static Status open_descriptor(const char* path, const Schema& schema,
+                                const StoreOptions& options, bool writable, Store& out);
+
   struct Slot {
     StoreSlotState state = StoreSlotState::Empty;
     std::uint64_t sequence = 0;
@@ -905,18 +913,16 @@ Status Store::open(const char* path, const Schema& schema, const StoreOptions& o
   out.close();
   Status status = detail::check_store_dimensions(options.slots, options.slot_size);
   if (!status.ok()) return status;
-  return open_impl(path, schema, options, /*writable=*/true, out);
+  return Impl::open(path, schema, options, /*writable=*/true, out);
 }
 
 Status Store::open_readonly(const char* path, const Schema& schema, Store& out) {
   out.close();
-  return open_impl(path, schema, StoreOptions(), /*writable=*/false, out);
+  return Impl::open(path, schema, StoreOptions(), /*writable=*/false, out);
 }
 
-// For writing: create if absent, and fall back to read-only where the file or its file system
-// cannot be written. Every failure closes `out` (and removes a file it created).
-Status Store::open_impl(const char* path, const Schema& schema, const StoreOptions& options,
-                        bool writable, Store& out) {
+Status Store::Impl::open(const char* path, const Schema& schema, const StoreOptions& options,
+                         bool writable, Store& out) {
   Status status = open_descriptor(path, schema, options, writable, out);
   if (!status.ok()) {
     out.close();
@@ -926,8 +932,8 @@ Status Store::open_impl(const char* path, const Schema& schema, const StoreOptio
   return Status();
 }
 
-Status Store::open_descriptor(const char* path, const Schema& schema, const StoreOptions& options,
-                              bool writable, Store& out) {
+Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
+                                    const StoreOptions& options, bool writable, Store& out) {
   const detail::SchemaBlob& blob = detail::schema_blob(schema);
   OpenedStoreFile file;
   Status status = open_store_file(path, writable, file);

@@ -12,6 +12,8 @@
 #include "crc32c.hpp"
 #include "file_io.hpp"
 #include "little_endian.hpp"
+#include "parsed_schema.hpp"
+#include "schema_blob.hpp"
 
 namespace symcr::detail {
 namespace {

@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "engine.hpp"
+#include "parsed_schema.hpp"
 #include "record.hpp"
 #include "symcr/symcr.hpp"
 

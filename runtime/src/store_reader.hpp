@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "authentication.hpp"
-#include "engine.hpp"
 #include "record.hpp"
 #include "restore_journal.hpp"
 #include "store_layout.hpp"

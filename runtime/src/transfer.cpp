@@ -4,9 +4,11 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine.hpp"
+#include "encode.hpp"
 #include "record.hpp"
 #include "report_access.hpp"
+#include "restore_payload.hpp"
+#include "schema_blob.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr {

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "engine.hpp"
 #include "payload_grammar.hpp"
+#include "visit.hpp"
 
 namespace symcr::detail {
 namespace {

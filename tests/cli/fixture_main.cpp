@@ -30,10 +30,10 @@
 #include <vector>
 
 #include "crc32c.hpp"
-#include "engine.hpp"
 #include "file_io.hpp"
 #include "fixture_tables.hpp"
 #include "little_endian.hpp"
+#include "schema_blob.hpp"
 #include "schema_file.hpp"
 #include "symcr/symcr.hpp"
 

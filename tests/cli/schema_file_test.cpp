@@ -8,6 +8,8 @@
 #include <string>
 
 #include "fixture_tables.hpp"
+#include "parsed_schema.hpp"
+#include "schema_blob.hpp"
 #include "symcr/symcr.hpp"
 
 namespace {

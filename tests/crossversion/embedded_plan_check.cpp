@@ -11,10 +11,11 @@
 #include <vector>
 
 #include "device_plan_encode.hpp"
-#include "engine.hpp"
+#include "parsed_schema.hpp"
 #include "plan.hpp"
 #include "plan_image.hpp"
 #include "record.hpp"
+#include "schema_blob.hpp"
 #include "symcr/device.hpp"
 
 extern "C" int xv_check_embedded_plan(const char* checkpoint) {

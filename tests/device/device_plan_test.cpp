@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "device_plan_encode.hpp"
-#include "engine.hpp"
+#include "schema_blob.hpp"
 #include "schema_tables.hpp"
 #include "symcr/device.hpp"
 #include "symcr/symcr.hpp"

@@ -12,8 +12,10 @@
 #include <vector>
 
 #include "crc32c.hpp"
-#include "engine.hpp"
+#include "encode.hpp"
+#include "parsed_schema.hpp"
 #include "record.hpp"
+#include "schema_blob.hpp"
 #include "symcr/symcr.hpp"
 #include "vehicle.hpp"
 

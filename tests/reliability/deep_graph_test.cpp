@@ -22,12 +22,15 @@
 
 #include <gtest/gtest.h>
 
-#include "engine.hpp"
 #include "little_endian.hpp"
+#include "parsed_schema.hpp"
 #include "payload_grammar.hpp"
-#include "schema_facts.hpp"
 #include "reliability_schemas.hpp"
+#include "restore_payload.hpp"
+#include "schema_blob.hpp"
+#include "schema_facts.hpp"
 #include "symcr/symcr.hpp"
+#include "visit.hpp"
 
 namespace reliability {
 namespace {

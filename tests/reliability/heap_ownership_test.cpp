@@ -11,7 +11,6 @@
 
 #include <gtest/gtest.h>
 
-#include "engine.hpp"
 #include "reliability_schemas.hpp"
 #include "symcr/symcr.hpp"
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "device_format.hpp"
-#include "engine.hpp"
 #include "record.hpp"
+#include "schema_blob.hpp"
 #include "schema_tables.hpp"
 #include "symcr/device.hpp"
 #include "symcr/symcr.hpp"

@@ -2,6 +2,7 @@
 // variant and unique_ptr, restored into a build that changed element types and kinds.
 #include <gtest/gtest.h>
 
+#include "encode.hpp"
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
 

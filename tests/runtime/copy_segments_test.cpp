@@ -12,6 +12,7 @@
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
 #include "plan.hpp"
+#include "schema_blob.hpp"
 
 namespace engine_tests {
 namespace {

@@ -9,7 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "engine.hpp"
+#include "encode.hpp"
+#include "parsed_schema.hpp"
+#include "restore_payload.hpp"
+#include "schema_blob.hpp"
 #include "symcr/symcr.hpp"
 
 namespace engine_tests {

@@ -12,8 +12,11 @@
 
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
+#include "parsed_schema.hpp"
 #include "plan.hpp"
 #include "report_access.hpp"
+#include "restore_payload.hpp"
+#include "scratch.hpp"
 #include "symcr/device.hpp"
 #include "symcr/ops.hpp"
 

@@ -10,13 +10,13 @@
 
 #include "authentication.hpp"
 #include "crc32c.hpp"
-#include "engine.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
 #include "freshness.hpp"
 #include "little_endian.hpp"
 #include "record.hpp"
 #include "restore_journal.hpp"
+#include "schema_blob.hpp"
 #include "symcr/symcr.hpp"
 
 namespace file_tests {

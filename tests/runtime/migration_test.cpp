@@ -13,7 +13,10 @@
 
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
+#include "old_values_view.hpp"
+#include "parsed_schema.hpp"
 #include "payload_grammar.hpp"
+#include "restore_payload.hpp"
 
 #define SYMCR_COUNT(array) static_cast<std::uint32_t>(sizeof(array) / sizeof((array)[0]))
 

@@ -9,9 +9,12 @@
 #include <new>
 #include <time.h>
 
+#include "encode.hpp"
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
 #include "plan.hpp"
+#include "restore_payload.hpp"
+#include "schema_blob.hpp"
 
 namespace {
 bool counting = false;

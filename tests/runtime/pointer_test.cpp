@@ -10,8 +10,10 @@
 #include <map>
 #include <string>
 
+#include "encode.hpp"
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
+#include "visit.hpp"
 
 namespace engine_tests {
 namespace {

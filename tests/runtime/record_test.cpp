@@ -11,10 +11,10 @@
 #include <gtest/gtest.h>
 
 #include "crc32c.hpp"
-#include "engine.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
 #include "little_endian.hpp"
+#include "schema_blob.hpp"
 #include "symcr/symcr.hpp"
 
 namespace file_tests {

@@ -7,6 +7,9 @@
 
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
+#include "parsed_schema.hpp"
+#include "restore_payload.hpp"
+#include "schema_blob.hpp"
 
 namespace engine_tests {
 namespace {

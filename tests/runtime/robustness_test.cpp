@@ -7,6 +7,7 @@
 
 #include "engine_test_util.hpp"
 #include "handwritten_schemas.hpp"
+#include "visit.hpp"
 
 namespace engine_tests {
 namespace {

@@ -4,8 +4,9 @@
 #include <cstring>
 #include <vector>
 
-#include "engine.hpp"
 #include "handwritten_schemas.hpp"
+#include "parsed_schema.hpp"
+#include "schema_blob.hpp"
 #include "schema_facts.hpp"
 
 namespace engine_tests {

@@ -14,11 +14,11 @@
 #include <vector>
 
 #include "crc32c.hpp"
-#include "engine.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
 #include "little_endian.hpp"
 #include "plan.hpp"
+#include "schema_blob.hpp"
 #include "store_fixture.hpp"
 #include "symcr/device.hpp"
 #include "symcr/symcr.hpp"

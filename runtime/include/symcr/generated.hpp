@@ -14,7 +14,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "symcr/symcr.hpp"  // symcr_program_schema(), which the generated code defines
+// symcr_program_schema(), which the generated code defines, and what C code shares
+#include "symcr/generated.h"
 
 namespace symcr {
 
@@ -128,13 +129,9 @@ struct FieldInfo {
 
 // Per-kind operations: the only code the runtime cannot derive from offsets. Implemented as
 // templates in <symcr/ops.hpp>; the generator instantiates them per type.
-struct Lifecycle {                    // for types that are heap-allocated or staged
-  void* (*create)();                  // new T() (value-initialised)
-  void (*destroy)(void* object);      // delete static_cast<T*>(object)
-  // kTypeDynamicType: what the vtable pointer of an object whose dynamic type is T holds (the
-  // address point of T's vtable, Itanium C++ ABI); else nullptr.
-  const void* vtable;
-};
+// For types that are heap-allocated or staged: create, destroy, vtable. One type with the
+// generated code of C sources, which defines lifecycles too (<symcr/generated.h>).
+typedef ::symcr_lifecycle Lifecycle;
 
 struct StringOps {
   std::size_t (*size)(const void* s);                    // in characters

@@ -33,11 +33,7 @@ struct Schema;  // <symcr/generated.hpp>
 class OldValues;
 namespace detail {
 struct WireSizes;
-// Restore's (and the tests') way to make a view: of a value of `writer.types[type]` whose
-// payload encoding starts at `bytes`, with at most `size` bytes readable. `writer` must be a
-// parsed (validated) schema and `sizes` its wire sizes.
-OldValues old_values_view(const Schema& writer, const WireSizes& sizes, std::uint32_t type,
-                          const std::uint8_t* bytes, std::size_t size);
+struct OldValuesAccess;  // how restore makes a view
 }  // namespace detail
 
 class OldValues {
@@ -76,8 +72,7 @@ class OldValues {
     const std::uint8_t* bytes;
     std::size_t size;
   };
-  friend OldValues detail::old_values_view(const Schema&, const detail::WireSizes&, std::uint32_t,
-                                           const std::uint8_t*, std::size_t);
+  friend struct detail::OldValuesAccess;
   OldValues(const Schema& writer, const detail::WireSizes& sizes, std::uint32_t type,
             const std::uint8_t* bytes, std::size_t size);
   bool locate(const char* field, Span& out) const;

@@ -17,15 +17,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "symcr/generated.h" /* symcr_schema, symcr_program_schema() */
+
 #ifdef __cplusplus
-namespace symcr {
-struct Schema;
-}
-/* In C++ the schema handle is symcr::Schema itself: no casts between the two APIs. */
-typedef symcr::Schema symcr_schema;
 extern "C" {
-#else
-typedef struct symcr_schema symcr_schema;
 #endif
 
 /* Error codes: the values of symcr::Error. */
@@ -63,9 +58,6 @@ enum {
 const char* symcr_error_name(int error);
 /* The message of this thread's last failed call ("" if none failed yet). */
 const char* symcr_last_error(void);
-
-/* The program's generated schema (weak: NULL when no generated code is linked in). */
-const symcr_schema* symcr_program_schema(void) __attribute__((weak));
 
 /* Authenticated checkpoints (symcr::set_checkpoint_keys): keys[0] signs every checkpoint this
  * process writes; a restore refuses (SYMCR_ERROR_UNAUTHENTICATED) one without a MAC, with a key

@@ -15,6 +15,10 @@
 #include <string>
 #include <vector>
 
+// symcr::Schema (the tables describing a program's checkpointed state, which programs only
+// pass around) and symcr_program_schema(), the program's, which the argument-less
+// checkpoint()/restore() use.
+#include "symcr/generated.h"
 #include "symcr/old_values.hpp"
 
 // ---------------------------------------------------------------------------------------------
@@ -49,17 +53,6 @@
 #define SYMCR_TIME(...)
 #define SYMCR_CLOCK(...)
 #endif
-
-namespace symcr {
-// The tables describing a program's checkpointed state, emitted by symcr-gen
-// (<symcr/generated.hpp>; programs only pass them around).
-struct Schema;
-}  // namespace symcr
-
-// The program's schema, defined by the code symcr-gen emits for a target. The argument-less
-// checkpoint()/restore() use it; it is weak so that a program without generated code links and
-// gets a clear "no schema" error instead.
-extern "C" const symcr::Schema* symcr_program_schema(void) __attribute__((weak));
 
 namespace symcr {
 
@@ -179,9 +172,6 @@ class Report {
 
  private:
   friend struct detail::ReportAccess;  // the runtime and symcr's tools fill reports
-  void add(std::string path, Decision decision, std::string detail, bool lossy);
-  void remove(Decision decision);
-  void set_source(std::shared_ptr<const detail::ReportSource> source);
 
   Status status_;
   std::vector<ReportEntry> entries_;
@@ -354,11 +344,7 @@ class Store {
   void close();
 
  private:
-  struct Impl;
-  static Status open_impl(const char* path, const Schema& schema, const StoreOptions& options,
-                          bool writable, Store& out);
-  static Status open_descriptor(const char* path, const Schema& schema, const StoreOptions& options,
-                                bool writable, Store& out);
+  struct Impl;  // and how a store is opened
   int fd_ = -1;
   const Schema* schema_ = nullptr;
   StoreOptions options_;

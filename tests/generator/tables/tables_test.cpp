@@ -9,8 +9,8 @@
 #include <gtest/gtest.h>
 #include <symcr/ops.hpp>
 
-#include "engine.hpp"
 #include "roots.hpp"
+#include "schema_blob.hpp"
 #include "schema_facts.hpp"
 
 // offsetof on these non-standard-layout types is conditionally supported; g++ supports it.
