@@ -69,11 +69,11 @@ void Restorer::decide_clock_deltas(const ClockReadings& readings) {
   }
 }
 
-void Restorer::rebase(std::uint8_t* dst, const TypeInfo& type) const {
-  if (mode_ != Mode::Apply || !rebasing_) return;
+void Restorer::rebase(std::uint8_t* dst, const TypeInfo& type, const FieldTime& time) const {
+  if (!rebasing_) return;
   if (type.kind != Kind::Int && type.kind != Kind::UInt) return;
-  device::detail::rebase_time(dst, type.size, time_->never,
-                              static_cast<std::uint64_t>(clock_deltas_[time_->clock->index]));
+  device::detail::rebase_time(dst, type.size, time.never,
+                              static_cast<std::uint64_t>(clock_deltas_[time.clock->index]));
 }
 
 }  // namespace restoring

@@ -5,7 +5,7 @@
 //   Pass 2 (Apply) runs only when pass 1 succeeded (and, in strict mode, found nothing lossy):
 //   it decodes again, writing into live objects, materialises heap objects, and fixes up
 //   pointer slots last.
-// Both passes walk the payload identically, so per-value facts that pass 1 decides
+// Both passes are one traversal (restore_traversal.hpp), so per-value facts that pass 1 decides
 // (validator verdicts, pointer decisions, container counts) are looked up by their ordinal in
 // stream order in pass 2.
 #include <algorithm>
@@ -23,7 +23,7 @@
 #include "parsed_schema.hpp"
 #include "report_access.hpp"
 #include "restore_payload.hpp"
-#include "restorer.hpp"
+#include "restore_traversal.hpp"
 #include "schema_facts.hpp"
 #include "scratch.hpp"
 #include "symcr/device.hpp"
@@ -43,22 +43,13 @@ thread_local std::size_t last_restore_scratch = 0;
 
 namespace restoring {
 
-void Restorer::begin_pass(Mode mode) {
-  mode_ = mode;
-  in_.start(payload_, size_);
-  container_ordinal_ = 0;
-  slot_ordinal_ = 0;
-  verdict_cursor_ = 0;
-  part_cursor_ = 0;
-  frames_.clear();
-}
-
 Status Restorer::check() {
-  begin_pass(Mode::Check);
-  heap_counter_ = static_cast<std::uint32_t>(plan_.counter_paths.size());
+  CheckPass pass(*this);
+  Traversal<CheckPass> walk(*this, pass);
+  PayloadReader& in = walk.reader();
   ClockReadings readings;
-  if (!decode_objects() || !decode_references() || !in_.clock_readings(readings) ||
-      !in_.finish() || !check_slots()) {
+  if (!walk.objects() || !decode_references(in) || !in.clock_readings(readings) ||
+      !in.finish() || !check_slots()) {
     return error_;
   }
   decide_clock_deltas(readings);
@@ -134,9 +125,10 @@ RestoreTablesLease::~RestoreTablesLease() {
 }
 
 void Restorer::apply() {
-  begin_pass(Mode::Apply);
   create_heap_objects();
-  decode_objects();  // cannot fail: pass 1 checked the same bytes along the same plan
+  ApplyPass pass(*this, report_);
+  // Cannot fail: pass 1 checked the same bytes along the same plan.
+  Traversal<ApplyPass>(*this, pass).objects();
   fix_up_slots();
   for (std::size_t h = 0; h < holders_.size(); ++h) {
     if (!holders_[h]) continue;

@@ -13,15 +13,15 @@
 
 #include "report_access.hpp"
 #include "planner.hpp"
-#include "restorer.hpp"
+#include "restore_traversal.hpp"
 #include "schema_facts.hpp"
 
 namespace symcr::detail::restoring {
 
 // ---- references ----------------------------------------------------------------------
-bool Restorer::decode_references() {
+bool Restorer::decode_references(PayloadReader& in) {
   std::uint32_t count = 0;
-  if (!in_.reference_count(count)) return false;
+  if (!in.reference_count(count)) return false;
   refs_.resize(count);
   const std::uint32_t object_count = writer_.root_count + static_cast<std::uint32_t>(heap_.size());
   auto object_type = [&](std::uint32_t a, std::uint32_t& type) {
@@ -38,7 +38,7 @@ bool Restorer::decode_references() {
   for (std::uint32_t i = 0; i < count; ++i) {
     RefRecord& ref = refs_[i];
     ref.steps_at = static_cast<std::uint32_t>(steps_.size());
-    if (!in_.reference(i, ref, object_type, element_type, on_step)) return false;
+    if (!in.reference(i, ref, object_type, element_type, on_step)) return false;
   }
   return true;
 }
@@ -349,6 +349,7 @@ void Restorer::decide_slots() {
     std::string detail;
   };
   std::vector<Pending> pending;
+  std::size_t outside_count = 0;
   for (std::size_t ordinal = 0; ordinal < slots_.size(); ++ordinal) {
     SlotRecord& slot = slots_[ordinal];
     if (!slot.node) continue;
@@ -363,7 +364,7 @@ void Restorer::decide_slots() {
       slot.outcome = SlotOutcome::Null;
     } else if (slot.code == kOutsideCode) {
       slot.outcome = SlotOutcome::Outside;
-      if (++outside_count_ <= kMaxConcretePerField) {
+      if (++outside_count <= kMaxConcretePerField) {
         pending.push_back({static_cast<std::uint32_t>(ordinal), Decision::Kept,
                            "pointed outside the checkpointed state: kept this build's value"});
       }
@@ -381,17 +382,16 @@ void Restorer::decide_slots() {
   }
   if (!pending.empty()) {
     for (const Pending& entry : pending) explained_[entry.ordinal];
-    begin_pass(Mode::Explain);
-    decode_objects();  // cannot fail: the same bytes decoded in pass 1
-    mode_ = Mode::Check;
+    ExplainPass pass(explained_);
+    Traversal<ExplainPass>(*this, pass).objects();  // cannot fail: pass 1 decoded the same bytes
     for (Pending& entry : pending) {
       ReportAccess::add(report_, explained_[entry.ordinal], entry.decision, std::move(entry.detail),
                         entry.decision == Decision::Rejected);
     }
   }
-  if (outside_count_ > kMaxConcretePerField) {
+  if (outside_count > kMaxConcretePerField) {
     ReportAccess::add(report_, "pointers", Decision::Kept,
-                      "and " + std::to_string(outside_count_ - kMaxConcretePerField) +
+                      "and " + std::to_string(outside_count - kMaxConcretePerField) +
                           " more pointed outside the checkpointed state",
                       false);
   }

@@ -1,5 +1,5 @@
-// Restore: values, decoded along the plan (restorer.hpp). Both passes run this code; pass 1
-// records what pass 2 looks up by ordinal.
+// Restore: values, decoded along the plan: the one traversal every pass runs
+// (restore_traversal.hpp). Pass 1 records what the later passes look up by ordinal.
 #include <algorithm>
 #include <cinttypes>
 #include <cmath>
@@ -14,7 +14,7 @@
 #include "old_values_view.hpp"
 #include "payload_error.hpp"
 #include "report_access.hpp"
-#include "restorer.hpp"
+#include "restore_traversal.hpp"
 #include "unicode.hpp"
 
 namespace symcr::detail::restoring {
@@ -26,41 +26,6 @@ const Status& Restorer::corrupt(const char* format, ...) {
   set_corrupt_payload(error_, format, args);
   va_end(args);
   return error_;
-}
-
-// A value-level rejection: the reader keeps its value. Concrete paths are capped per field.
-void Restorer::reject_value(std::uint32_t counter, const char* format, ...) {
-  va_list args;
-  va_start(args, format);
-  report_value(migrating_, counter, format, args);
-  va_end(args);
-}
-
-void Restorer::refuse_value(std::uint32_t counter, const char* format, ...) {
-  va_list args;
-  va_start(args, format);
-  report_value(nullptr, counter, format, args);
-  va_end(args);
-}
-
-void Restorer::report_value(const PlanNode* hook, std::uint32_t counter, const char* format,
-                            va_list args) {
-  if (mode_ != Mode::Check) return;
-  ++(hook ? values_handed_ : value_rejections_);
-  if (++entry_count(hook ? handed_counts_ : rejection_counts_, counter) > kMaxConcretePerField) {
-    return;
-  }
-  char buffer[240];
-  std::vsnprintf(buffer, sizeof buffer, format, args);
-  if (hook) {
-    ReportAccess::add(report_, render_path(frames_.data(), frames_.size()), Decision::Converted,
-                      std::string(buffer) + "; the old value goes to symcr_migrate(" +
-                          reader_.types[hook->reader].name + ")",
-                      false);
-    return;
-  }
-  ReportAccess::add(report_, render_path(frames_.data(), frames_.size()), Decision::Rejected,
-                    buffer, true);
 }
 
 void Restorer::summarise_rejections() {
@@ -88,8 +53,130 @@ std::string Restorer::counter_path(std::uint32_t counter) const {
   return path.scope ? std::string(path.scope) + "::" + path.name : std::string(path.name);
 }
 
+// ---- the passes' points -------------------------------------------------------------------
+bool CheckPass::heap_object(std::uint32_t h, std::uint32_t type, std::uint8_t owner,
+                            std::uint8_t*& dst) {
+  if (!r_.plan_.heap_nodes[type]) {
+    return r_.corrupt("heap object %u of type %s, which no pointer points to", h,
+                      r_.writer_.types[type].name)
+        .ok();
+  }
+  r_.heap_.push_back(HeapRecord{type, owner, r_.plan_.heap_nodes[type], false});
+  heap_refusals_ = refusals;
+  dst = nullptr;
+  return true;
+}
+
+bool CheckPass::container(const PlanNode* n, std::uint32_t count, std::uint32_t,
+                          std::uint32_t object, std::vector<void*>*&) {
+  if (n->action == Action::Container && !r_.allocation_justified(count, n->reader)) {
+    return r_.corrupt("container of %u elements would need %" PRIu64
+                      " bytes in this build, more than the checkpoint can justify",
+                      count,
+                      std::uint64_t{count} *
+                          r_.reader_.types[r_.reader_.types[n->reader].element].size)
+        .ok();
+  }
+  r_.containers_.push_back(ContainerRecord{count, n->element, object});
+  return true;
+}
+
+void CheckPass::pointer(const PlanNode* n, bool shared, std::uint32_t code, std::uint8_t* dst,
+                        std::uint32_t, std::uint32_t counter, std::uint32_t object,
+                        const std::vector<PathFrame>&) {
+  const bool to_reader = n->action == Action::Pointer || n->action == Action::SharedPtr;
+  SlotRecord record{};
+  record.code = code;
+  record.pointer_type = n->writer;
+  record.node = to_reader ? n : nullptr;
+  record.shared = shared;
+  if (to_reader && dst && !shared) std::memcpy(&record.live, dst, sizeof(void*));
+  record.counter = counter;
+  record.object = object;
+  record.outcome = SlotOutcome::Skip;
+  r_.slots_.push_back(record);
+}
+
+// Concrete paths are capped per field.
+void CheckPass::report_value(const PlanNode* hook, std::uint32_t counter,
+                             const std::vector<PathFrame>& frames, const char* format,
+                             va_list args) {
+  ++(hook ? r_.values_handed_ : r_.value_rejections_);
+  if (++r_.entry_count(hook ? r_.handed_counts_ : r_.rejection_counts_, counter) >
+      kMaxConcretePerField) {
+    return;
+  }
+  char buffer[240];
+  std::vsnprintf(buffer, sizeof buffer, format, args);
+  if (hook) {
+    ReportAccess::add(r_.report_, render_path(frames.data(), frames.size()), Decision::Converted,
+                      std::string(buffer) + "; the old value goes to symcr_migrate(" +
+                          r_.reader_.types[hook->reader].name + ")",
+                      false);
+    return;
+  }
+  ReportAccess::add(r_.report_, render_path(frames.data(), frames.size()), Decision::Rejected,
+                    buffer, true);
+}
+
+void ApplyPass::duplicate_key(const std::vector<PathFrame>& frames) {
+  ReportAccess::add(report_, render_path(frames.data(), frames.size()), Decision::Rejected,
+                    "duplicate key: element not inserted", true);
+}
+
+// ---- the traversal ----------------------------------------------------------------------
+template <typename Pass>
+Traversal<Pass>::Traversal(Restorer& restorer, Pass& pass)
+    : restorer_(restorer),
+      pass_(pass),
+      plan_(restorer.plan_),
+      writer_(restorer.writer_),
+      reader_(restorer.reader_),
+      in_(restorer.writer_, restorer.plan_.wire_sizes, restorer.error_),
+      frames_(restorer.frames_) {
+  in_.start(restorer.payload_, restorer.size_);
+  frames_.clear();
+}
+
+template <typename Pass>
+template <typename Outer>
+Traversal<Pass>::Traversal(const Traversal<Outer>& outer, Pass& pass, const std::uint8_t* start,
+                           const Cursors& at)
+    : restorer_(outer.restorer_),
+      pass_(pass),
+      plan_(outer.plan_),
+      writer_(outer.writer_),
+      reader_(outer.reader_),
+      in_(outer.in_),
+      cursors_(at),
+      frames_(outer.frames_),
+      depth_(outer.depth_),
+      counter_(outer.counter_),
+      object_(outer.object_),
+      migrating_(outer.migrating_),
+      time_(outer.time_) {
+  in_.seek(start);
+}
+
+template <typename Pass>
+void Traversal<Pass>::reject_value(std::uint32_t counter, const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  pass_.report_value(migrating_, counter, frames_, format, args);
+  va_end(args);
+}
+
+template <typename Pass>
+void Traversal<Pass>::refuse_value(std::uint32_t counter, const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  pass_.report_value(nullptr, counter, frames_, format, args);
+  va_end(args);
+}
+
 // ---- objects: roots then heap objects ------------------------------------------------
-bool Restorer::decode_objects() {
+template <typename Pass>
+bool Traversal<Pass>::objects() {
   for (std::uint32_t wr = 0; wr < writer_.root_count; ++wr) {
     const RootPlan& root = plan_.roots[wr];
     std::uint8_t* dst = root.reader_root == kNoType
@@ -97,46 +184,38 @@ bool Restorer::decode_objects() {
                             : static_cast<std::uint8_t*>(reader_.roots[root.reader_root].address);
     frames_.push_back({PathFrame::Kind::Name, writer_.roots[wr].name, 0});
     counter_ = root.counter;
-    current_object_ = wr;
+    object_ = wr;
     if (!object(root.node, dst)) return false;
     frames_.pop_back();
   }
   std::uint32_t heap_count = 0;
   if (!in_.heap_count(heap_count)) return false;
-  if (mode_ == Mode::Check) heap_.reserve(heap_count);
+  if (Pass::kJudges) restorer_.heap_.reserve(heap_count);
   for (std::uint32_t h = 0; h < heap_count; ++h) {
     std::uint32_t type = 0;
     std::uint8_t owner = 0;
-    if (!in_.heap_object(h, type, owner)) return false;
-    if (mode_ == Mode::Check) {
-      if (!plan_.heap_nodes[type]) {
-        return corrupt("heap object %u of type %s, which no pointer points to", h,
-                       writer_.types[type].name)
-            .ok();
-      }
-      heap_.push_back(HeapRecord{type, owner, plan_.heap_nodes[type], false});
-    }
+    std::uint8_t* dst = nullptr;
+    if (!in_.heap_object(h, type, owner) || !pass_.heap_object(h, type, owner, dst)) return false;
     frames_.push_back({PathFrame::Kind::Heap, writer_.types[type].name, h});
-    counter_ = heap_counter_;
-    current_object_ = writer_.root_count + h;
-    std::uint8_t* dst = mode_ == Mode::Apply ? static_cast<std::uint8_t*>(heap_live_[h]) : nullptr;
-    const std::uint32_t refusals = refusals_;
-    if (!object(heap_[h].node, dst)) return false;
-    // Created, it would hold value-initialised stand-ins where its refused values were.
-    if (mode_ == Mode::Check && refusals_ != refusals) heap_[h].refused = true;
+    counter_ = restorer_.heap_counter();
+    object_ = writer_.root_count + h;
+    if (!object(restorer_.heap_[h].node, dst)) return false;
+    pass_.heap_object_decoded(h);
     frames_.pop_back();
   }
   return true;
 }
 
 // ---- values --------------------------------------------------------------------------
-bool Restorer::value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
+template <typename Pass>
+bool Traversal<Pass>::value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
   return runs_validator(n) ? validated_value(n, dst, field) : plain_value(n, dst, field);
 }
 
 // Containers and unique_ptrs nest without a bound in the schema: each element or pointee is
 // charged against the nesting limit, as the save side charges it.
-bool Restorer::nested(const PlanNode* n, std::uint8_t* dst) {
+template <typename Pass>
+bool Traversal<Pass>::nested(const PlanNode* n, std::uint8_t* dst) {
   const int outer = depth_;
   depth_ = in_.element_depth(outer, n->writer);
   const bool ok = in_.nest(depth_) && value(n, dst, nullptr);
@@ -144,27 +223,37 @@ bool Restorer::nested(const PlanNode* n, std::uint8_t* dst) {
   return ok;
 }
 
-bool Restorer::object(const PlanNode* n, std::uint8_t* dst) {
+template <typename Pass>
+bool Traversal<Pass>::object(const PlanNode* n, std::uint8_t* dst) {
   depth_ = in_.object_depth(n->writer);
   const bool ok = in_.nest(depth_) && value(n, dst, nullptr);
   depth_ = 0;
   return ok;
 }
 
-bool Restorer::validated_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
-  if (mode_ != Mode::Check) {
-    const bool passed = verdicts_[verdict_cursor_++] != 0;
+template <typename Pass>
+bool Traversal<Pass>::validated_value(const PlanNode* n, std::uint8_t* dst,
+                                      const FieldPlan* field) {
+  if constexpr (Pass::kJudges) {
+    const std::size_t verdict = restorer_.verdicts_.size();
+    restorer_.verdicts_.push_back(1);
+    ++cursors_.verdict;
+    return judge(n, dst, field, verdict);
+  } else {
+    const bool passed = restorer_.verdicts_[cursors_.verdict++] != 0;
     return plain_value(n, passed ? dst : nullptr, field);
   }
-  const std::size_t verdict = verdicts_.size();
-  verdicts_.push_back(1);
-  const std::size_t part_mark = part_verdicts_.size();
+}
+
+// Decodes the value (recording what is in it), then decodes the same bytes again into a
+// staged copy for symcr_validate to judge.
+template <typename Pass>
+bool Traversal<Pass>::judge(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field,
+                            std::size_t verdict) {
   const std::uint8_t* start = in_.position();
-  const std::size_t first_slot = slots_.size();
-  const std::uint32_t container_mark = container_ordinal_;
-  const std::uint32_t slot_mark = slot_ordinal_;
+  const Cursors at = cursors_;
+  const std::size_t first_slot = restorer_.slots_.size();
   if (!plain_value(n, dst, field)) return false;
-  const std::uint8_t* end = in_.position();
 
   const TypeInfo& type = reader_.types[n->reader];
   bool passed = false;
@@ -184,61 +273,65 @@ bool Restorer::validated_value(const PlanNode* n, std::uint8_t* dst, const Field
     why = "has a symcr_validate but no lifecycle to check a staged copy";
   }
   if (staged) {
-    // Decode the same bytes again into the staged copy, replaying the counters.
-    const std::uint32_t after_containers = container_ordinal_, after_slots = slot_ordinal_;
-    const std::size_t after_cursor = verdict_cursor_, after_parts = part_cursor_;
-    in_.seek(start);
-    mode_ = Mode::Stage;
-    container_ordinal_ = container_mark;
-    slot_ordinal_ = slot_mark;
-    verdict_cursor_ = verdict + 1;
-    part_cursor_ = part_mark;
-    const bool decoded = plain_value(n, static_cast<std::uint8_t*>(staged), field);
-    mode_ = Mode::Check;
-    in_.seek(end);
-    container_ordinal_ = after_containers;
-    slot_ordinal_ = after_slots;
-    verdict_cursor_ = after_cursor;
-    part_cursor_ = after_parts;
+    StagePass stage;
+    const bool decoded = Traversal<StagePass>(*this, stage, start, at)
+                             .plain_value(n, static_cast<std::uint8_t*>(staged), field);
     passed = decoded && type.validate(staged);
     if (type.lifecycle) type.lifecycle->destroy(staged);
   }
-  verdicts_[verdict] = passed ? 1 : 0;
+  restorer_.verdicts_[verdict] = passed ? 1 : 0;
   if (!passed) {
-    ++refusals_;
-    for (std::size_t s = first_slot; s < slots_.size(); ++s) slots_[s].node = nullptr;
+    ++pass_.refusals;
+    for (std::size_t s = first_slot; s < restorer_.slots_.size(); ++s) {
+      restorer_.slots_[s].node = nullptr;
+    }
     refuse_value(field ? field->counter : counter_, "%s %s", type.name, why);
   }
   return true;
 }
 
-bool Restorer::begin_part(const PlanNode* part, PartMark& mark) {
+template <typename Pass>
+bool Traversal<Pass>::begin_part(const PlanNode* part, PartMark& mark) {
   if (!part->holds_validated) return false;
-  if (mode_ != Mode::Check) return part_verdicts_[part_cursor_++] == 0;
-  mark.judged = true;
-  mark.verdict = part_verdicts_.size();
-  part_verdicts_.push_back(1);
-  mark.own_verdict = verdicts_.size();
-  mark.refusals = refusals_;
-  mark.first_slot = slots_.size();
-  return false;
-}
-
-void Restorer::end_part(const PlanNode* part, const PartMark& mark, bool element) {
-  if (!mark.judged || mode_ != Mode::Check || refusals_ == mark.refusals) return;
-  part_verdicts_[mark.verdict] = 0;
-  // Its pointers are not restored: the part is not written.
-  for (std::size_t s = mark.first_slot; s < slots_.size(); ++s) slots_[s].node = nullptr;
-  if (!element) return;
-  refusals_ = mark.refusals;
-  // An element refused as a whole already has its validator's entry at this path.
-  const bool own = runs_validator(part) && verdicts_[mark.own_verdict] == 0;
-  if (!own) {
-    refuse_value(counter_, "left out of its container: a value in it failed its symcr_validate");
+  if constexpr (Pass::kJudges) {
+    mark.judged = true;
+    mark.verdict = restorer_.part_verdicts_.size();
+    restorer_.part_verdicts_.push_back(1);
+    ++cursors_.part;
+    mark.own_verdict = restorer_.verdicts_.size();
+    mark.refusals = pass_.refusals;
+    mark.first_slot = restorer_.slots_.size();
+    return false;
+  } else {
+    return restorer_.part_verdicts_[cursors_.part++] == 0;
   }
 }
 
-bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
+template <typename Pass>
+void Traversal<Pass>::end_part(const PlanNode* part, const PartMark& mark, bool element) {
+  if constexpr (Pass::kJudges) {
+    if (!mark.judged || pass_.refusals == mark.refusals) return;
+    restorer_.part_verdicts_[mark.verdict] = 0;
+    // Its pointers are not restored: the part is not written.
+    for (std::size_t s = mark.first_slot; s < restorer_.slots_.size(); ++s) {
+      restorer_.slots_[s].node = nullptr;
+    }
+    if (!element) return;
+    pass_.refusals = mark.refusals;
+    // An element refused as a whole already has its validator's entry at this path.
+    const bool own = runs_validator(part) && restorer_.verdicts_[mark.own_verdict] == 0;
+    if (!own) {
+      refuse_value(counter_, "left out of its container: a value in it failed its symcr_validate");
+    }
+  } else {
+    (void)part;
+    (void)mark;
+    (void)element;
+  }
+}
+
+template <typename Pass>
+bool Traversal<Pass>::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field) {
   if (n->action == Action::Reject) return value(n->skip, nullptr, nullptr);
   if (n->copy_only && !time_ && !(field && (field->bit_width || field->has_range)) &&
       copy(n, dst)) {
@@ -276,7 +369,7 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       // The migration hook, once the mechanical rules wrote the object and everything in it
       // (so nested objects' hooks ran first). Also on a validator's staged copy, so that
       // symcr_validate judges the migrated value. Pointers are fixed up after all objects.
-      if (n->migrate && dst && writing()) {
+      if (n->migrate && dst && Pass::kWrites) {
         n->migrate(dst, old_values_view(writer_, plan_.wire_sizes, n->writer, start,
                                         static_cast<std::size_t>(in_.position() - start)));
       }
@@ -285,7 +378,7 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
     case Kind::Union: {
       const std::uint8_t* bytes = nullptr;
       if (!in_.scalar(wt, bytes)) return false;
-      if (n->action == Action::Union && dst && writing()) std::memcpy(dst, bytes, wt.size);
+      if (n->action == Action::Union && dst && Pass::kWrites) std::memcpy(dst, bytes, wt.size);
       return true;
     }
     case Kind::Array:
@@ -301,7 +394,7 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       const auto* ops =
           to_reader ? static_cast<const OptionalOps*>(reader_.types[n->reader].ops) : nullptr;
       if (!engaged) {
-        if (to_reader && writing()) ops->reset(dst);
+        if (to_reader && Pass::kWrites) ops->reset(dst);
         return true;
       }
       PartMark mark;
@@ -309,7 +402,7 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       std::uint8_t* inner = nullptr;
       if (to_reader && !refused) {
         inner = static_cast<std::uint8_t*>(const_cast<void*>(ops->get(dst)));
-        if (!inner && writing()) inner = static_cast<std::uint8_t*>(ops->emplace(dst));
+        if (!inner && Pass::kWrites) inner = static_cast<std::uint8_t*>(ops->emplace(dst));
       }
       if (!value(n->element, inner, nullptr)) return false;
       end_part(n->element, mark, false);
@@ -322,7 +415,7 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       const auto* ops =
           to_reader ? static_cast<const UniquePtrOps*>(reader_.types[n->reader].ops) : nullptr;
       if (!present) {
-        if (to_reader && writing()) ops->reset(dst);
+        if (to_reader && Pass::kWrites) ops->reset(dst);
         return true;
       }
       PartMark mark;
@@ -331,7 +424,7 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
       if (to_reader && !refused) {
         // An object the new build already owns is filled in place (its address may be known).
         inner = static_cast<std::uint8_t*>(const_cast<void*>(ops->get(dst)));
-        if (!inner && writing()) inner = static_cast<std::uint8_t*>(ops->make(dst));
+        if (!inner && Pass::kWrites) inner = static_cast<std::uint8_t*>(ops->make(dst));
       }
       if (!nested(n->element, inner)) return false;
       end_part(n->element, mark, false);
@@ -356,7 +449,7 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
         const auto* ops = static_cast<const VariantOps*>(reader_.types[n->reader].ops);
         if (ops->index(dst) == reader_index) {
           inner = static_cast<std::uint8_t*>(const_cast<void*>(ops->get(dst)));
-        } else if (writing()) {
+        } else if (Pass::kWrites) {
           inner = static_cast<std::uint8_t*>(ops->emplace(dst, reader_index));
         }
       }
@@ -368,12 +461,13 @@ bool Restorer::plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan
     case Kind::SharedPtr:
       return pointer(n, wt, dst);
   }
-  return corrupt("unknown kind").ok();
+  return restorer_.corrupt("unknown kind").ok();
 }
 
 // Fields [first, end) of struct `n` one by one, each under its name in path frame `frame`.
-bool Restorer::fields(const PlanNode* n, std::uint32_t first, std::uint32_t end,
-                      std::uint8_t* dst, std::size_t frame) {
+template <typename Pass>
+bool Traversal<Pass>::fields(const PlanNode* n, std::uint32_t first, std::uint32_t end,
+                             std::uint8_t* dst, std::size_t frame) {
   for (std::uint32_t f = first; f < end; ++f) {
     const FieldPlan& child = n->fields[f];
     frames_[frame].name = child.name;
@@ -391,22 +485,24 @@ bool Restorer::fields(const PlanNode* n, std::uint32_t first, std::uint32_t end,
 // A copy-only value in one step: check it (pass 1), copy it (writing passes). False,
 // consuming nothing, when the bytes are short or a bool or bit-field value is invalid: the
 // general path then finds and reports the same error at its place.
-bool Restorer::copy(const PlanNode* n, std::uint8_t* dst) {
+template <typename Pass>
+bool Traversal<Pass>::copy(const PlanNode* n, std::uint8_t* dst) {
   if (in_.remaining() < n->copy_wire) return false;
   const std::uint8_t* base = in_.position();
   // A value the first pass sent to the general path (a rejected bit-field value) must take it
   // in the second too: checked again unless every copy of the first pass was valid.
-  if ((mode_ != Mode::Apply || copy_refused_) && !copy_only_valid(*n, base)) {
-    copy_refused_ = true;
+  if (pass_.checks_copies() && !copy_only_valid(*n, base)) {
+    restorer_.copy_refused_ = true;
     return false;
   }
-  if (dst && writing()) copy_only_write(*n, base, dst);
+  if (dst && Pass::kWrites) copy_only_write(*n, base, dst);
   in_.seek(base + n->copy_wire);
   return true;
 }
 
-bool Restorer::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst,
-                      const FieldPlan* field) {
+template <typename Pass>
+bool Traversal<Pass>::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst,
+                             const FieldPlan* field) {
   const std::uint8_t* bytes = nullptr;
   if (!in_.scalar(wt, bytes)) return false;
   if (n->action != Action::Scalar) return true;
@@ -414,9 +510,9 @@ bool Restorer::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst,
   const bool ranged = field && field->has_range;
   const TypeInfo& rt = reader_.types[n->reader];
   if (n->identical && !bit_field && !ranged) {
-    if (dst && writing()) {
+    if (dst && Pass::kWrites) {
       std::memcpy(dst, bytes, wt.kind == Kind::Float && wt.size == 16 ? 10 : wt.size);
-      if (time_) rebase(dst, rt);
+      if (time_) pass_.rebase(dst, rt, *time_);
     }
     return true;
   }
@@ -470,18 +566,19 @@ bool Restorer::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst,
       return true;
     }
   }
-  if (dst && writing()) {
+  if (dst && Pass::kWrites) {
     if (bit_field) {
       store_bits(dst, field->bit_offset, field->bit_width, out);
     } else {
       store_number(reader_, rt, out, dst);
-      if (time_) rebase(dst, rt);
+      if (time_) pass_.rebase(dst, rt, *time_);
     }
   }
   return true;
 }
 
-bool Restorer::array(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
+template <typename Pass>
+bool Traversal<Pass>::array(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
   const bool to_reader = n->action == Action::Array;
   const TypeInfo& we = writer_.types[wt.element];
   const PlanNode* e = n->element;
@@ -491,7 +588,7 @@ bool Restorer::array(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
     const std::uint8_t* bytes = nullptr;
     if (!in_.scalar_run(we, wt.count, bytes)) return false;
     const std::uint64_t common = wt.count < n->reader_count ? wt.count : n->reader_count;
-    if (dst && writing()) std::memcpy(dst, bytes, common * we.size);
+    if (dst && Pass::kWrites) std::memcpy(dst, bytes, common * we.size);
     return true;
   }
   // Elements that encode to nothing would let a few bytes of schema drive billions of
@@ -509,7 +606,8 @@ bool Restorer::array(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
   return true;
 }
 
-bool Restorer::string(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
+template <typename Pass>
+bool Traversal<Pass>::string(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
   std::uint32_t length = 0;
   const std::uint8_t* bytes = nullptr;
   if (!in_.string(wt, bytes, length)) return false;
@@ -523,51 +621,41 @@ bool Restorer::string(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) 
     // Another character width: re-encoded (UTF-8/16/32), both passes alike; a string not
     // valid in its encoding is rejected and keeps this build's value.
     char why[160];
-    if (!transcode_string(bytes, length, width, reader_width, string_scratch_, reader_length, why,
-                          sizeof why)) {
+    if (!transcode_string(bytes, length, width, reader_width, restorer_.string_scratch_,
+                          reader_length, why, sizeof why)) {
       reject_value(counter_, "%s", why);
       return true;
     }
-    chars = string_scratch_.data();
+    chars = restorer_.string_scratch_.data();
   } else if (reinterpret_cast<std::uintptr_t>(bytes) % width != 0) {
-    string_scratch_.assign(bytes, bytes + std::size_t{length} * width);
-    chars = string_scratch_.data();
+    restorer_.string_scratch_.assign(bytes, bytes + std::size_t{length} * width);
+    chars = restorer_.string_scratch_.data();
   }
-  if (!dst || !writing()) return true;
+  if (!dst || !Pass::kWrites) return true;
   static_cast<const StringOps*>(rt.ops)->assign(dst, chars, reader_length);
   return true;
 }
 
-bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
+template <typename Pass>
+bool Traversal<Pass>::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
   std::uint32_t count = 0;
   if (!in_.container(wt, count)) return false;
-  const std::uint32_t ordinal = container_ordinal_++;
+  const std::uint32_t ordinal = cursors_.container++;
   const bool to_reader = n->action == Action::Container;
   const PlanNode* e = n->element;
-  if (to_reader && mode_ == Mode::Check && !allocation_justified(count, n->reader)) {
-    return corrupt("container of %u elements would need %" PRIu64
-                   " bytes in this build, more than the checkpoint can justify",
-                   count,
-                   std::uint64_t{count} * reader_.types[reader_.types[n->reader].element].size)
-        .ok();
-  }
-  if (mode_ == Mode::Check) containers_.push_back(ContainerRecord{count, e, current_object_});
-  std::vector<void*>* addresses = nullptr;
-  if (mode_ == Mode::Apply && ordinal < element_slots_.size() &&
-      element_slots_[ordinal] != kNoType) {
-    addresses = &element_addresses_[element_slots_[ordinal]];
-  }
+  std::vector<void*>* addresses = nullptr;  // where pass 2 lists the elements' addresses
+  if (!pass_.container(n, count, ordinal, object_, addresses)) return false;
   // Identical fixed-width scalars (not bool: its bytes need checking) need no per-element
   // decoding: one bounds check, and into a contiguous reader container one copy.
   const TypeInfo& we = writer_.types[wt.element];
   const bool packed = e->action == Action::Scalar && e->identical && !e->validated &&
                       we.kind != Kind::Bool && !(we.kind == Kind::Float && we.size == 16) &&
                       count > 0 && in_.element_depth(depth_, wt.element) <= kMaxValueNesting;
-  if (packed && (!to_reader || !dst || !writing())) {
+  if (packed && (!to_reader || !dst || !Pass::kWrites)) {
     const std::uint8_t* bytes = nullptr;
     return in_.scalar_run(we, count, bytes);
   }
-  if (!to_reader || !dst || !writing()) {
+  if (!to_reader || !dst || !Pass::kWrites) {
     for (std::uint32_t i = 0; i < count; ++i) {
       frames_.push_back({PathFrame::Kind::Index, nullptr, i});
       PartMark mark;
@@ -619,7 +707,7 @@ bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* ds
     alignas(16) std::uint64_t scalar_buffer[2] = {0, 0};  // a scalar element without a lifecycle
     auto* staged = lifecycle ? static_cast<std::uint8_t*>(lifecycle->create())
                              : reinterpret_cast<std::uint8_t*>(scalar_buffer);
-    const std::size_t first_slot = applied_slots_.size();
+    const std::size_t first_slot = restorer_.applied_slots_.size();
     PartMark mark;
     const bool refused = begin_part(e, mark);
     if (!nested(e, staged)) {
@@ -631,20 +719,17 @@ bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* ds
       // Slots in the staged element's own bytes moved with it; slots in storage it owns
       // (a vector's buffer, a unique_ptr's pointee) were moved by pointer and stay put.
       const std::size_t element_size = reader_.types[rt.element].size;
-      for (std::size_t s = first_slot; s < applied_slots_.size(); ++s) {
-        std::uint8_t* at = applied_slots_[s].address;
+      for (std::size_t s = first_slot; s < restorer_.applied_slots_.size(); ++s) {
+        std::uint8_t* at = restorer_.applied_slots_[s].address;
         if (at >= staged && at < staged + element_size) {
-          applied_slots_[s].address = inserted + (at - staged);
+          restorer_.applied_slots_[s].address = inserted + (at - staged);
         }
       }
     } else if (refused) {
-      applied_slots_.resize(first_slot);
+      restorer_.applied_slots_.resize(first_slot);
     } else {
-      applied_slots_.resize(first_slot);
-      if (mode_ == Mode::Apply) {
-        ReportAccess::add(report_, render_path(frames_.data(), frames_.size()), Decision::Rejected,
-                          "duplicate key: element not inserted", true);
-      }
+      restorer_.applied_slots_.resize(first_slot);
+      pass_.duplicate_key(frames_);
     }
     if (addresses) addresses->push_back(inserted);
     if (lifecycle) lifecycle->destroy(staged);
@@ -653,30 +738,21 @@ bool Restorer::container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* ds
   return true;
 }
 
-bool Restorer::pointer(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
+template <typename Pass>
+bool Traversal<Pass>::pointer(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst) {
   std::uint32_t code = 0;
   if (!in_.pointer(wt, code)) return false;
-  const bool shared = wt.kind == Kind::SharedPtr;
-  const std::uint32_t ordinal = slot_ordinal_++;
-  const bool to_reader = n->action == Action::Pointer || n->action == Action::SharedPtr;
-  if (mode_ == Mode::Check) {
-    SlotRecord record{};
-    record.code = code;
-    record.pointer_type = n->writer;
-    record.node = to_reader ? n : nullptr;
-    record.shared = shared;
-    if (to_reader && dst && !shared) std::memcpy(&record.live, dst, sizeof(void*));
-    record.counter = counter_;
-    record.object = current_object_;
-    record.outcome = SlotOutcome::Skip;
-    slots_.push_back(record);
-  } else if (mode_ == Mode::Apply && to_reader && dst) {
-    applied_slots_.push_back(AppliedSlot{ordinal, dst});
-  } else if (mode_ == Mode::Explain) {
-    auto wanted = explained_.find(ordinal);
-    if (wanted != explained_.end()) wanted->second = render_path(frames_.data(), frames_.size());
-  }
+  pass_.pointer(n, wt.kind == Kind::SharedPtr, code, dst, cursors_.slot++, counter_, object_,
+                frames_);
   return true;
 }
+
+// The passes' walks (restorer.hpp runs them), and pass 1's staged decoding.
+template Traversal<CheckPass>::Traversal(Restorer&, CheckPass&);
+template Traversal<ApplyPass>::Traversal(Restorer&, ApplyPass&);
+template Traversal<ExplainPass>::Traversal(Restorer&, ExplainPass&);
+template bool Traversal<CheckPass>::objects();
+template bool Traversal<ApplyPass>::objects();
+template bool Traversal<ExplainPass>::objects();
 
 }  // namespace symcr::detail::restoring

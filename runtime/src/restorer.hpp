@@ -1,7 +1,9 @@
-// Restore's decoder (restore.cpp): the Restorer's state and the records pass 1 keeps for
-// pass 2. Internal to the runtime. Its work is split by job:
+// Restore's decoder (restore.cpp): the Restorer, which runs the passes over one payload and
+// keeps the records pass 1 makes for the later passes. Internal to the runtime. Its work is
+// split by job:
 //   restore.cpp             the two passes and the entry points, and the copy-only fast path
-//   restore_values.cpp      values along the plan (hot: kept in one file for inlining)
+//   restore_traversal.hpp   the one traversal of values along the plan, and its passes
+//   restore_values.cpp      that traversal's code (hot: kept in one file for inlining)
 //   restore_references.cpp  the reference table, pointer decisions, heap objects, fix-ups
 #ifndef SYMCR_SRC_RESTORER_HPP
 #define SYMCR_SRC_RESTORER_HPP
@@ -113,13 +115,6 @@ inline void copy_only_write(const PlanNode& n, const std::uint8_t* wire, std::ui
   }
 }
 
-enum class Mode : std::uint8_t {
-  Check,    // pass 1: read and record, never write
-  Stage,    // pass 1, inside a validated value: write into a staged copy, record nothing
-  Apply,    // pass 2: write into live objects, record slot and element addresses
-  Explain,  // between the passes, only if needed: render the paths of reported pointers
-};
-
 constexpr std::uint32_t kMaxConcretePerField = 100;
 
 enum class SlotOutcome : std::uint8_t { Skip, Null, Outside, Target, Rejected };
@@ -216,6 +211,13 @@ class RestoreTablesLease {
   bool kept_;  // the thread's set, handed back at the end
 };
 
+template <typename Pass>
+class Traversal;
+class CheckPass;
+class StagePass;
+class ApplyPass;
+class ExplainPass;
+
 class Restorer {
  public:
   // `dry_run`: a plan of a build known only by its schema (no code): types it can create are
@@ -225,7 +227,6 @@ class Restorer {
       : plan_(plan),
         writer_(*plan.writer),
         reader_(*plan.reader),
-        in_(*plan.writer, plan.wire_sizes, error_),
         payload_(payload),
         size_(size),
         report_(report),
@@ -262,6 +263,11 @@ class Restorer {
   void apply();
 
  private:
+  template <typename>
+  friend class Traversal;
+  friend class CheckPass;
+  friend class ApplyPass;
+
   // ---- errors and report ---------------------------------------------------------------
   __attribute__((format(printf, 2, 3))) const Status& corrupt(const char* format, ...);
 
@@ -275,84 +281,13 @@ class Restorer {
     return counts[counter];
   }
 
-  // A value-level rejection: the reader keeps its value. Concrete paths are capped per field.
-  // Inside an object whose migration hook runs, the value is the hook's to handle (it reads
-  // the old value by name): reported Converted, not lossy, and not counted as a rejection.
-  __attribute__((format(printf, 3, 4), noinline)) void reject_value(std::uint32_t counter,
-                                                                    const char* format, ...);
-  // A value a validator refused: rejected even inside a migrated object (its hook ran).
-  __attribute__((format(printf, 3, 4), noinline)) void refuse_value(std::uint32_t counter,
-                                                                    const char* format, ...);
-  // `hook`: the migrated object the value is handed to, or null for a rejection.
-  __attribute__((format(printf, 4, 0))) void report_value(const PlanNode* hook,
-                                                          std::uint32_t counter,
-                                                          const char* format, va_list args);
-
   void summarise_rejections();
 
   std::string counter_path(std::uint32_t counter) const;
 
-  bool writing() const { return mode_ == Mode::Stage || mode_ == Mode::Apply; }
-
-  // ---- objects: roots then heap objects ------------------------------------------------
-  // Starts a pass over the payload from its first byte: the reader, the container and slot
-  // ordinals, the verdict cursor and the path, as every pass walks them alike.
-  void begin_pass(Mode mode);
-  bool decode_objects();
-
-  // ---- values --------------------------------------------------------------------------
-  bool value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);
-
-  // A root's or heap object's value, and a container's element or unique_ptr's pointee: each
-  // charged against the nesting limit (payload_grammar.hpp), as the save side charges it.
-  bool object(const PlanNode* n, std::uint8_t* dst);
-  bool nested(const PlanNode* n, std::uint8_t* dst);
-
-  bool validated_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);
-
-  bool plain_value(const PlanNode* n, std::uint8_t* dst, const FieldPlan* field);
-
-  // Fields [first, end) of struct `n` at `dst`, one by one (path frame `frame` names each).
-  bool fields(const PlanNode* n, std::uint32_t first, std::uint32_t end, std::uint8_t* dst,
-              std::size_t frame);
-
-  // A copy-only value in one step: check it (pass 1), copy it (writing passes). False,
-  // consuming nothing, when the bytes are short or a bool or bit-field value is invalid: the
-  // general path then finds and reports the same error at its place.
-  __attribute__((noinline)) bool copy(const PlanNode* n, std::uint8_t* dst);
-
-  __attribute__((noinline)) bool scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst,
-                                        const FieldPlan* field);
-
-  bool array(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
-
-  __attribute__((noinline)) bool string(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
-
-  bool container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
-
-  // ---- parts judged whole (docs/resolution.md, Validators) ---------------------------------
-  // A container element, or the value an optional, unique_ptr or variant holds, in which a
-  // validator refused a value is never inserted, emplaced or made with a value-initialised
-  // stand-in: the element is left out of its container, the holder keeps this build's value.
-  // Pass 1 reserves one verdict per such part before decoding it (stream order, like the
-  // validators' verdicts) and settles it after; the later passes read it before the part.
-  struct PartMark {
-    bool judged = false;
-    std::size_t verdict = 0;      // index in part_verdicts_
-    std::size_t own_verdict = 0;  // index in verdicts_ of the part's own validator, if any
-    std::uint32_t refusals = 0;   // refusals_ before the part
-    std::size_t first_slot = 0;   // slots_ before the part
-  };
-  // Before a part: whether pass 1 refused it (false in pass 1 itself).
-  bool begin_part(const PlanNode* part, PartMark& mark);
-  // After a part, in pass 1: its verdict. A container element takes in its parts' refusals
-  // (the container holds what passed); a holder passes them on to what holds it.
-  void end_part(const PlanNode* part, const PartMark& mark, bool element);
-
-  // A value checked by its type's symcr_validate. A plan for a build known only by its schema
-  // file (the CLI's) marks validated types whose code it does not have: restored unchecked.
-  bool runs_validator(const PlanNode* n) const {
-    return n->validated && reader_.types[n->reader].validate != nullptr;
+  // The counter of every heap object's values: past the plan's counters.
+  std::uint32_t heap_counter() const {
+    return static_cast<std::uint32_t>(plan_.counter_paths.size());
   }
 
   // A hostile (or merely old) checkpoint must not make restore allocate more than its own size
@@ -367,10 +302,8 @@ class Restorer {
     return needed <= kAlwaysAllowed || needed / kBytesPerPayloadByte <= size_;
   }
 
-  __attribute__((noinline)) bool pointer(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
-
   // ---- references ----------------------------------------------------------------------
-  bool decode_references();
+  bool decode_references(PayloadReader& in);
 
   bool check_slots();
 
@@ -392,7 +325,7 @@ class Restorer {
                     std::uint16_t from);
 
   // Decides every pointer slot; the concrete paths of the few reported ones are rendered by a
-  // third walk rather than remembered for every pointer of a large graph.
+  // third walk (ExplainPass) rather than remembered for every pointer of a large graph.
   void decide_slots();
 
   // ---- pass 2 --------------------------------------------------------------------------
@@ -406,46 +339,31 @@ class Restorer {
   // After pass 1 read the payload's clock readings: how far each reader clock moves its times
   // (rebasing_ when the checkpoint is another process's), and the report's lines for them.
   void decide_clock_deltas(const ClockReadings& readings);
-  // A time of `time_`'s clock just written at `dst` as reader type `type`: moved by the clock's
-  // delta in the write pass, in the integer's own wrapping arithmetic.
-  void rebase(std::uint8_t* dst, const TypeInfo& type) const;
+  // A time of `time`'s clock just written at `dst` as reader type `type`, in the write pass:
+  // moved by the clock's delta, in the integer's own wrapping arithmetic.
+  void rebase(std::uint8_t* dst, const TypeInfo& type, const FieldTime& time) const;
 
   const Plan& plan_;
   const Schema& writer_;
   const Schema& reader_;
   Status error_;
-  PayloadReader in_;
   const std::uint8_t* payload_;
   std::size_t size_;
   Report& report_;
   const bool dry_run_;
   RestoreTablesLease lease_;
 
-  Mode mode_ = Mode::Check;
-  int depth_ = 0;
-  std::vector<PathFrame>& frames_;
-  std::uint32_t counter_ = 0;
-  std::uint32_t heap_counter_ = 0;
-  std::uint32_t current_object_ = 0;
+  std::vector<PathFrame>& frames_;  // every traversal's path, one at a time
   std::vector<std::uint32_t>& rejection_counts_;  // per counter, sized by entry_count
-  // A copy of a copy-only value failed its checks (copy): the second pass checks again.
+  // A copy of a copy-only value failed its checks (Traversal::copy): pass 2 checks again.
   bool copy_refused_ = false;
   std::size_t value_rejections_ = 0;
-  // The innermost object being decoded whose migration hook runs (not across pointers: a
-  // pointee is an object of its own), or null.
-  const PlanNode* migrating_ = nullptr;
   std::vector<std::uint32_t>& handed_counts_;  // per field, as rejection_counts_
   std::size_t values_handed_ = 0;
-  std::size_t outside_count_ = 0;
 
-  std::uint32_t container_ordinal_ = 0;
-  std::uint32_t slot_ordinal_ = 0;
+  // ---- pass 1's records, looked up by the later passes at their cursors (Cursors) -----------
   std::vector<std::uint8_t>& verdicts_;
-  std::size_t verdict_cursor_ = 0;
-  std::vector<std::uint8_t>& part_verdicts_;  // begin_part / end_part
-  std::size_t part_cursor_ = 0;
-  std::uint32_t refusals_ = 0;  // pass 1: values refused by validators, not yet taken in
-
+  std::vector<std::uint8_t>& part_verdicts_;  // Traversal::begin_part / end_part
   std::vector<SlotRecord>& slots_;
   std::unordered_map<std::uint32_t, std::string> explained_;  // slot ordinal -> path
   std::vector<ContainerRecord>& containers_;
@@ -465,7 +383,6 @@ class Restorer {
   std::size_t element_lists_ = 0;
   std::vector<std::uint8_t>& string_scratch_;
 
-  const FieldTime* time_ = nullptr;  // the reader field being decoded is a time of this clock
   bool rebasing_ = false;
   std::vector<std::int64_t>& clock_deltas_;  // per reader clock
 };
