@@ -83,10 +83,12 @@ struct PayloadCrc {
   bool known = false;
   std::uint32_t value = 0;
 };
-// Same, appending at out.size() (so a caller can reserve room for a header first); sets
-// `payload_crc` if given.
-Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out,
-                      PayloadCrc* payload_crc = nullptr);
+// Same, written at offset `at` of `out` (at most out.size(): a header may come first); `out`
+// then ends with the payload. The bytes `out` held past `at` are overwritten, not kept: a
+// buffer reused for periodic checkpoints has its large values copied over them in one pass
+// with their checksum, not appended behind a zero-fill. Sets `payload_crc` if given.
+Status encode_payload_at(const Schema& schema, std::vector<std::uint8_t>& out, std::size_t at,
+                         PayloadCrc* payload_crc = nullptr);
 
 // Restores a payload written with `writer` into the live roots of `reader`: resolves (plans are
 // cached per writer-hash/reader pair), decodes and checks everything, and only then writes.
