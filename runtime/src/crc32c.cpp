@@ -161,7 +161,8 @@ __attribute__((target("sse4.2"))) inline std::uint64_t load_word(const std::uint
 }
 
 // `c` is the raw register (not inverted); processes 3 * block bytes of `p`, copying them to `d`
-// when kCopy (each word stored as it was loaded and checksummed).
+// when kCopy (each word stored as it was loaded and checksummed). No __restrict: with it GCC
+// splits the loop back into a copy followed by a checksum of the copy.
 template <bool kCopy>
 __attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c,
                                                              std::uint8_t* d,

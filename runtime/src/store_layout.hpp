@@ -57,9 +57,8 @@ Status decode_store_header(const std::uint8_t* data, std::size_t size, const cha
 // times all the rest of opening a store. Like the Store that holds it, not for concurrent use.
 class LazySchemaDigest {
  public:
-  // The digest of `bytes` (`size` of them): the same bytes at every call until forget().
+  // The digest of `bytes` (`size` of them): the same bytes at every call.
   const std::uint8_t* of(const std::uint8_t* bytes, std::size_t size) const;
-  void forget() { known_ = false; }
 
  private:
   mutable bool known_ = false;
