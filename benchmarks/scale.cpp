@@ -91,10 +91,21 @@ PodWorld& pod_world(std::size_t bytes) {
   return *world;
 }
 
-// 1 KB .. 256 MB: x16 steps, then 256 MB.
+// 1 KB .. 256 MB: x16 steps, then 256 MB. With SYMCR_BENCH_ITERATIONS=N in the environment
+// each runs exactly N times, so that counters of the whole process (`perf stat`) taken at two
+// values of N give the cost of one operation, setup cancelled.
 void pod_sizes(benchmark::internal::Benchmark* b) {
   for (std::int64_t bytes = 1 << 10; bytes <= (std::int64_t{1} << 26); bytes *= 16) b->Arg(bytes);
   b->Arg(std::int64_t{1} << 28);
+  const char* fixed = std::getenv("SYMCR_BENCH_ITERATIONS");
+  if (fixed == nullptr || *fixed == '\0') return;
+  char* end = nullptr;
+  const long long iterations = std::strtoll(fixed, &end, 10);
+  if (*end != '\0' || iterations <= 0) {
+    std::fprintf(stderr, "SYMCR_BENCH_ITERATIONS: not a positive number: %s\n", fixed);
+    std::exit(2);
+  }
+  b->Iterations(static_cast<benchmark::IterationCount>(iterations));
 }
 
 void BM_PodMemcpy(benchmark::State& state) {

@@ -1,5 +1,6 @@
 #include "authentication.hpp"
 
+#include <atomic>
 #include <cstring>
 #include <mutex>
 
@@ -63,12 +64,19 @@ KeySnapshot current_keys() {
   return keys_in_force();
 }
 
+namespace {
+std::atomic<std::uint64_t> schema_digests{0};
+}  // namespace
+
 void schema_digest(const std::uint8_t* schema, std::size_t size,
                    std::uint8_t (&digest)[kSha256Size]) {
+  schema_digests.fetch_add(1, std::memory_order_relaxed);
   Sha256 sha;
   sha.update(schema, size);
   sha.finish(digest);
 }
+
+std::uint64_t schema_digest_count() { return schema_digests.load(std::memory_order_relaxed); }
 
 void sign_record(const KeyRing& keys, std::uint8_t* record, std::size_t size,
                  const RecordBinding& binding) {

@@ -50,6 +50,9 @@ struct RecordBinding {
 };
 void schema_digest(const std::uint8_t* schema, std::size_t size,
                    std::uint8_t (&digest)[kSha256Size]);
+// How many schema_digest() calls this process made. Hashing a schema costs several times the
+// rest of opening a store, so only keys make a store compute one (the tests check this).
+std::uint64_t schema_digest_count();
 
 // Writes the MAC of the complete record at `record` (its header laid out for authentication
 // with `keys.signing()`'s id, the checksum not yet written) into the header.

@@ -160,52 +160,86 @@ __attribute__((target("sse4.2"))) inline std::uint64_t load_word(const std::uint
   return word;
 }
 
-// `c` is the raw register (not inverted); processes 3 * block bytes.
-__attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c, const std::uint8_t* p,
+// `c` is the raw register (not inverted); processes 3 * block bytes of `p`, copying them to `d`
+// when kCopy (each word stored as it was loaded and checksummed). No __restrict: with it GCC
+// splits the loop back into a copy followed by a checksum of the copy.
+template <bool kCopy>
+__attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c,
+                                                             std::uint8_t* d,
+                                                             const std::uint8_t* p,
                                                              std::size_t block,
                                                              const ShiftTable& t) {
   std::uint64_t c0 = c, c1 = 0, c2 = 0;
   const std::uint8_t* const end = p + block;
   // Unrolled: the loop's own increment, compare and branch were a third of its instructions.
 #pragma GCC unroll 4
-  for (; p < end; p += 8) {
-    c0 = _mm_crc32_u64(c0, load_word(p));
-    c1 = _mm_crc32_u64(c1, load_word(p + block));
-    c2 = _mm_crc32_u64(c2, load_word(p + 2 * block));
+  for (; p < end; p += 8, d += kCopy ? 8 : 0) {
+    const std::uint64_t w0 = load_word(p), w1 = load_word(p + block),
+                        w2 = load_word(p + 2 * block);
+    if (kCopy) {
+      std::memcpy(d, &w0, 8);
+      std::memcpy(d + block, &w1, 8);
+      std::memcpy(d + 2 * block, &w2, 8);
+    }
+    c0 = _mm_crc32_u64(c0, w0);
+    c1 = _mm_crc32_u64(c1, w1);
+    c2 = _mm_crc32_u64(c2, w2);
   }
   std::uint32_t crc = shift(t, static_cast<std::uint32_t>(c0)) ^ static_cast<std::uint32_t>(c1);
   return shift(t, crc) ^ static_cast<std::uint32_t>(c2);
 }
 
-}  // namespace
-
-__attribute__((target("sse4.2"))) std::uint32_t crc32c_extend_hardware(std::uint32_t crc,
-                                                                       const void* data,
-                                                                       std::size_t size) {
-  const auto* p = static_cast<const std::uint8_t*>(data);
+// crc32c_extend_hardware, and with kCopy crc32c_copy_hardware: the bytes of `p` copied to `d`.
+template <bool kCopy>
+__attribute__((target("sse4.2"))) std::uint32_t extend_hardware(std::uint32_t crc,
+                                                                std::uint8_t* d,
+                                                                const std::uint8_t* p,
+                                                                std::size_t size) {
   std::uint32_t c = ~crc;
   if (size >= 3 * kShortBlock) {
-    while (size >= 3 * kLongBlock) {
-      c = three_chains(c, p, kLongBlock, kLongBlockShift);
+    while (!kCopy && size >= 3 * kLongBlock) {
+      c = three_chains<kCopy>(c, d, p, kLongBlock, kLongBlockShift);
       p += 3 * kLongBlock;
+      d += kCopy ? 3 * kLongBlock : 0;
       size -= 3 * kLongBlock;
     }
     while (size >= 3 * kShortBlock) {
-      c = three_chains(c, p, kShortBlock, kShortBlockShift);
+      c = three_chains<kCopy>(c, d, p, kShortBlock, kShortBlockShift);
       p += 3 * kShortBlock;
+      d += kCopy ? 3 * kShortBlock : 0;
       size -= 3 * kShortBlock;
     }
   }
   std::uint64_t c64 = c;
 #pragma GCC unroll 4
   while (size >= 8) {
-    c64 = _mm_crc32_u64(c64, load_word(p));
+    const std::uint64_t word = load_word(p);
+    if (kCopy) {
+      std::memcpy(d, &word, 8);
+      d += 8;
+    }
+    c64 = _mm_crc32_u64(c64, word);
     p += 8;
     size -= 8;
   }
   auto c32 = static_cast<std::uint32_t>(c64);
-  while (size-- > 0) c32 = _mm_crc32_u8(c32, *p++);
+  while (size-- > 0) {
+    if (kCopy) *d++ = *p;
+    c32 = _mm_crc32_u8(c32, *p++);
+  }
   return ~c32;
+}
+
+}  // namespace
+
+std::uint32_t crc32c_extend_hardware(std::uint32_t crc, const void* data, std::size_t size) {
+  return extend_hardware<false>(crc, nullptr, static_cast<const std::uint8_t*>(data), size);
+}
+
+std::uint32_t crc32c_copy_hardware(std::uint32_t crc, void* destination, const void* source,
+                                   std::size_t size) {
+  return extend_hardware<true>(crc, static_cast<std::uint8_t*>(destination),
+                               static_cast<const std::uint8_t*>(source), size);
 }
 
 #else
@@ -214,6 +248,12 @@ bool crc32c_hardware_available() { return false; }
 
 std::uint32_t crc32c_extend_hardware(std::uint32_t crc, const void* data, std::size_t size) {
   return crc32c_extend_portable(crc, data, size);
+}
+
+std::uint32_t crc32c_copy_hardware(std::uint32_t crc, void* destination, const void* source,
+                                   std::size_t size) {
+  std::memcpy(destination, source, size);
+  return crc32c_extend_portable(crc, destination, size);
 }
 
 #endif
@@ -245,6 +285,13 @@ std::uint32_t crc32c_extend(std::uint32_t crc, const void* data, std::size_t siz
   static const Implementation implementation =
       crc32c_hardware_available() ? &crc32c_extend_hardware : &crc32c_extend_portable;
   return implementation(crc, data, size);
+}
+
+std::uint32_t crc32c_copy(std::uint32_t crc, void* destination, const void* source,
+                          std::size_t size) {
+  if (crc32c_hardware_available()) return crc32c_copy_hardware(crc, destination, source, size);
+  std::memcpy(destination, source, size);  // the table-driven checksum is far slower than memory
+  return crc32c_extend_portable(crc, destination, size);
 }
 
 }  // namespace symcr::detail

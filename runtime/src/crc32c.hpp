@@ -14,6 +14,13 @@ inline std::uint32_t crc32c(const void* data, std::size_t size) {
   return crc32c_extend(0, data, size);
 }
 
+// Copies `size` bytes from `source` to `destination` (not overlapping) and extends `crc` by
+// them, in one pass: each word is checksummed as it goes from one to the other, so the bytes
+// are read once (a copy and then a checksum of data larger than the cache read them twice from
+// memory) and the checksum is of exactly the bytes written, whatever writes `source` meanwhile.
+std::uint32_t crc32c_copy(std::uint32_t crc, void* destination, const void* source,
+                          std::size_t size);
+
 // crc32c(a+b) from crc32c(a), crc32c(b) and b's length: a few dozen 32x32 GF(2) matrix
 // squarings (tens of thousands of instructions), worth it only to avoid a pass over megabytes.
 std::uint32_t crc32c_combine(std::uint32_t crc_a, std::uint32_t crc_b, std::uint64_t length_b);
@@ -23,6 +30,8 @@ std::uint32_t crc32c_extend_portable(std::uint32_t crc, const void* data, std::s
 bool crc32c_hardware_available();
 // Only when crc32c_hardware_available().
 std::uint32_t crc32c_extend_hardware(std::uint32_t crc, const void* data, std::size_t size);
+std::uint32_t crc32c_copy_hardware(std::uint32_t crc, void* destination, const void* source,
+                                   std::size_t size);
 
 }  // namespace symcr::detail
 

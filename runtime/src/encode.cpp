@@ -317,10 +317,14 @@ class Encoder {
   }
   void put_bytes(const void* data, std::size_t n) {
     if (n >= kBulk) {
-      out_.resize(pos_);  // drops the slack: trivially, nothing is freed
       const auto* bytes = static_cast<const std::uint8_t*>(data);
       if (n >= kFuseMin && fused_valid_) return put_fused(bytes, n);
-      out_.insert(out_.end(), bytes, bytes + n);
+      if (out_.size() - pos_ >= n) {
+        std::memcpy(out_.data() + pos_, bytes, n);  // over an earlier record's bytes
+      } else {
+        out_.resize(pos_);  // drops the slack: trivially, nothing is freed
+        out_.insert(out_.end(), bytes, bytes + n);
+      }
       pos_ += n;
       return;
     }
@@ -355,19 +359,28 @@ class Encoder {
   }
 
   // ---- the payload's CRC-32C, fused with large copies ----------------------------------
-  // A copy of kFuseMin bytes or more is checksummed chunk by chunk, each chunk right after it
-  // was copied (still in cache), together with the bytes written before it; the record's CRC
-  // then combines the payload's (encode_record_as) instead of reading the payload once more.
+  // A copy of kFuseMin bytes or more is checksummed as it is made, together with the bytes
+  // written before it; the record's CRC then combines the payload's (encode_record_as) instead
+  // of reading the payload once more. Where the buffer already holds bytes (an earlier record
+  // in the same buffer: periodic checkpoints), they are overwritten by one pass that loads,
+  // checksums and stores each word (crc32c_copy). A buffer that must grow is appended to chunk
+  // by chunk (std::vector cannot grow without writing its new bytes), each chunk checksummed
+  // right after it was copied, while still in cache.
   static constexpr std::size_t kFuseMin = std::size_t{1} << 20;
   static constexpr std::size_t kFuseChunk = 64 * 1024;
   void put_fused(const std::uint8_t* bytes, std::size_t n) {
-    if (out_.capacity() < pos_ + n + kSlack) out_.reserve(pos_ + n + kSlack);  // one growth
     fused_crc_ = crc32c_extend(fused_crc_, out_.data() + fused_to_, pos_ - fused_to_);
-    for (std::size_t done = 0; done < n;) {
-      const std::size_t length = n - done < kFuseChunk ? n - done : kFuseChunk;
-      out_.insert(out_.end(), bytes + done, bytes + done + length);
-      fused_crc_ = crc32c_extend(fused_crc_, out_.data() + pos_ + done, length);
-      done += length;
+    if (out_.size() - pos_ >= n) {
+      fused_crc_ = crc32c_copy(fused_crc_, out_.data() + pos_, bytes, n);
+    } else {
+      out_.resize(pos_);
+      if (out_.capacity() < pos_ + n + kSlack) out_.reserve(pos_ + n + kSlack);  // one growth
+      for (std::size_t done = 0; done < n;) {
+        const std::size_t length = n - done < kFuseChunk ? n - done : kFuseChunk;
+        out_.insert(out_.end(), bytes + done, bytes + done + length);
+        fused_crc_ = crc32c_extend(fused_crc_, out_.data() + pos_ + done, length);
+        done += length;
+      }
     }
     pos_ += n;
     fused_to_ = pos_;
@@ -1131,7 +1144,7 @@ class Encoder {
 
  public:
   std::size_t start_ = 0;
-  const ClockReadings* given_readings_ = nullptr;  // append_payload's, or null: read them now
+  const ClockReadings* given_readings_ = nullptr;  // encode_payload_at's, or null: read them now
 
  private:
   const Schema& schema_;
@@ -1177,13 +1190,13 @@ std::size_t encode_scratch_bytes() {
          capacity_bytes(s.enclosures);
 }
 
-Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out,
-                      PayloadCrc* payload_crc, const ClockReadings* clock_readings) {
+Status encode_payload_at(const Schema& schema, std::vector<std::uint8_t>& out, std::size_t at,
+                         PayloadCrc* payload_crc, const ClockReadings* clock_readings) {
   const SchemaCacheEntry& cached = schema_cache_entry(schema);
   EncodeScratch& scratch = thread_encode_scratch();
-  const std::size_t start = out.size();
+  if (out.size() < at) out.resize(at);
   Encoder encoder(schema, out, scratch, cached.facts());
-  encoder.start_ = start;
+  encoder.start_ = at;
   if (clock_readings != nullptr && clock_readings->count != cached.facts().clocks.size()) {
     return Status(Error::Unsupported, "%u clock readings given for a schema of %zu clocks",
                   clock_readings->count, cached.facts().clocks.size());
@@ -1197,8 +1210,7 @@ Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out,
 }
 
 Status encode_payload(const Schema& schema, std::vector<std::uint8_t>& out) {
-  out.clear();
-  return append_payload(schema, out);
+  return encode_payload_at(schema, out, 0);
 }
 
 }  // namespace symcr::detail

@@ -21,13 +21,16 @@ struct PayloadCrc {
   bool known = false;
   std::uint32_t value = 0;
 };
-// Same, appending at out.size() (so a caller can reserve room for a header first); sets
-// `payload_crc` if given. `clock_readings`, if given, ends the payload instead of this process's
-// epoch and its clocks' readings now (one per schema_clocks(schema), by index).
+// Same, written at offset `at` of `out` (at most out.size(): a header may come first); `out`
+// then ends with the payload. The bytes `out` held past `at` are overwritten, not kept: a
+// buffer reused for periodic checkpoints has its large values copied over them in one pass
+// with their checksum, not appended behind a zero-fill. Sets `payload_crc` if given.
+// `clock_readings`, if given, ends the payload instead of this process's epoch and its clocks'
+// readings now (one per schema_clocks(schema), by index).
 struct ClockReadings;
-Status append_payload(const Schema& schema, std::vector<std::uint8_t>& out,
-                      PayloadCrc* payload_crc = nullptr,
-                      const ClockReadings* clock_readings = nullptr);
+Status encode_payload_at(const Schema& schema, std::vector<std::uint8_t>& out, std::size_t at,
+                         PayloadCrc* payload_crc = nullptr,
+                         const ClockReadings* clock_readings = nullptr);
 
 }  // namespace symcr::detail
 

@@ -86,8 +86,6 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   const bool authenticated = signing->keys != nullptr;
   const std::uint16_t header_size =
       authenticated ? kRecordAuthenticatedHeaderSize : kRecordHeaderSize;
-  out.clear();
-  out.resize(header_size);
   std::size_t schema_size = 0;
   if (inline_schema) {
     schema_size = blob.size;
@@ -95,10 +93,15 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
       return Status(Error::TooLarge, "schema of %zu bytes exceeds the format's 4 GiB limit",
                     schema_size);
     }
-    out.insert(out.end(), blob.data, blob.data + blob.size);
   }
+  // Written over what `out` holds (the previous record, when checkpoints reuse a buffer),
+  // never cleared first: the payload's large values are then copied straight over it.
+  if (out.size() < header_size + schema_size) out.resize(header_size + schema_size);
+  std::memset(out.data(), 0, header_size);
+  if (schema_size != 0) std::memcpy(out.data() + header_size, blob.data, schema_size);
   PayloadCrc payload_crc;
-  Status status = append_payload(schema, out, &payload_crc, clock_readings);
+  Status status =
+      encode_payload_at(schema, out, header_size + schema_size, &payload_crc, clock_readings);
   if (!status.ok()) return status;
   const std::size_t payload_size = out.size() - header_size - schema_size;
   if (payload_size > UINT32_MAX) {

@@ -137,7 +137,8 @@ struct Store::Impl {
   const detail::KeyRing* scanned_with = nullptr;
   const detail::KeyRing* journal_read_with = nullptr;
   std::uint8_t store_id[detail::kStoreIdSize] = {};
-  std::uint8_t own_digest[detail::kSha256Size] = {};
+  const detail::SchemaBlob* own_blob = nullptr;  // this build's schema, serialised
+  detail::LazySchemaDigest own_blob_digest;
   FreshnessCounter* counter = nullptr;
   std::unique_ptr<detail::FileFreshnessCounter> own_counter;
   std::uint64_t counter_value = 0;  // the counter as last read or advanced
@@ -431,7 +432,7 @@ struct Store::Impl {
       detail::RecordBinding binding;
       std::memcpy(binding.store_id, store_id, sizeof store_id);
       binding.location = slots[i].offset;
-      std::memcpy(binding.schema_digest, areas[read.area].digest, sizeof binding.schema_digest);
+      std::memcpy(binding.schema_digest, areas[read.area].digest(), sizeof binding.schema_digest);
       const Status authenticated =
           detail::check_authentication(keys.get(), slot_bytes.data(), view, binding);
       if (!authenticated.ok()) {
@@ -533,7 +534,6 @@ struct Store::Impl {
     areas[target].valid = true;
     areas[target].hash = blob.hash;
     areas[target].size = static_cast<std::uint32_t>(blob.size);
-    std::memcpy(areas[target].digest, own_digest, sizeof own_digest);
     own_area = target;
     return Status();
   }
@@ -587,7 +587,8 @@ struct Store::Impl {
   detail::RecordSigning signing_for(std::uint64_t offset, detail::RecordBinding& binding) const {
     std::memcpy(binding.store_id, store_id, sizeof store_id);
     binding.location = offset;
-    std::memcpy(binding.schema_digest, own_digest, sizeof own_digest);
+    std::memcpy(binding.schema_digest, own_blob_digest.of(own_blob->data, own_blob->size),
+                sizeof binding.schema_digest);
     detail::RecordSigning signing;
     signing.keys = keys.get();
     signing.binding = &binding;
@@ -670,7 +671,7 @@ struct Store::Impl {
         detail::RecordBinding binding;
         std::memcpy(binding.store_id, store_id, sizeof store_id);
         binding.location = target.slot_offset(carried);
-        std::memcpy(binding.schema_digest, areas[reread.area].digest,
+        std::memcpy(binding.schema_digest, areas[reread.area].digest(),
                     sizeof binding.schema_digest);
         detail::RecordSigning signing;
         signing.keys = keys.get();
@@ -971,7 +972,7 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
   bool id_whole = false;
   const bool id_missing = !detail::read_store_id(header, got, impl.store_id, &id_whole);
   if (id_missing && can_write) detail::new_store_id(impl.store_id);
-  detail::schema_digest(blob.data, blob.size, impl.own_digest);
+  impl.own_blob = &blob;
   impl.take_keys();
   if (options.freshness_counter != nullptr) {
     impl.counter = options.freshness_counter;

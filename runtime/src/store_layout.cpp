@@ -133,8 +133,25 @@ Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint
   area.valid = true;
   area.hash = hash;
   area.size = size;
-  schema_digest(bytes.data(), size, area.digest);
   return Status();
+}
+
+const std::uint8_t* LazySchemaDigest::of(const std::uint8_t* bytes, std::size_t size) const {
+  if (!known_) {
+    schema_digest(bytes, size, digest_);
+    known_ = true;
+  }
+  return digest_;
+}
+
+const std::uint8_t* StoreSchemaArea::digest() const {
+  if (own) {
+    const SchemaBlob& blob = schema_blob(*own);
+    return lazy_digest.of(blob.data, blob.size);
+  }
+  if (!parsed) return lazy_digest.of(nullptr, 0);  // not valid: bound by no record
+  const std::vector<std::uint8_t>& bytes = parsed->bytes();
+  return lazy_digest.of(bytes.data(), bytes.size());
 }
 
 const char* store_slot_state_name(StoreSlotState state) {

@@ -52,17 +52,33 @@ void encode_store_header(const StoreGeometry& geometry, std::uint8_t* out);  // 
 Status decode_store_header(const std::uint8_t* data, std::size_t size, const char* path,
                            StoreGeometry& out);
 
+// The SHA-256 of a schema's serialised bytes, what a record's MAC binds, computed at the first
+// use and then kept: only a store with keys set needs it, and hashing a schema costs several
+// times all the rest of opening a store. Like the Store that holds it, not for concurrent use.
+class LazySchemaDigest {
+ public:
+  // The digest of `bytes` (`size` of them): the same bytes at every call.
+  const std::uint8_t* of(const std::uint8_t* bytes, std::size_t size) const;
+
+ private:
+  mutable bool known_ = false;
+  mutable std::uint8_t digest_[32] = {};
+};
+
 struct StoreSchemaArea {
   bool valid = false;  // CRC, hash and schema all hold
   std::uint64_t hash = 0;
   std::uint32_t size = 0;  // bytes of serialised schema
-  std::uint8_t digest[32] = {};  // SHA-256 of those bytes: what a record's MAC binds
   // The area's schema: the opening build's own when the area holds exactly its serialised form
   // (then nothing is parsed), else parsed and shared with the plans built from it, which may
   // outlive the store.
   const Schema* own = nullptr;
   std::shared_ptr<const ParsedSchema> parsed;
   const Schema& schema() const { return own ? *own : parsed->schema(); }
+  // SHA-256 of the schema's bytes (a valid area's only), computed at the first call.
+  const std::uint8_t* digest() const;
+
+  LazySchemaDigest lazy_digest;
 };
 // Loads the schema area at `offset` holding at most `capacity` bytes (its header included).
 // A damaged or empty area is loaded as not valid; only an I/O error is a failure. `own`, if

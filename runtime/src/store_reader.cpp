@@ -80,7 +80,7 @@ RecordBinding StoreReader::binding(std::uint32_t index, int area) const {
   RecordBinding binding;
   std::memcpy(binding.store_id, store_id_, sizeof store_id_);
   binding.location = geometry_.slot_offset(index);
-  if (area >= 0) std::memcpy(binding.schema_digest, areas_[area].digest, kSha256Size);
+  if (area >= 0) std::memcpy(binding.schema_digest, areas_[area].digest(), kSha256Size);
   return binding;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "authentication.hpp"
 #include "crc32c.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
@@ -213,6 +214,101 @@ TEST_F(AuthenticationTest, KeysSetAfterOpeningAStoreApplyToItsFirstRestore) {
   EXPECT_NE(std::string(report.status().message()).find("1 unauthenticated"), std::string::npos)
       << report.status().message();
   EXPECT_EQ(copter_a.ticks, -1);
+}
+
+// A schema's digest is what a record's MAC binds; only keys make a store compute one. Without
+// keys, opening a store (this build's, or another build's: a schema area parsed) and restoring
+// from it hash no schema.
+TEST_F(AuthenticationTest, AStoreUsedWithoutKeysHashesNoSchema) {
+  TempDir dir;
+  const std::string path = dir.file("no-keys.store");
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, symcr::StoreOptions{}, store).ok());
+    fill_a(5);
+    ASSERT_TRUE(store.save().ok());
+  }
+  const std::uint64_t before = symcr::detail::schema_digest_count();
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, symcr::StoreOptions{}, store).ok());
+    scramble_a();
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(copter_a.ticks, 1005);
+  }
+  {
+    symcr::Store store;  // another build: the area of build A's schema is parsed
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_b, symcr::StoreOptions{}, store).ok());
+    copter_b = CopterB{};
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(copter_b.ticks, 1005);
+  }
+  EXPECT_EQ(symcr::detail::schema_digest_count(), before);
+}
+
+// The digests computed when first needed bind what they did when open computed them: a save
+// signed under keys set after the open verifies when reopened, by this build and by another
+// (whose schema area holds build A's schema), and a slot moved elsewhere does not.
+TEST_F(AuthenticationTest, KeysSetAfterOpeningAStoreSignItsSavesForEveryBuild) {
+  TempDir dir;
+  const std::string path = dir.file("late-keys-save.store");
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, symcr::StoreOptions{}, store).ok());
+    use_keys({old_key()});
+    fill_a(6);
+    ASSERT_TRUE(store.save().ok());
+    fill_a(7);
+    ASSERT_TRUE(store.save().ok());
+  }
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, symcr::StoreOptions{}, store).ok());
+    scramble_a();
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(report.sequence(), 2u);
+    EXPECT_EQ(copter_a.ticks, 1007);
+  }
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_b, symcr::StoreOptions{}, store).ok());
+    copter_b = CopterB{};
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(report.sequence(), 2u);
+    EXPECT_EQ(copter_b.ticks, 1007);
+  }
+  // The newest record moved into the older one's slot (its CRC intact), its own slot cleared:
+  // bound to the slot it was written to, it does not verify where it lies now, and the
+  // freshness counter knows a checkpoint numbered 2 was written.
+  std::vector<std::uint8_t> bytes = read_file(path);
+  const std::uint64_t slots = le::load64(bytes.data() + 24);
+  const std::uint32_t slot_size = le::load32(bytes.data() + 16);
+  int newest = -1, older = -1;
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    const std::uint8_t* slot = bytes.data() + slots + std::uint64_t{i} * slot_size;
+    if (std::memcmp(slot, "SYMCRCKP", 8) != 0) continue;
+    (le::load64(slot + 16) == 2 ? newest : older) = static_cast<int>(i);
+  }
+  ASSERT_GE(newest, 0);
+  ASSERT_GE(older, 0);
+  std::memcpy(bytes.data() + slots + std::uint64_t(older) * slot_size,
+              bytes.data() + slots + std::uint64_t(newest) * slot_size, slot_size);
+  std::memset(bytes.data() + slots + std::uint64_t(newest) * slot_size, 0, slot_size);
+  write_file(path, bytes);
+  symcr::Store store;
+  ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_b, symcr::StoreOptions{}, store).ok());
+  copter_b = CopterB{};
+  const symcr::Report report = store.restore_latest();
+  EXPECT_EQ(report.status().error(), symcr::Error::RolledBack) << report.status().message();
+  EXPECT_NE(std::string(report.status().message())
+                .find("newest authenticated checkpoint is sequence 0"),
+            std::string::npos)
+      << report.status().message();
+  EXPECT_EQ(copter_b.ticks, 0);
 }
 
 }  // namespace

@@ -96,6 +96,60 @@ TEST_F(CheckpointFile, BufferKeepsItsCapacity) {
   EXPECT_EQ(buffer.size(), size);
 }
 
+// A buffer reused for checkpoints is written over in place (large values copied over the
+// previous record with their checksum): whatever it held before, longer or shorter, it then
+// holds exactly the new record, the one a fresh buffer gets.
+TEST_F(CheckpointFile, AReusedBufferHoldsExactlyTheNewRecord) {
+  constexpr std::size_t kCount = (std::size_t{3} << 20) / sizeof(std::uint64_t);  // 3 MiB
+  static std::vector<std::uint64_t> samples(kCount);
+  static const symcr::TypeInfo types[] = {
+      schema_tables::scalar("uint64", symcr::Kind::UInt, 8),
+      schema_tables::array("uint64[393216]", 0, kCount,
+                           static_cast<std::uint32_t>(kCount * sizeof(std::uint64_t)), 8),
+  };
+  static const symcr::RootInfo roots[] = {{"samples", 1, samples.data(), 0, nullptr}};
+  static const symcr::Schema big{types, 2, roots, 1, nullptr};
+  auto fill = [](std::uint64_t seed) {
+    for (std::size_t i = 0; i < kCount; ++i) samples[i] = seed * 1000003u + i;
+  };
+  auto expect_restores = [&](const std::vector<std::uint8_t>& record, std::uint64_t seed) {
+    std::fill(samples.begin(), samples.end(), 0);
+    const symcr::Report report = symcr::restore_from_buffer(big, record.data(), record.size());
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    for (std::size_t i = 0; i < kCount; i += 4099) ASSERT_EQ(samples[i], seed * 1000003u + i);
+    ASSERT_EQ(samples[kCount - 1], seed * 1000003u + kCount - 1);
+  };
+  auto without_time = [](std::vector<std::uint8_t> record) {
+    if (record.size() < 56) return record;  // no header: compared as it is
+    std::memset(record.data() + 24, 0, 8);  // timestamp_ns
+    std::memset(record.data() + 48, 0, 4);  // checksum (covers the timestamp)
+    return record;
+  };
+
+  fill(1);
+  std::vector<std::uint8_t> reused;
+  ASSERT_TRUE(symcr::checkpoint_to_buffer(big, reused).ok());
+  expect_restores(reused, 1);
+  const std::size_t size = reused.size();
+  for (const std::size_t before : {size, size + 5000, size / 2, std::size_t{10}}) {
+    reused.assign(before, 0xEE);  // a longer, shorter or foreign earlier content
+    fill(before);
+    ASSERT_TRUE(symcr::checkpoint_to_buffer(big, reused).ok());
+    std::vector<std::uint8_t> fresh;
+    ASSERT_TRUE(symcr::checkpoint_to_buffer(big, fresh).ok());
+    ASSERT_EQ(reused.size(), size) << before;
+    EXPECT_TRUE(without_time(reused) == without_time(fresh)) << before;
+    expect_restores(reused, before);
+  }
+  // The steady state: the same size every time, overwritten in place.
+  fill(2);
+  ASSERT_TRUE(symcr::checkpoint_to_buffer(big, reused).ok());
+  fill(3);
+  ASSERT_TRUE(symcr::checkpoint_to_buffer(big, reused).ok());
+  EXPECT_EQ(reused.size(), size);
+  expect_restores(reused, 3);
+}
+
 TEST_F(CheckpointFile, ANewBuildRestoresByNamesFromTheInlineSchema) {
   fill_a(8);
   ASSERT_TRUE(symcr::checkpoint(schema_a, path.c_str()).ok());

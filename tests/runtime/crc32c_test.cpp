@@ -13,6 +13,8 @@ namespace {
 
 using symcr::detail::crc32c;
 using symcr::detail::crc32c_combine;
+using symcr::detail::crc32c_copy;
+using symcr::detail::crc32c_copy_hardware;
 using symcr::detail::crc32c_extend;
 using symcr::detail::crc32c_extend_hardware;
 using symcr::detail::crc32c_extend_portable;
@@ -135,6 +137,49 @@ TEST(Crc32c, DetectsEverySingleBitFlip) {
     data[bit / 8] ^= static_cast<std::uint8_t>(1u << (bit % 8));
     ASSERT_NE(crc32c(data.data(), data.size()), clean) << bit;
     data[bit / 8] ^= static_cast<std::uint8_t>(1u << (bit % 8));
+  }
+}
+
+// Copying with the checksum: the destination holds exactly the source's bytes (nothing written
+// around them) and the CRC is the one of those bytes, at lengths around the chains' blocks and
+// at every alignment of source and destination, through crc32c_copy and its hardware path.
+TEST(Crc32c, CopyingChecksumsExactlyTheBytesCopied) {
+  std::mt19937 random(4242);
+  std::vector<std::uint8_t> source(3 * 3 * 8192 + 3 * 256 + 64);
+  for (auto& byte : source) byte = static_cast<std::uint8_t>(random());
+  std::vector<std::size_t> sizes = {0, 1, 7, 8, 9, 100};
+  for (std::size_t base : {std::size_t{3 * 256}, std::size_t{3 * 8192}, std::size_t{3 * 3 * 8192}}) {
+    for (std::size_t delta : {std::size_t{0}, std::size_t{1}, std::size_t{8}, std::size_t{13}}) {
+      sizes.push_back(base + delta);
+      sizes.push_back(base - delta - 1);
+    }
+  }
+  constexpr std::uint8_t kGuard = 0xA5;
+  std::vector<std::uint8_t> destination(source.size() + 32);
+  for (std::size_t from = 0; from < 8; from += 3) {
+    for (std::size_t to = 0; to < 8; to += 5) {
+      for (std::size_t size : sizes) {
+        ASSERT_LE(from + size, source.size());
+        const std::uint32_t seed = static_cast<std::uint32_t>(random());
+        const std::uint32_t expected = crc32c_extend_portable(seed, source.data() + from, size);
+        for (int hardware = 0; hardware < 2; ++hardware) {
+          if (hardware && !crc32c_hardware_available()) continue;
+          std::fill(destination.begin(), destination.end(), kGuard);
+          const std::uint32_t crc =
+              hardware ? crc32c_copy_hardware(seed, destination.data() + 8 + to,
+                                              source.data() + from, size)
+                       : crc32c_copy(seed, destination.data() + 8 + to, source.data() + from,
+                                     size);
+          ASSERT_EQ(crc, expected) << "size " << size << " from " << from << " to " << to;
+          ASSERT_EQ(std::memcmp(destination.data() + 8 + to, source.data() + from, size), 0)
+              << "size " << size;
+          for (std::size_t i = 0; i < destination.size(); ++i) {
+            if (i >= 8 + to && i < 8 + to + size) continue;
+            ASSERT_EQ(destination[i], kGuard) << "byte " << i << " written, size " << size;
+          }
+        }
+      }
+    }
   }
 }
 

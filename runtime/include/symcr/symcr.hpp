@@ -228,6 +228,8 @@ Report restore(const Schema& schema, const char* path, const RestoreOptions& opt
 
 // In-memory checkpoints (same bytes as a single-file checkpoint), e.g. to send elsewhere.
 // `out` keeps its capacity between calls: no allocation after the first of a steady state.
+// Its contents are replaced by the checkpoint, written over what it held (large values are
+// copied over the previous checkpoint and checksummed in the same pass).
 Status checkpoint_to_buffer(const Schema& schema, std::vector<std::uint8_t>& out,
                             std::uint64_t sequence = 0);
 Report restore_from_buffer(const Schema& schema, const std::uint8_t* data, std::size_t size,
