@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <string>
 
-#include "device_format.hpp"
+#include "symcr/format/payload.hpp"
 #include "report_access.hpp"
 #include "restorer.hpp"
 
@@ -72,8 +72,8 @@ void Restorer::decide_clock_deltas(const ClockReadings& readings) {
 void Restorer::rebase(std::uint8_t* dst, const TypeInfo& type) const {
   if (mode_ != Mode::Apply || !rebasing_) return;
   if (type.kind != Kind::Int && type.kind != Kind::UInt) return;
-  device::detail::rebase_time(dst, type.size, time_->never,
-                              static_cast<std::uint64_t>(clock_deltas_[time_->clock->index]));
+  format::rebase_time(dst, type.size, time_->never,
+                      static_cast<std::uint64_t>(clock_deltas_[time_->clock->index]));
 }
 
 }  // namespace restoring

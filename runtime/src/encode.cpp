@@ -230,11 +230,10 @@ class Encoder {
   // The clocks' readings end the payload (docs/format.md §3), after everything they describe
   // was read from memory.
   void put_clock_readings() {
-    const std::uint64_t epoch = process_epoch();
-    std::memcpy(grow(8), &epoch, 8);
+    format::store64(grow(format::kClockEpochSize), process_epoch());
     for (const ClockInfo* clock : facts_.clocks) {
       const std::int64_t reading = clock && clock->read ? clock->read() : 0;
-      std::memcpy(grow(8), &reading, 8);
+      format::store64(grow(format::kClockReadingSize), static_cast<std::uint64_t>(reading));
     }
   }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine.hpp"
+#include "symcr/format/hashes.hpp"
 #include "payload_grammar.hpp"
 #include "wire.hpp"
 
@@ -451,7 +452,7 @@ Status parse_schema(const std::uint8_t* data, std::size_t size, ParsedSchema& ou
   Parser parser(data, size, *parsed.storage);
   Status status = parser.run();
   if (!status.ok()) return status;
-  parsed.storage->hash = hash != nullptr ? *hash : fnv1a64(data, size);
+  parsed.storage->hash = hash != nullptr ? *hash : format::fnv1a64(data, size);
   parsed.storage->bytes.assign(data, data + size);
   out = std::move(parsed);
   return Status();
