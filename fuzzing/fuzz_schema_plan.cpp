@@ -205,7 +205,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   symcr::detail::ParsedSchema writer;
   if (!symcr::detail::parse_schema(writer_bytes, writer_size, writer).ok()) return 0;
-  const std::uint64_t writer_hash = symcr::detail::fnv1a64(writer_bytes, writer_size);
+  const std::uint64_t writer_hash = symcr::format::fnv1a64(writer_bytes, writer_size);
   NullVisitor visitor;
   (void)symcr::detail::visit_payload(writer.schema(), payload, payload_size, visitor);
 

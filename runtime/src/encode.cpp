@@ -776,7 +776,7 @@ class Encoder {
     if (!ok()) return region;
     put_u32(type);
     s_.heap.push_back(HeapObject{region, pos_});
-    put_u8(reference.shared ? 1 : 0);
+    put_u8(reference.shared ? format::kHeapOwnerShared : format::kHeapOwnerRaw);
     encoding_heap_ = region;
     encode_object(type, reinterpret_cast<const std::uint8_t*>(start));
     encoding_heap_ = kNoRegion;

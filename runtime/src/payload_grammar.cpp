@@ -194,14 +194,17 @@ bool PayloadReader::heap_count(std::uint32_t& count) {
 bool PayloadReader::heap_object(std::uint32_t ordinal, std::uint32_t& type, std::uint8_t& owner) {
   if (!in_.read(type) || !in_.read(owner)) return truncated("heap object");
   if (type >= writer_.type_count) return fail("heap object %u has type %u", ordinal, type);
-  if (owner > 1) return fail("heap object %u has owner %u", ordinal, owner);
+  if (owner > format::kHeapOwnerShared) return fail("heap object %u has owner %u", ordinal, owner);
   return true;
 }
 
 bool PayloadReader::reference_count(std::uint32_t& count) {
   if (!in_.read(count)) return truncated("reference count");
-  // A reference takes at least 11 bytes: base kind, object, step count and target.
-  if (count > in_.remaining() / 11) return fail("reference count %u exceeds the payload", count);
+  // A reference takes at least an object reference without steps: base, object, step count and
+  // target.
+  if (count > in_.remaining() / format::object_reference_size(0)) {
+    return fail("reference count %u exceeds the payload", count);
+  }
   return true;
 }
 

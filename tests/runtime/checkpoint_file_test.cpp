@@ -17,7 +17,7 @@
 #include "file_io.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
-#include "little_endian.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace file_tests {
@@ -161,7 +161,7 @@ TEST_F(CheckpointFile, FutureFormatVersionIsRefusedCleanly) {
   fill_a(1);
   ASSERT_TRUE(symcr::checkpoint(schema_a, path.c_str()).ok());
   std::vector<std::uint8_t> bytes = read_file(path);
-  symcr::detail::le::store16(bytes.data() + 8, 2);
+  symcr::format::store16(bytes.data() + 8, 2);
   write_file(path, bytes);
   scramble_a();
   const auto before = state_a();
