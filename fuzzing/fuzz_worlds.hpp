@@ -21,9 +21,9 @@
 #include "crc32c.hpp"
 #include "engine.hpp"
 #include "handwritten_schemas.hpp"
+#include "record.hpp"
 #include "symcr/format/bytes.hpp"
 #include "symcr/format/hashes.hpp"
-#include "record.hpp"
 #include "symcr/symcr.hpp"
 
 namespace fuzz {
@@ -187,10 +187,13 @@ inline std::vector<std::uint8_t> world_snapshot(unsigned world) {
 inline void fix_record_integrity(std::uint8_t* p, std::size_t size,
                                  const symcr::detail::RecordBinding* binding = nullptr) {
   if (size < symcr::format::kRecordHeaderSize) return;
-  const std::uint64_t header_size = symcr::format::load16(p + symcr::format::kRecordHeaderSizeOffset);
+  const std::uint64_t header_size =
+      symcr::format::load16(p + symcr::format::kRecordHeaderSizeOffset);
   const std::uint32_t flags = symcr::format::load32(p + symcr::format::kRecordFlagsOffset);
-  const std::uint64_t schema_size = symcr::format::load32(p + symcr::format::kRecordSchemaSizeOffset);
-  const std::uint64_t payload_size = symcr::format::load32(p + symcr::format::kRecordPayloadSizeOffset);
+  const std::uint64_t schema_size =
+      symcr::format::load32(p + symcr::format::kRecordSchemaSizeOffset);
+  const std::uint64_t payload_size =
+      symcr::format::load32(p + symcr::format::kRecordPayloadSizeOffset);
   if ((flags & symcr::format::kRecordSchemaInline) && header_size + schema_size <= size) {
     symcr::format::store64(p + symcr::format::kRecordSchemaHashOffset,
                            symcr::format::fnv1a64(p + header_size, schema_size));

@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <string>
 
-#include "symcr/format/payload.hpp"
 #include "report_access.hpp"
 #include "restorer.hpp"
+#include "symcr/format/payload.hpp"
 
 namespace symcr::detail {
 

@@ -13,8 +13,8 @@
 #include <cstring>
 
 #include "file_system.hpp"
-#include "symcr/format/bytes.hpp"
 #include "record.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
 namespace {

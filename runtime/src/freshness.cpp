@@ -12,8 +12,8 @@
 #include "crc32c.hpp"
 #include "file_io.hpp"
 #include "file_system.hpp"
-#include "symcr/format/bytes.hpp"
 #include "record.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -130,8 +130,10 @@ Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
     if (std::memcmp(copy, kCounterMagic, sizeof kCounterMagic) != 0) continue;
     const OwnedKey* key = keys.find(format::load32(copy + 8));
     if (key == nullptr) {
-      why = Status(Error::RolledBack, "it is signed with key id %u, which this program does not "
-                   "hold", format::load32(copy + 8));
+      why = Status(Error::RolledBack,
+                   "it is signed with key id %u, which this program does not "
+                   "hold",
+                   format::load32(copy + 8));
       continue;
     }
     std::uint8_t mac[format::kSha256Size];

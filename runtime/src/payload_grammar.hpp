@@ -56,8 +56,8 @@ std::vector<const ClockInfo*> schema_clocks(const Schema& schema);
 
 // What ends a payload of a schema with clocks.
 struct ClockReadings {
-  std::uint64_t epoch = 0;               // the writing process (0: unknown, e.g. a device)
-  const std::uint8_t* bytes = nullptr;   // the epoch, then `count` readings (format core)
+  std::uint64_t epoch = 0;              // the writing process (0: unknown, e.g. a device)
+  const std::uint8_t* bytes = nullptr;  // the epoch, then `count` readings (format core)
   std::uint32_t count = 0;
   const std::uint8_t* reading_bytes(std::uint32_t clock) const {
     return bytes + format::clock_reading_offset(clock);

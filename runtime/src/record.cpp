@@ -8,9 +8,9 @@
 #include "authentication.hpp"
 #include "crc32c.hpp"
 #include "engine.hpp"
-#include "symcr/format/bytes.hpp"
 #include "plan.hpp"
 #include "report_access.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -143,8 +143,8 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
     case format::HeaderFault::BadMagic:
       return Status(Error::NotACheckpoint, "not a symcr checkpoint (bad magic)");
     case format::HeaderFault::Truncated:
-      return Status(Error::Truncated, "truncated: %zu bytes, shorter than the %u-byte header",
-                    size, unsigned{format::kRecordHeaderSize});
+      return Status(Error::Truncated, "truncated: %zu bytes, shorter than the %u-byte header", size,
+                    unsigned{format::kRecordHeaderSize});
     case format::HeaderFault::FutureVersion:
       return Status(Error::FutureVersion,
                     "written by checkpoint format version %u; this build reads up to version %u",
@@ -239,8 +239,8 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size, con
   // of an earlier build again). The header's hash only picks the candidate; the bytes decide.
   const SchemaBlob& own = schema_blob(reader);
   std::shared_ptr<const Plan> plan;
-  const std::uint64_t schema_hash =
-      size >= format::kRecordHeaderSize ? format::load64(data + format::kRecordSchemaHashOffset)
+  const std::uint64_t schema_hash = size >= format::kRecordHeaderSize
+                                        ? format::load64(data + format::kRecordSchemaHashOffset)
                                         : 0;
   if (size >= format::kRecordHeaderSize && schema_hash != own.hash) {
     plan = cached_plan(schema_hash, reader);

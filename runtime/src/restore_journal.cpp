@@ -6,8 +6,8 @@
 
 #include "authentication.hpp"
 #include "crc32c.hpp"
-#include "symcr/format/bytes.hpp"
 #include "record.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
 namespace {

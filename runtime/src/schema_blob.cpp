@@ -2,10 +2,10 @@
 #include <cstring>
 #include <utility>
 
-#include "symcr/format/hashes.hpp"
 #include "engine.hpp"
 #include "payload_grammar.hpp"
 #include "schema_facts.hpp"
+#include "symcr/format/hashes.hpp"
 #include "wire.hpp"
 
 // compute_schema_facts runs once per schema and process (the result is cached, see

@@ -4,9 +4,9 @@
 #include <mutex>
 #include <vector>
 
-#include "symcr/format/hashes.hpp"
 #include "engine.hpp"
 #include "schema_facts.hpp"
+#include "symcr/format/hashes.hpp"
 
 namespace symcr::detail {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "crc32c.hpp"
 #include "file_io.hpp"
-#include "symcr/format/bytes.hpp"
 #include "record.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
 namespace {

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "engine.hpp"
-#include "symcr/format/hashes.hpp"
 #include "payload_grammar.hpp"
+#include "symcr/format/hashes.hpp"
 #include "wire.hpp"
 
 namespace symcr::detail {

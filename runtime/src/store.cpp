@@ -23,12 +23,12 @@
 #include "file_io.hpp"
 #include "file_system.hpp"
 #include "freshness.hpp"
-#include "symcr/format/bytes.hpp"
 #include "program_schema.hpp"
 #include "record.hpp"
 #include "report_access.hpp"
 #include "restore_journal.hpp"
 #include "store_layout.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr {
@@ -504,10 +504,10 @@ struct Store::Impl {
     format::store32(area_bytes.data() + format::kStoreAreaSizeOffset,
                     static_cast<std::uint32_t>(blob.size));
     std::memcpy(area_bytes.data() + format::kStoreAreaHeaderSize, blob.data, blob.size);
-    format::store32(area_bytes.data() + format::kStoreAreaCrcOffset,
-                    detail::crc32c_extend(
-                        detail::crc32c(area_bytes.data(), format::kStoreAreaCrcOffset),
-                        blob.data, blob.size));
+    format::store32(
+        area_bytes.data() + format::kStoreAreaCrcOffset,
+        detail::crc32c_extend(detail::crc32c(area_bytes.data(), format::kStoreAreaCrcOffset),
+                              blob.data, blob.size));
     // Forget the old area before overwriting it: a failed write leaves it unusable either way.
     areas[target] = StoreSchemaArea();
     for (Slot& slot : slots) {

@@ -52,7 +52,8 @@ StoreGeometry store_geometry_for(std::uint32_t slots, std::uint32_t slot_size,
 
 Status check_store_dimensions(std::uint32_t slots, std::uint32_t slot_size) {
   if (slots < 2 || slots > format::kStoreMaxSlots) {
-    return Status(Error::TooLarge, "a store needs 2 to %u slots, not %u", format::kStoreMaxSlots, slots);
+    return Status(Error::TooLarge, "a store needs 2 to %u slots, not %u", format::kStoreMaxSlots,
+                  slots);
   }
   if (slot_size < format::kStoreMinSlotSize || slot_size > format::kStoreMaxSlotSize) {
     return Status(Error::TooLarge, "a store slot must have %u to %u bytes, not %u",
@@ -77,7 +78,8 @@ Status decode_store_header(const std::uint8_t* p, std::size_t size, const char* 
   if (size < sizeof format::kStoreFileMagic || std::memcmp(p, format::kStoreFileMagic, 8) != 0) {
     return Status(Error::NotACheckpoint, "%s is not a symcr store (bad magic)", path);
   }
-  if (size < format::kStoreHeaderSize) return Status(Error::Truncated, "%s: store header truncated", path);
+  if (size < format::kStoreHeaderSize)
+    return Status(Error::Truncated, "%s: store header truncated", path);
   const std::uint16_t version = format::load16(p + format::kStoreVersionOffset);
   if (version > format::kStoreFileFormatVersion) {
     return Status(Error::FutureVersion,
@@ -93,7 +95,8 @@ Status decode_store_header(const std::uint8_t* p, std::size_t size, const char* 
   g.schema_area_size = format::load32(p + format::kStoreSchemaAreaSizeOffset);
   g.slots_offset = format::load64(p + format::kStoreSlotsOffsetOffset);
   if (version == 0 || !check_store_dimensions(g.slot_count, g.slot_size).ok() ||
-      g.schema_area_size <= format::kStoreAreaHeaderSize || g.schema_area_size % format::kStorePageSize != 0 ||
+      g.schema_area_size <= format::kStoreAreaHeaderSize ||
+      g.schema_area_size % format::kStorePageSize != 0 ||
       g.slots_offset != format::kStorePageSize + 2 * std::uint64_t{g.schema_area_size}) {
     return Status(Error::Corrupt, "%s: invalid store header", path);
   }
@@ -113,11 +116,12 @@ Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint
     return Status();  // empty or damaged: no schema here
   }
   std::vector<std::uint8_t> bytes(size);
-  status = pread_full(fd, bytes.data(), size, static_cast<off_t>(offset + format::kStoreAreaHeaderSize),
-                      got, path);
+  status = pread_full(fd, bytes.data(), size,
+                      static_cast<off_t>(offset + format::kStoreAreaHeaderSize), got, path);
   if (!status.ok()) return status;
   const std::uint64_t hash = format::load64(head + format::kStoreAreaHashOffset);
-  const std::uint32_t crc = crc32c_extend(crc32c(head, format::kStoreAreaCrcOffset), bytes.data(), size);
+  const std::uint32_t crc =
+      crc32c_extend(crc32c(head, format::kStoreAreaCrcOffset), bytes.data(), size);
   if (got < size || crc != format::load32(head + format::kStoreAreaCrcOffset)) return Status();
   const SchemaBlob* own_blob = own ? &schema_blob(*own) : nullptr;
   if (own_blob && own_blob->hash == hash && own_blob->size == size &&
@@ -228,8 +232,8 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
   // resumes after a record found, so a checkpoint held as data inside another is not taken.
   // The scan ends where the largest store the records found could belong to ends: slots are
   // one slot size apart, so the slot size divides the distance between any two records found,
-  // and a store has at most format::kStoreMaxSlots slots. Holes in a sparse file (zeros, no record) are
-  // skipped without reading them.
+  // and a store has at most format::kStoreMaxSlots slots. Holes in a sparse file (zeros, no record)
+  // are skipped without reading them.
   std::vector<std::uint8_t> chunk(kSalvageChunk);
   std::vector<std::uint8_t> record;
   RecordView view;
@@ -275,8 +279,10 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
       out.record_offsets.push_back(offset);
       out.record_sizes.push_back(static_cast<std::uint32_t>(view.record_size));
       const std::uint64_t slot_size_bound =
-          spacing != 0 ? std::min<std::uint64_t>(spacing, format::kStoreMaxSlotSize) : format::kStoreMaxSlotSize;
-      end = std::min(file_size, out.record_offsets.front() + format::kStoreMaxSlots * slot_size_bound);
+          spacing != 0 ? std::min<std::uint64_t>(spacing, format::kStoreMaxSlotSize)
+                       : format::kStoreMaxSlotSize;
+      end = std::min(file_size,
+                     out.record_offsets.front() + format::kStoreMaxSlots * slot_size_bound);
       position = offset + view.record_size;
     } else {
       position = offset + 1;
@@ -289,8 +295,8 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
   for (std::uint64_t area_size = format::kStoreMinSchemaAreaSize;
        format::kStorePageSize + 2 * area_size <= areas_end; area_size += format::kStorePageSize) {
     StoreSchemaArea candidate;
-    Status status =
-        load_store_area(fd, path, format::kStorePageSize + area_size, area_size, nullptr, candidate);
+    Status status = load_store_area(fd, path, format::kStorePageSize + area_size, area_size,
+                                    nullptr, candidate);
     if (!status.ok()) return status;
     if (candidate.valid) {
       out.areas[1] = std::move(candidate);
@@ -300,9 +306,10 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
     }
   }
   out.area_offsets[0] = format::kStorePageSize;
-  out.area_capacities[0] = out.areas[1].valid
-                               ? out.area_capacities[1]
-                               : (areas_end > format::kStorePageSize ? areas_end - format::kStorePageSize : 0);
+  out.area_capacities[0] =
+      out.areas[1].valid
+          ? out.area_capacities[1]
+          : (areas_end > format::kStorePageSize ? areas_end - format::kStorePageSize : 0);
   return load_store_area(fd, path, out.area_offsets[0], out.area_capacities[0], nullptr,
                          out.areas[0]);
 }

@@ -1,6 +1,7 @@
 // The store file's layout (docs/format.md §4; its constants are the format core's,
-// symcr/format/store.hpp), written once for the writing Store and the read-only StoreReader: the header, the two schema areas, reading and classifying one slot,
-// and finding the checkpoints of a store whose header is damaged. Internal to the runtime.
+// symcr/format/store.hpp), written once for the writing Store and the read-only StoreReader: the
+// header, the two schema areas, reading and classifying one slot, and finding the checkpoints of a
+// store whose header is damaged. Internal to the runtime.
 #ifndef SYMCR_SRC_STORE_LAYOUT_HPP
 #define SYMCR_SRC_STORE_LAYOUT_HPP
 
@@ -38,7 +39,8 @@ StoreGeometry store_geometry_for(std::uint32_t slots, std::uint32_t slot_size,
 // TooLarge unless `slots` and `slot_size` are within the format's bounds.
 Status check_store_dimensions(std::uint32_t slots, std::uint32_t slot_size);
 
-void encode_store_header(const StoreGeometry& geometry, std::uint8_t* out);  // format::kStoreHeaderSize
+void encode_store_header(const StoreGeometry& geometry,
+                         std::uint8_t* out);  // format::kStoreHeaderSize
 // Decodes the first `size` bytes of a store: magic, version, CRC and geometry.
 Status decode_store_header(const std::uint8_t* data, std::size_t size, const char* path,
                            StoreGeometry& out);

@@ -33,9 +33,9 @@
 #include "engine.hpp"
 #include "file_io.hpp"
 #include "fixture_tables.hpp"
+#include "schema_file.hpp"
 #include "symcr/format/bytes.hpp"
 #include "symcr/format/hashes.hpp"
-#include "schema_file.hpp"
 #include "symcr/symcr.hpp"
 
 namespace {
@@ -95,7 +95,8 @@ bool flip_and_resign(const char* path, long offset) {
   const std::uint16_t header_size = symcr::format::load16(bytes.data() + 10);
   const std::uint32_t schema_size = symcr::format::load32(bytes.data() + 40);
   if (std::size_t{header_size} + schema_size <= bytes.size()) {
-    symcr::format::store64(bytes.data() + 32, symcr::format::fnv1a64(bytes.data() + header_size, schema_size));
+    symcr::format::store64(bytes.data() + 32,
+                           symcr::format::fnv1a64(bytes.data() + header_size, schema_size));
   }
   symcr::format::store32(bytes.data() + 48, 0);
   symcr::format::store32(bytes.data() + 48, crc32c(bytes.data(), bytes.size()));

@@ -12,6 +12,7 @@
 // StoreTest.FallsBackPastABitFlipInTheNewestSlot); they are not repeated here.
 #include <errno.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/mman.h>
 #include <sys/mount.h>
@@ -28,11 +29,9 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "file_test_util.hpp"
-#include "symcr/format/bytes.hpp"
 #include "reliability_schemas.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace reliability {

@@ -11,6 +11,7 @@
 //     structs inside each of many containers is refused within that stack, and a schema whose
 //     types nest by value past the limit, or contain themselves by value, is refused.
 // The 10^6-node *cyclic* graph with sharing is EnginePerformance.MillionNodeCyclicGraph.
+#include <gtest/gtest.h>
 #include <pthread.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -20,13 +21,11 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "engine.hpp"
-#include "symcr/format/bytes.hpp"
 #include "payload_grammar.hpp"
-#include "schema_facts.hpp"
 #include "reliability_schemas.hpp"
+#include "schema_facts.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace reliability {
@@ -118,8 +117,8 @@ void* save_and_restore_deepest_chain(void* argument) {
     }
     std::size_t leaves = 0;
   } visitor;
-  std::vector<std::uint8_t> payload(run.buffer.begin() + 56 + symcr::format::load32(run.buffer.data() + 40),
-                                    run.buffer.end());
+  std::vector<std::uint8_t> payload(
+      run.buffer.begin() + 56 + symcr::format::load32(run.buffer.data() + 40), run.buffer.end());
   run.decoded = symcr::detail::visit_payload(chain_schema(), payload.data(), payload.size(),
                                              visitor).ok() &&
                 visitor.leaves == run.depth + 1;  // one value per level
@@ -158,9 +157,9 @@ std::vector<std::uint8_t> nested_payload(std::size_t depth) {
     symcr::format::store32(p, static_cast<std::uint32_t>(level));
     symcr::format::store32(p + 4, 1);
   }
-  symcr::format::store32(p, 7);      // the innermost value
-  symcr::format::store32(p + 4, 0);  // with no elements
-  symcr::format::store32(p + 8, 0);  // heap count
+  symcr::format::store32(p, 7);       // the innermost value
+  symcr::format::store32(p + 4, 0);   // with no elements
+  symcr::format::store32(p + 8, 0);   // heap count
   symcr::format::store32(p + 12, 0);  // reference count
   return payload;
 }

@@ -31,12 +31,12 @@
 #include "authentication.hpp"
 #include "crc32c.hpp"
 #include "freshness.hpp"
-#include "symcr/format/bytes.hpp"
 #include "record.hpp"
 #include "restore_journal.hpp"
 #include "schema_tables.hpp"
 #include "simulated_file_system.hpp"
 #include "store_layout.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace reliability {
@@ -94,8 +94,7 @@ std::map<std::uint64_t, std::int64_t> intact_checkpoints(const std::vector<std::
     if (size == 0 || at + symcr::format::kStoreAreaHeaderSize + size > file.size()) continue;
     const std::uint32_t crc = symcr::detail::crc32c_extend(
         symcr::detail::crc32c(head, 12), head + symcr::format::kStoreAreaHeaderSize, size);
-    if (crc == symcr::format::load32(head + 12))
-      area_hashes.insert(symcr::format::load64(head));
+    if (crc == symcr::format::load32(head + 12)) area_hashes.insert(symcr::format::load64(head));
   }
   for (std::uint32_t i = 0; i < g.slot_count; ++i) {
     const std::uint64_t at = g.slot_offset(i);

@@ -4,6 +4,8 @@
 // kFieldHasRange/range_min/range_max) and a type's symcr_validate (TypeInfo::validate). A value
 // breaking them is rejected (named in the report), the reader keeps its own value, and strict
 // mode refuses the whole restore.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -12,12 +14,10 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "crc32c.hpp"
 #include "file_test_util.hpp"
-#include "symcr/format/bytes.hpp"
 #include "reliability_schemas.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace reliability {
@@ -129,7 +129,8 @@ class TaintedData : public ::testing::Test {
     fill_good();
     ASSERT_TRUE(symcr::checkpoint(vehicle_schema(), path_.c_str()).ok());
     record_ = file_tests::read_file(path_);
-    payload_at_ = symcr::format::load16(record_.data() + 10) + symcr::format::load32(record_.data() + 40);
+    payload_at_ =
+        symcr::format::load16(record_.data() + 10) + symcr::format::load32(record_.data() + 40);
     ASSERT_EQ(record_.size() - payload_at_, kPayloadSize);
   }
 
@@ -168,8 +169,9 @@ TEST_F(TaintedData, OutOfRangeAndInvalidValuesAreRejectedTheRestRestored) {
     put_f32(payload + kAltitude, 1e9f);
     symcr::format::store32(payload + kThrottle, static_cast<std::uint32_t>(-7));
     payload[kMode] = 250;                                           // no rule: restored
-    symcr::format::store32(payload + kLimits + 2 * 8, 100);                    // limits[2] = {100, 12}
-    symcr::format::store32(payload + kMore + 8 + 4, static_cast<std::uint32_t>(-9));  // more[1] = {-5, -9}
+    symcr::format::store32(payload + kLimits + 2 * 8, 100);         // limits[2] = {100, 12}
+    symcr::format::store32(payload + kMore + 8 + 4,
+                           static_cast<std::uint32_t>(-9));  // more[1] = {-5, -9}
     put_f64(payload + kSpeed, std::numeric_limits<double>::quiet_NaN());
     symcr::format::store16(payload + kHeading, 360);
   });
@@ -211,7 +213,9 @@ TEST_F(TaintedData, StrictModeRefusesTaintedCheckpointsAndWritesNothing) {
   EXPECT_EQ(file_tests::snapshot(vehicle.sensor), before);
   EXPECT_EQ(vehicle.heading, 1);
 
-  tamper([](std::uint8_t* payload) { symcr::format::store32(payload + kLimits, 50); });  // limits[0] = {50, 10}
+  tamper([](std::uint8_t* payload) {
+    symcr::format::store32(payload + kLimits, 50);
+  });  // limits[0] = {50, 10}
   report = symcr::restore(vehicle_schema(), path_.c_str(), strict);
   EXPECT_EQ(report.status().error(), symcr::Error::Strict) << report.to_text();
   EXPECT_EQ(vehicle.limits[0].lo, -1);

@@ -10,8 +10,8 @@
 #include "crc32c.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
-#include "symcr/format/bytes.hpp"
 #include "record.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace {
@@ -47,7 +47,7 @@ class AuthenticationTest : public ::testing::Test {
   static void reseal(std::vector<std::uint8_t>& bytes) {
     symcr::format::store32(bytes.data() + symcr::format::kRecordChecksumOffset, 0);
     symcr::format::store32(bytes.data() + symcr::format::kRecordChecksumOffset,
-                symcr::detail::crc32c(bytes.data(), bytes.size()));
+                           symcr::detail::crc32c(bytes.data(), bytes.size()));
   }
   static void expect_refused(const symcr::Report& report, const char* why) {
     EXPECT_EQ(report.status().error(), symcr::Error::Unauthenticated);
@@ -61,7 +61,8 @@ class AuthenticationTest : public ::testing::Test {
 TEST_F(AuthenticationTest, AnAuthenticatedCheckpointNamesItsKeyAndRestores) {
   use_keys({old_key()});
   const std::vector<std::uint8_t> bytes = checkpoint(3);
-  EXPECT_EQ(symcr::format::load16(bytes.data() + 10), 112u);  // header with key id, MAC version and MAC
+  EXPECT_EQ(symcr::format::load16(bytes.data() + 10),
+            112u);  // header with key id, MAC version and MAC
   EXPECT_EQ(symcr::format::load32(bytes.data() + 60), symcr::format::kRecordMacVersion);
   EXPECT_EQ(symcr::format::load32(bytes.data() + 12) & 2u, 2u);
   EXPECT_EQ(symcr::format::load32(bytes.data() + 56), 1u);
@@ -164,7 +165,8 @@ TEST_F(AuthenticationTest, AStoreWhoseNewestSlotWasTamperedWithRestoresNothing) 
   for (std::uint32_t i = 0; i < 4 && !tampered; ++i) {
     std::uint8_t* slot = bytes.data() + slots + std::uint64_t{i} * slot_size;
     if (std::memcmp(slot, "SYMCRCKP", 8) != 0 || symcr::format::load64(slot + 16) != 3) continue;
-    const std::size_t size = 112 + symcr::format::load32(slot + 40) + symcr::format::load32(slot + 44);
+    const std::size_t size =
+        112 + symcr::format::load32(slot + 40) + symcr::format::load32(slot + 44);
     slot[112] ^= 0x40;
     symcr::format::store32(slot + 48, 0);
     symcr::format::store32(slot + 48, symcr::detail::crc32c(slot, size));

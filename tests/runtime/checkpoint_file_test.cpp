@@ -1,6 +1,7 @@
 // Single-file and in-memory checkpoints: round trips, every truncation and bit flip of a file
 // refused with the state untouched, and file safety (mode 0600, no symlink followed, exclusive
 // temp files, the previous checkpoint intact after a failed write).
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -11,8 +12,6 @@
 #include <set>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "file_io.hpp"
 #include "file_test_schemas.hpp"

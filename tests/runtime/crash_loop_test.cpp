@@ -17,9 +17,9 @@
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
 #include "freshness.hpp"
-#include "symcr/format/bytes.hpp"
 #include "restore_journal.hpp"
 #include "store_fixture.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace file_tests {

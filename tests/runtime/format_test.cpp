@@ -1,12 +1,12 @@
 // The format core (runtime/format): the record header codec on a real record and on each fault
 // in the spec's order, its small CRC-32C against the host's, and the one wire-size rule as the
 // host's WireSizes and the device profile's wire_size both apply it.
+#include <gtest/gtest.h>
+
 #include <cstdint>
 #include <cstring>
 #include <random>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "crc32c.hpp"
 #include "device_format.hpp"
@@ -113,11 +113,10 @@ TEST(FormatCore, HashesOfTheSpec) {
 // format core's rule, so for every schema the device holds they agree, with each other and with
 // the bytes the host writes.
 TEST(FormatCore, WireSizeRuleIsTheSameOnHostAndDevice) {
-  const symcr::Schema* schemas[] = {&engine::a0::schema(), &engine::a1::schema(),
-                                    &engine::c0::schema(), &engine::c1::schema(),
-                                    &engine::d0::schema(), &engine::d1::schema(),
-                                    &engine::e0::schema(), &engine::e1::schema(),
-                                    &engine::g::schema(),  &engine::p::schema()};
+  const symcr::Schema* schemas[] = {
+      &engine::a0::schema(), &engine::a1::schema(), &engine::c0::schema(), &engine::c1::schema(),
+      &engine::d0::schema(), &engine::d1::schema(), &engine::e0::schema(), &engine::e1::schema(),
+      &engine::g::schema(),  &engine::p::schema()};
   int held = 0;
   for (const symcr::Schema* schema : schemas) {
     if (symcr::device::check_schema(*schema) != symcr::device::Result::Ok) continue;

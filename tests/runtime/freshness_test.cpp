@@ -2,6 +2,8 @@
 // the store file but holds no key cannot make the program restore an older state than the
 // newest it wrote, nor freeze it there, nor switch restores off. Each attack leaves the state
 // untouched and is refused (Error::RolledBack, Unauthenticated) or reported.
+#include "freshness.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -13,15 +15,13 @@
 #include "engine.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
-#include "freshness.hpp"
-#include "symcr/format/bytes.hpp"
 #include "record.hpp"
 #include "restore_journal.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace file_tests {
 namespace {
-
 
 const std::vector<std::uint8_t> kKey(32, 0x5a);
 
@@ -95,7 +95,8 @@ class FreshnessTest : public ::testing::Test {
     return 0;
   }
   static std::size_t record_size(const std::vector<std::uint8_t>& bytes, std::uint64_t at) {
-    return symcr::format::load16(bytes.data() + at + 10) + symcr::format::load32(bytes.data() + at + 40) +
+    return symcr::format::load16(bytes.data() + at + 10) +
+           symcr::format::load32(bytes.data() + at + 40) +
            symcr::format::load32(bytes.data() + at + 44);
   }
   static void fix_crc(std::vector<std::uint8_t>& bytes, std::uint64_t at) {

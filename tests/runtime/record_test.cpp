@@ -2,13 +2,13 @@
 // bytes that are not a whole, intact, current-version record.
 #include "record.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "crc32c.hpp"
 #include "engine.hpp"
@@ -50,7 +50,8 @@ TEST(Record, HeaderLayoutMatchesTheFormat) {
   EXPECT_EQ(symcr::format::load16(record.data() + 10), 56u);  // header_size
   EXPECT_EQ(symcr::format::load32(record.data() + 12), 1u);   // flags: schema inline
   EXPECT_EQ(symcr::format::load64(record.data() + 16), 42u);  // sequence
-  EXPECT_GT(symcr::format::load64(record.data() + 24), 1600000000ull * 1000000000ull);  // timestamp_ns
+  EXPECT_GT(symcr::format::load64(record.data() + 24),
+            1600000000ull * 1000000000ull);  // timestamp_ns
   EXPECT_EQ(symcr::format::load64(record.data() + 32), blob.hash);
   EXPECT_EQ(symcr::format::load32(record.data() + 40), blob.size);
   EXPECT_EQ(symcr::format::load32(record.data() + 44), record.size() - 56 - blob.size);

@@ -17,10 +17,10 @@
 #include "engine.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
-#include "symcr/format/bytes.hpp"
 #include "plan.hpp"
 #include "store_fixture.hpp"
 #include "symcr/device.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 // Counts every allocation through operator new in this test binary: the store's save() must
@@ -113,7 +113,8 @@ TEST_F(StoreTest, CreatesAPreallocatedFileWithMode0600) {
   EXPECT_EQ(file.slot_size(), 65536u);
   EXPECT_EQ(file.slots_offset() % 4096, 0u);
   EXPECT_EQ(file.slots_offset(), 4096u + 2u * file.schema_area_size());
-  EXPECT_EQ(symcr::format::load32(file.bytes.data() + 32), symcr::detail::crc32c(file.bytes.data(), 32));
+  EXPECT_EQ(symcr::format::load32(file.bytes.data() + 32),
+            symcr::detail::crc32c(file.bytes.data(), 32));
   EXPECT_EQ(file.bytes.size(), file.slots_offset() + 4u * 65536u);
   struct stat info {};
   ASSERT_EQ(::stat(path.c_str(), &info), 0);

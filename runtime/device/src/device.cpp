@@ -58,8 +58,7 @@ std::size_t record_size(const Schema& schema) {
   }
   if (pointers > kMaxReferences) pointers = kMaxReferences;
   return format::kRecordHeaderSize + detail::values_size(schema) + format::kHeapCountSize +
-         format::kReferenceCountSize +
-         pointers * detail::kMaxReferenceSize +
+         format::kReferenceCountSize + pointers * detail::kMaxReferenceSize +
          format::clock_readings_size(detail::clock_count(schema));
 }
 

@@ -333,8 +333,7 @@ class PlanRunner {
     }
     if (payload_[at] != format::kBaseObject) return Result::Corrupt;
     const std::uint32_t writer_root = load32(payload_ + at + format::kReferenceObjectOffset);
-    const std::size_t step_count =
-        load16(payload_ + at + format::kObjectReferenceStepCountOffset);
+    const std::size_t step_count = load16(payload_ + at + format::kObjectReferenceStepCountOffset);
     const std::uint8_t* const steps_at = payload_ + at + format::kObjectReferenceStepsOffset;
     if (writer_root >= writer_roots_) return Result::Corrupt;
     // Each table's entries: two u16, the first at `entry`, the second 2 bytes on.
@@ -384,8 +383,8 @@ class PlanRunner {
     const std::uint32_t reader_clock = static_cast<std::uint32_t>(entry(index + 1));
     if (writer_clock >= writer_clocks_) return Result::Corrupt;
     const ClockInfo* clock = detail::clock_at(reader_, reader_clock);
-    const std::uint64_t saved = static_cast<std::uint64_t>(
-        format::clock_reading(payload_ + references_end_, writer_clock));
+    const std::uint64_t saved =
+        static_cast<std::uint64_t>(format::clock_reading(payload_ + references_end_, writer_clock));
     const std::uint64_t delta = clock != nullptr && clock->read != nullptr
                                     ? static_cast<std::uint64_t>(clock->read()) - saved
                                     : 0;

@@ -268,8 +268,8 @@ Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t s
   }
   const std::uint64_t record = format::claimed_record_size(h);
   if (record > size) return Result::Truncated;
-  const std::uint32_t crc = format::record_checksum(
-      bytes, static_cast<std::size_t>(record), format::crc32c_extend_small);
+  const std::uint32_t crc =
+      format::record_checksum(bytes, static_cast<std::size_t>(record), format::crc32c_extend_small);
   if (crc != h.checksum) return Result::Corrupt;
   if ((h.flags & ~format::kRecordSchemaInline) != 0) return Result::Corrupt;
   if (((h.flags & format::kRecordSchemaInline) != 0) != (h.schema_size != 0)) {

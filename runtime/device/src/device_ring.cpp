@@ -31,8 +31,9 @@ Storage memory_storage(void* base, std::size_t size) {
 Result Ring::open(const Storage& storage, std::size_t slot_size) {
   *this = Ring();
   const std::size_t unit = storage.erase_unit > 1 ? storage.erase_unit : 1;
-  if (storage.read == nullptr || storage.write == nullptr || slot_size < format::kRecordHeaderSize ||
-      slot_size % unit != 0 || (unit > 1 && storage.erase == nullptr)) {
+  if (storage.read == nullptr || storage.write == nullptr ||
+      slot_size < format::kRecordHeaderSize || slot_size % unit != 0 ||
+      (unit > 1 && storage.erase == nullptr)) {
     return Result::Unsupported;
   }
   const std::size_t slots = storage.size / slot_size;

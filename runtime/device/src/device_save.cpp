@@ -25,7 +25,7 @@ class Saver {
     for (std::uint32_t r = 0; r < schema_.root_count && result_ == Result::Ok; ++r) {
       value(schema_.roots[r].type, static_cast<const std::uint8_t*>(schema_.roots[r].address));
     }
-    put32(0);  // heap_count: no heap objects
+    put32(0);                                          // heap_count: no heap objects
     put32(static_cast<std::uint32_t>(target_count_));  // ref_count
     for (std::size_t i = 0; i < target_count_ && result_ == Result::Ok; ++i) reference(i);
     clock_readings();
@@ -236,8 +236,7 @@ Result save(const Build& build, std::uint64_t sequence, std::uint8_t* out, std::
   header.payload_size = static_cast<std::uint32_t>(record - format::kRecordHeaderSize);
   header.program_id = format::program_id(schema.program);
   format::encode_record_header(header, out);  // its checksum 0 while the CRC is computed
-  format::store32(out + format::kRecordChecksumOffset,
-                  format::crc32c_extend_small(0, out, record));
+  format::store32(out + format::kRecordChecksumOffset, format::crc32c_extend_small(0, out, record));
   *size = record;
   return Result::Ok;
 }

@@ -108,7 +108,9 @@ template <typename Size, typename Member>
 Size wire_size_of(const TypeInfo& type, Member member) {
   if (type.kind == Kind::Struct) {
     Size total = Size(0);
-    for (std::uint32_t f = 0; f < type.field_count; ++f) total = total + member(type.fields[f].type);
+    for (std::uint32_t f = 0; f < type.field_count; ++f) {
+      total = total + member(type.fields[f].type);
+    }
     return total;
   }
   if (type.kind == Kind::Array) return Size(member(type.element) * type.count);
@@ -153,8 +155,7 @@ inline void rebase_time(std::uint8_t* p, std::size_t size, std::int64_t never,
                         std::uint64_t delta) {
   std::uint64_t value = 0;
   for (std::size_t i = size; i-- > 0;) value = (value << 8) | p[i];
-  const std::uint64_t mask =
-      size >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * size)) - 1;
+  const std::uint64_t mask = size >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * size)) - 1;
   if (value == (static_cast<std::uint64_t>(never) & mask)) return;
   value = (value + delta) & mask;
   for (std::size_t i = 0; i < size; ++i) p[i] = static_cast<std::uint8_t>(value >> (8 * i));
