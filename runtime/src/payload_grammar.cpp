@@ -23,8 +23,8 @@ struct SaturatingSize {
     const std::uint64_t sum = value + other.value;
     return SaturatingSize(sum < value || sum > kHuge ? kHuge : sum);
   }
-  SaturatingSize operator*(std::uint64_t count) const {
-    return SaturatingSize(value != 0 && count > kHuge / value ? kHuge : value * count);
+  SaturatingSize operator*(SaturatingSize count) const {
+    return SaturatingSize(value != 0 && count.value > kHuge / value ? kHuge : value * count.value);
   }
 };
 

@@ -79,12 +79,17 @@ std::uint32_t clock_count(const Schema& schema) {
   return count;
 }
 
+// The first field's clock of that index: a loop of its own, to stop there.
 const ClockInfo* clock_at(const Schema& schema, std::uint32_t index) {
-  const ClockInfo* found = nullptr;
-  format::for_each_field_clock(schema, [&found, index](const ClockInfo& clock) {
-    if (clock.index == index && found == nullptr) found = &clock;
-  });
-  return found;
+  for (std::uint32_t t = 0; t < schema.type_count; ++t) {
+    const TypeInfo& type = schema.types[t];
+    if (type.kind != Kind::Struct) continue;
+    for (std::uint32_t f = 0; f < type.field_count; ++f) {
+      const ClockInfo* clock = format::field_clock(type.fields[f]);
+      if (clock != nullptr && clock->index == index) return clock;
+    }
+  }
+  return nullptr;
 }
 
 std::size_t values_size(const Schema& schema) {

@@ -11,7 +11,6 @@ namespace {
 
 using format::load16;
 using format::load32;
-using format::load64;
 
 class Restorer {
  public:
@@ -247,11 +246,12 @@ class Restorer {
   std::uint64_t deltas_[kMaxClocks] = {};
 };
 
-// The record's header checked against this build; the payload's bounds in `*payload`.
+// The record's header checked against this build; the payload's bounds in `*payload`, the
+// record's sequence in `*sequence`.
 // `*planned`: the plan of the record's previous build, or null for this build's own record.
 Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t size,
                     std::size_t* payload_offset, std::size_t* payload_size,
-                    const PlannedSchema** planned) {
+                    std::uint64_t* sequence, const PlannedSchema** planned) {
   format::RecordHeader h;
   switch (format::decode_record_header(bytes, size, &h)) {
     case format::HeaderFault::None:
@@ -290,6 +290,7 @@ Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t s
   if (h.program_id != 0 && reader != 0 && h.program_id != reader) return Result::OtherProgram;
   *payload_offset = std::size_t{h.header_size} + h.schema_size;  // an inline schema: skipped
   *payload_size = h.payload_size;
+  *sequence = h.sequence;
   return Result::Ok;
 }
 
@@ -326,17 +327,17 @@ Result restore(const Build& build, const std::uint8_t* bytes, std::size_t size,
   if (detail::first_unheld_type(schema) != kNoType) return Result::Unsupported;
   if (scratch == nullptr || scratch_capacity < scratch_size(schema)) return Result::NoSpace;
   std::size_t payload = 0, payload_size = 0;
+  std::uint64_t record_sequence = 0;
   const PlannedSchema* planned = nullptr;
-  Result result = check_record(build, bytes, size, &payload, &payload_size, &planned);
+  Result result =
+      check_record(build, bytes, size, &payload, &payload_size, &record_sequence, &planned);
   if (result != Result::Ok) return result;
   result = planned != nullptr
                ? detail::restore_planned_payload(schema, *planned, bytes + payload, payload_size,
                                                  scratch, scratch_capacity)
                : detail::restore_held_payload(schema, bytes + payload, payload_size, scratch,
                                               scratch_capacity);
-  if (result == Result::Ok && sequence != nullptr) {
-    *sequence = load64(bytes + format::kRecordSequenceOffset);
-  }
+  if (result == Result::Ok && sequence != nullptr) *sequence = record_sequence;
   return result;
 }
 

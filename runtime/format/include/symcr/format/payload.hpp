@@ -67,31 +67,27 @@ static_assert(kObjectReferenceStepCountOffset == kReferenceObjectOffset + 4 &&
 // bytes are their members'.
 inline std::uint32_t own_wire_size(const TypeInfo& type) {
   switch (type.kind) {
-    case Kind::Bool:
-      return kBoolSize;
-    case Kind::Int:
-    case Kind::UInt:
-    case Kind::Float:
-    case Kind::Enum:
-    case Kind::Union:
-      return type.size;
-    case Kind::Pointer:
-    case Kind::SharedPtr:
-      return kPointerCodeSize;
-    case Kind::String:
-    case Kind::Container:
-      return kCountSize;
-    case Kind::Variant:
-      return kVariantIndexSize;
-    case Kind::Optional:
-    case Kind::UniquePtr:
-      return kPresenceSize;
     case Kind::Struct:
     case Kind::Array:
       return 0;
+    case Kind::Bool:  // kBoolSize
+    case Kind::Optional:
+    case Kind::UniquePtr:
+      return kPresenceSize;
+    case Kind::Pointer:
+    case Kind::SharedPtr:  // kPointerCodeSize
+    case Kind::String:
+    case Kind::Container:  // kCountSize
+    case Kind::Variant:
+      return kVariantIndexSize;
+    default:  // Int, UInt, Float, Enum, Union: their bytes
+      return type.size;
   }
-  return 0;
 }
+// The cases above share a return by size.
+static_assert(kBoolSize == kPresenceSize && kPointerCodeSize == kVariantIndexSize &&
+                  kCountSize == kVariantIndexSize,
+              "own_wire_size groups the prefixes by their size");
 
 // Whether the values of `kind` take the same bytes whatever their value, when their members
 // (a struct's fields, an array's element) do.
@@ -102,8 +98,9 @@ inline bool fixed_wire_kind(Kind kind) {
 
 // The least bytes a value of `type` takes (all its bytes for a fixed_wire_kind whose members are
 // fixed): its own, plus each field's for a Struct and `count` elements' for an Array, a
-// member's bytes coming from `member(member_type)`. `Size` is the arithmetic: the device's
-// std::size_t, or the host's saturating sizes for untrusted schemas.
+// member's bytes coming from `member(member_type)`. `Size` is the arithmetic (an array's count
+// is converted to it): the device's std::size_t, or the host's saturating sizes for untrusted
+// schemas.
 template <typename Size, typename Member>
 Size wire_size_of(const TypeInfo& type, Member member) {
   if (type.kind == Kind::Struct) {
@@ -113,22 +110,23 @@ Size wire_size_of(const TypeInfo& type, Member member) {
     }
     return total;
   }
-  if (type.kind == Kind::Array) return Size(member(type.element) * type.count);
+  if (type.kind == Kind::Array) return member(type.element) * Size(type.count);
   return Size(own_wire_size(type));
 }
 
-// The clocks of a schema's time fields (kFieldClockTime; docs/format.md §2): calls `on_clock`
-// with each field's clock, once per such field.
+// The clock whose times a struct's field holds (kFieldClockTime; docs/format.md §2), or null.
+inline const ClockInfo* field_clock(const FieldInfo& field) {
+  return (field.flags & kFieldClockTime) && field.time ? field.time->clock : nullptr;
+}
+
+// Calls `on_clock` with the clock of each time field of `schema`'s structs, once per field.
 template <typename OnClock>
 void for_each_field_clock(const Schema& schema, OnClock on_clock) {
   for (std::uint32_t t = 0; t < schema.type_count; ++t) {
     const TypeInfo& type = schema.types[t];
     if (type.kind != Kind::Struct) continue;
     for (std::uint32_t f = 0; f < type.field_count; ++f) {
-      const FieldInfo& field = type.fields[f];
-      if ((field.flags & kFieldClockTime) && field.time && field.time->clock) {
-        on_clock(*field.time->clock);
-      }
+      if (const ClockInfo* clock = field_clock(type.fields[f])) on_clock(*clock);
     }
   }
 }

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 #include "symcr/format/bytes.hpp"
 #include "symcr/format/hashes.hpp"
@@ -85,7 +86,7 @@ struct RecordHeader {
 
 // Writes the magic and `h` into the kRecordHeaderSize bytes at `out`.
 inline void encode_record_header(const RecordHeader& h, std::uint8_t* out) {
-  for (std::size_t i = 0; i < kRecordMagicSize; ++i) out[i] = kRecordMagic[i];
+  std::memcpy(out, kRecordMagic, kRecordMagicSize);
   store16(out + kRecordVersionOffset, h.format_version);
   store16(out + kRecordHeaderSizeOffset, h.header_size);
   store32(out + kRecordFlagsOffset, h.flags);
