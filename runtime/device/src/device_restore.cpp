@@ -253,18 +253,11 @@ Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t s
                     std::size_t* payload_offset, std::size_t* payload_size,
                     std::uint64_t* sequence, const PlannedSchema** planned) {
   format::RecordHeader h;
-  switch (format::decode_record_header(bytes, size, &h)) {
-    case format::HeaderFault::None:
-      break;
-    case format::HeaderFault::Empty:
-    case format::HeaderFault::Truncated:
-      return Result::Truncated;
-    case format::HeaderFault::BadMagic:  // too short to be a record at all: truncated
-      return size < format::kRecordHeaderSize ? Result::Truncated : Result::Corrupt;
-    case format::HeaderFault::FutureVersion:
-      return Result::FutureVersion;
-    default:
-      return Result::Corrupt;
+  const format::HeaderFault fault = format::decode_record_header(bytes, size, &h);
+  if (fault == format::HeaderFault::FutureVersion) return Result::FutureVersion;
+  // Too short for a header, whatever its first bytes: truncated; else not a valid record.
+  if (fault != format::HeaderFault::None) {
+    return size < format::kRecordHeaderSize ? Result::Truncated : Result::Corrupt;
   }
   const std::uint64_t record = format::claimed_record_size(h);
   if (record > size) return Result::Truncated;

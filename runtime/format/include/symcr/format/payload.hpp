@@ -74,20 +74,19 @@ inline std::uint32_t own_wire_size(const TypeInfo& type) {
     case Kind::Optional:
     case Kind::UniquePtr:
       return kPresenceSize;
-    case Kind::Pointer:
-    case Kind::SharedPtr:  // kPointerCodeSize
-    case Kind::String:
-    case Kind::Container:  // kCountSize
-    case Kind::Variant:
-      return kVariantIndexSize;
-    default:  // Int, UInt, Float, Enum, Union: their bytes
-      return type.size;
+    default:  // from String on, a code, count or index; before, a scalar's or union's bytes
+      return type.kind >= Kind::String ? kVariantIndexSize : type.size;
   }
 }
-// The cases above share a return by size.
+// own_wire_size groups the kinds by their sizes and by Kind's values (generated.hpp).
 static_assert(kBoolSize == kPresenceSize && kPointerCodeSize == kVariantIndexSize &&
                   kCountSize == kVariantIndexSize,
               "own_wire_size groups the prefixes by their size");
+static_assert(Kind::Union < Kind::String && Kind::Array < Kind::String &&
+                  Kind::String < Kind::Container && Kind::Container < Kind::Optional &&
+                  Kind::Optional < Kind::Variant && Kind::Variant < Kind::Pointer &&
+                  Kind::Pointer < Kind::UniquePtr && Kind::UniquePtr < Kind::SharedPtr,
+              "the kinds from String on have a prefix or code, the ones before do not");
 
 // Whether the values of `kind` take the same bytes whatever their value, when their members
 // (a struct's fields, an array's element) do.
