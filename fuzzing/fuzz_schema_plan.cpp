@@ -160,7 +160,7 @@ class BuiltReader {
 bool take(const std::uint8_t*& data, std::size_t& size, const std::uint8_t*& out,
           std::size_t& out_size) {
   if (size < 4) return false;
-  const std::uint32_t length = symcr::detail::le::load32(data);
+  const std::uint32_t length = symcr::format::load32(data);
   data += 4;
   size -= 4;
   if (length > size) return false;
