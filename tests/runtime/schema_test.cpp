@@ -7,6 +7,7 @@
 #include "engine.hpp"
 #include "handwritten_schemas.hpp"
 #include "schema_facts.hpp"
+#include "symcr/format/hashes.hpp"
 
 namespace engine_tests {
 namespace {

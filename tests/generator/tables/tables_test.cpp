@@ -12,6 +12,7 @@
 #include "engine.hpp"
 #include "roots.hpp"
 #include "schema_facts.hpp"
+#include "symcr/format/hashes.hpp"
 
 // offsetof on these non-standard-layout types is conditionally supported; g++ supports it.
 #pragma GCC diagnostic ignored "-Winvalid-offsetof"
