@@ -57,12 +57,12 @@ Status detect_file_kind(const std::string& path, FileKind& out) {
     out = FileKind::Store;
     return Status();
   }
-  if (got == sizeof magic && std::memcmp(magic, detail::kRecordMagic, sizeof magic) == 0) {
+  if (got == sizeof magic && std::memcmp(magic, symcr::format::kRecordMagic, sizeof magic) == 0) {
     out = FileKind::Record;
     return Status();
   }
   if (got < sizeof magic &&
-      std::memcmp(magic, detail::kRecordMagic, got) == 0) {  // a checkpoint cut short
+      std::memcmp(magic, symcr::format::kRecordMagic, got) == 0) {  // a checkpoint cut short
     out = FileKind::Record;
     return Status();
   }

@@ -3,7 +3,6 @@
 // checkpoint of that build. For a device, which restores only its own build's checkpoints: the
 // host converts across a firmware update, the device restores the result on its same-build
 // path. Nothing is written unless the whole conversion succeeds.
-#include <cstring>
 #include <map>
 #include <string>
 #include <vector>
@@ -16,6 +15,8 @@
 #include "host_layout.hpp"
 #include "parsed_schema.hpp"
 #include "payload_grammar.hpp"
+#include "symcr/format/bytes.hpp"
+#include "symcr/format/payload.hpp"
 #include "record.hpp"
 #include "report_access.hpp"
 #include "report_table.hpp"
@@ -36,13 +37,13 @@ struct ClockTimebase {
 ClockTimebase clock_timebase(const Schema& writer, const std::uint8_t* payload, std::size_t size) {
   ClockTimebase timebase;
   const std::vector<const ClockInfo*> clocks = detail::schema_clocks(writer);
-  if (clocks.empty() || size < 8 + 8 * clocks.size()) return timebase;
-  const std::uint8_t* trailer = payload + size - 8 - 8 * clocks.size();
-  std::memcpy(&timebase.epoch, trailer, 8);
-  for (std::size_t c = 0; c < clocks.size(); ++c) {
-    std::int64_t reading = 0;
-    std::memcpy(&reading, trailer + 8 + 8 * c, 8);
-    if (clocks[c] != nullptr) timebase.readings[clocks[c]->name] = reading;
+  const auto count = static_cast<std::uint32_t>(clocks.size());
+  const std::size_t trailer_size = format::clock_readings_size(count);
+  if (count == 0 || size < trailer_size) return timebase;
+  const std::uint8_t* trailer = payload + size - trailer_size;
+  timebase.epoch = format::load64(trailer);
+  for (std::uint32_t c = 0; c < count; ++c) {
+    if (clocks[c] != nullptr) timebase.readings[clocks[c]->name] = format::clock_reading(trailer, c);
   }
   return timebase;
 }
@@ -54,18 +55,21 @@ ClockTimebase clock_timebase(const Schema& writer, const std::uint8_t* payload, 
 std::vector<std::uint8_t> converted_readings(const Schema& build, const ClockTimebase& timebase,
                                              detail::ClockReadings& out) {
   const std::vector<const ClockInfo*> clocks = detail::schema_clocks(build);
-  std::vector<std::uint8_t> bytes(8 * clocks.size());
-  for (std::size_t c = 0; c < clocks.size(); ++c) {
+  const auto count = static_cast<std::uint32_t>(clocks.size());
+  std::vector<std::uint8_t> bytes(format::clock_readings_size(count));
+  if (count != 0) format::store64(bytes.data(), timebase.epoch);
+  for (std::uint32_t c = 0; c < count; ++c) {
     std::int64_t reading = 0;
     if (clocks[c] != nullptr) {
       const auto found = timebase.readings.find(clocks[c]->name);
       if (found != timebase.readings.end()) reading = found->second;
     }
-    std::memcpy(bytes.data() + 8 * c, &reading, 8);
+    format::store64(bytes.data() + format::clock_reading_offset(c),
+                    static_cast<std::uint64_t>(reading));
   }
   out.epoch = timebase.epoch;
-  out.readings = bytes.data();
-  out.count = static_cast<std::uint32_t>(clocks.size());
+  out.bytes = bytes.data();
+  out.count = count;
   return bytes;
 }
 

@@ -56,7 +56,7 @@ std::vector<HeaderField> describe_header(const detail::RecordHeader& h, const Sc
              std::to_string(schema->root_count) + " roots";
   }
   fields.push_back({"schema", where, JsonScalar::of(schema_origin)});
-  const bool authenticated = (h.flags & detail::kRecordAuthenticated) != 0;
+  const bool authenticated = (h.flags & symcr::format::kRecordAuthenticated) != 0;
   fields.push_back({"authenticated",
                     authenticated ? "HMAC-SHA-256, key id " + std::to_string(h.key_id) +
                                         " (symcr verify --key-file checks it)"

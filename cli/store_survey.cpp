@@ -277,7 +277,7 @@ void print_store_overview(const std::string& path, const detail::StoreReader& st
   const detail::StoreGeometry& g = store.geometry();
   Table header;
   header.add({{"store"}, {path}});
-  header.add({{"format_version"}, {std::to_string(detail::kStoreFileFormatVersion)}});
+  header.add({{"format_version"}, {std::to_string(symcr::format::kStoreFileFormatVersion)}});
   header.add(
       {{"slots"}, {std::to_string(g.slot_count) + " x " + std::to_string(g.slot_size) + " bytes"}});
   for (int i = 0; i < 2; ++i) {

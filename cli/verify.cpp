@@ -51,7 +51,7 @@ std::vector<Check> check_record_file(const std::vector<std::uint8_t>& bytes, std
     }
     checks.push_back(
         {"authentication", true, "MAC verifies with key id " + std::to_string(h.key_id)});
-  } else if ((h.flags & detail::kRecordAuthenticated) != 0) {
+  } else if ((h.flags & symcr::format::kRecordAuthenticated) != 0) {
     checks.push_back({"authentication", true,
                       "MAC with key id " + std::to_string(h.key_id) +
                           ", not verified (no --key-file)"});

@@ -164,7 +164,7 @@ class BuiltReader {
 bool take(const std::uint8_t*& data, std::size_t& size, const std::uint8_t*& out,
           std::size_t& out_size) {
   if (size < 4) return false;
-  const std::uint32_t length = symcr::detail::le::load32(data);
+  const std::uint32_t length = symcr::format::load32(data);
   data += 4;
   size -= 4;
   if (length > size) return false;
@@ -209,7 +209,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 
   symcr::detail::ParsedSchema writer;
   if (!symcr::detail::parse_schema(writer_bytes, writer_size, writer).ok()) return 0;
-  const std::uint64_t writer_hash = symcr::detail::fnv1a64(writer_bytes, writer_size);
+  const std::uint64_t writer_hash = symcr::format::fnv1a64(writer_bytes, writer_size);
   NullVisitor visitor;
   (void)symcr::detail::visit_payload(writer.schema(), payload, payload_size, visitor);
 

@@ -49,7 +49,7 @@
 
 namespace {
 
-namespace le = symcr::detail::le;
+namespace le = symcr::format;
 
 constexpr std::uint64_t kMaxFile = 4u << 20;
 
@@ -85,7 +85,7 @@ void fix_area(std::vector<std::uint8_t>& area) {
   if (area.size() < 16) return;
   const std::uint32_t size = le::load32(area.data() + 8);
   if (size > area.size() - 16) return;
-  le::store64(area.data(), symcr::detail::fnv1a64(area.data() + 16, size));
+  le::store64(area.data(), symcr::format::fnv1a64(area.data() + 16, size));
   const std::uint32_t crc = symcr::detail::crc32c_extend(symcr::detail::crc32c(area.data(), 12),
                                                          area.data() + 16, size);
   le::store32(area.data() + 12, crc);
@@ -163,7 +163,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       for (std::size_t at = 0; at + 72 <= counter.size(); at += 128) {
         symcr::detail::OwnedKey key = keys->signing();
         le::store32(counter.data() + at + 8, key.id);
-        std::uint8_t mac[symcr::detail::kSha256Size];
+        std::uint8_t mac[symcr::format::kSha256Size];
         symcr::detail::store_item_mac(key, "symcr freshness counter", counter.data() + at + 24,
                                       counter.data() + at, 40, mac);
         std::copy(mac, mac + sizeof mac, counter.data() + at + 40);

@@ -21,9 +21,10 @@
 #include "crc32c.hpp"
 #include "encode.hpp"
 #include "handwritten_schemas.hpp"
-#include "little_endian.hpp"
 #include "record.hpp"
 #include "schema_blob.hpp"
+#include "symcr/format/bytes.hpp"
+#include "symcr/format/hashes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace fuzz {
@@ -186,34 +187,38 @@ inline std::vector<std::uint8_t> world_snapshot(unsigned world) {
 // standalone checkpoint when null.
 inline void fix_record_integrity(std::uint8_t* p, std::size_t size,
                                  const symcr::detail::RecordBinding* binding = nullptr) {
-  namespace le = symcr::detail::le;
-  if (size < symcr::detail::kRecordHeaderSize) return;
-  const std::uint64_t header_size = le::load16(p + 10);
-  const std::uint32_t flags = le::load32(p + 12);
-  const std::uint64_t schema_size = le::load32(p + 40);
-  const std::uint64_t payload_size = le::load32(p + 44);
-  if ((flags & symcr::detail::kRecordSchemaInline) && header_size + schema_size <= size) {
-    le::store64(p + 32, symcr::detail::fnv1a64(p + header_size, schema_size));
+  if (size < symcr::format::kRecordHeaderSize) return;
+  const std::uint64_t header_size =
+      symcr::format::load16(p + symcr::format::kRecordHeaderSizeOffset);
+  const std::uint32_t flags = symcr::format::load32(p + symcr::format::kRecordFlagsOffset);
+  const std::uint64_t schema_size =
+      symcr::format::load32(p + symcr::format::kRecordSchemaSizeOffset);
+  const std::uint64_t payload_size =
+      symcr::format::load32(p + symcr::format::kRecordPayloadSizeOffset);
+  if ((flags & symcr::format::kRecordSchemaInline) && header_size + schema_size <= size) {
+    symcr::format::store64(p + symcr::format::kRecordSchemaHashOffset,
+                           symcr::format::fnv1a64(p + header_size, schema_size));
   }
   const std::uint64_t total = header_size + schema_size + payload_size;
   // With keys set, an authenticated record is signed again, so that mutations get past the MAC
   // (its MAC version and journal freshness stay as mutated: the reader checks them).
   const symcr::detail::KeySnapshot keys = symcr::detail::current_keys();
-  if (keys && (flags & symcr::detail::kRecordAuthenticated) &&
-      header_size >= symcr::detail::kRecordAuthenticatedHeaderSize && total <= size) {
+  if (keys && (flags & symcr::format::kRecordAuthenticated) &&
+      header_size >= symcr::format::kRecordAuthenticatedHeaderSize && total <= size) {
     symcr::detail::RecordBinding standalone;
     if (binding == nullptr) {
-      if ((flags & symcr::detail::kRecordSchemaInline) && header_size + schema_size <= size) {
+      if ((flags & symcr::format::kRecordSchemaInline) && header_size + schema_size <= size) {
         symcr::detail::schema_digest(p + header_size, schema_size, standalone.schema_digest);
       }
       binding = &standalone;
     }
-    le::store32(p + symcr::detail::kRecordKeyIdOffset, keys->signing().id);
+    symcr::format::store32(p + symcr::format::kRecordKeyIdOffset, keys->signing().id);
     symcr::detail::sign_record(*keys, p, total, *binding);
   }
-  if (header_size >= symcr::detail::kRecordHeaderSize && total <= size) {
-    le::store32(p + 48, 0);
-    le::store32(p + 48, symcr::detail::crc32c(p, total));
+  if (header_size >= symcr::format::kRecordHeaderSize && total <= size) {
+    symcr::format::store32(p + symcr::format::kRecordChecksumOffset, 0);
+    symcr::format::store32(p + symcr::format::kRecordChecksumOffset,
+                           symcr::detail::crc32c(p, total));
   }
 }
 

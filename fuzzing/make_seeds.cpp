@@ -1,5 +1,6 @@
 // Writes the fuzzers' seed corpora from real checkpoints of the test program's worlds:
-//   symcr_fuzz_seeds <dir>   ->  <dir>/record_restore/*, <dir>/schema_plan/*, <dir>/store/*
+//   symcr_fuzz_seeds <dir>   ->  <dir>/record_restore/*, <dir>/schema_plan/*, <dir>/store/*,
+//                                <dir>/record_header/*
 // fuzzing/run calls it on every run (so seeds follow format changes); the committed copies in
 // fuzzing/corpus/ are refreshed with `fuzzing/run --refresh-corpus`.
 #include <sys/stat.h>
@@ -23,7 +24,7 @@
 
 namespace {
 
-namespace le = symcr::detail::le;
+namespace le = symcr::format;
 using namespace fuzz;
 
 std::int32_t outside_static = 5;
@@ -296,6 +297,7 @@ int main(int argc, char** argv) {
   const std::string records = dir_of(root, "record_restore");
   const std::string plans = dir_of(root, "schema_plan");
   const std::string stores = dir_of(root, "store");
+  const std::string headers = dir_of(root, "record_header");
   std::size_t written = 0;
 
   for (unsigned world = 0; world < kWorldCount; ++world) {
@@ -310,6 +312,8 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s: %s\n", world_name(world), status.message());
       return 1;
     }
+    write_seed(headers, std::string(world_name(world)) + "-record", record);  // no control byte
+    ++written;
     for (unsigned reader : {world, partner(world)}) {
       // Unchanged and different reader; with integrity fixed up after mutation, and not.
       for (std::uint8_t extra : {std::uint8_t{0x10}, std::uint8_t{0x50}, std::uint8_t{0x00}}) {
@@ -357,6 +361,8 @@ int main(int argc, char** argv) {
                               std::to_string(extra), seed);
       ++written;
     }
+    write_seed(headers, std::string(world_name(world)) + "-authenticated", record);
+    ++written;
   }
 
   // Stores: a few saves of a world, then (for pairs) a save by the patched build, so both

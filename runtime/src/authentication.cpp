@@ -4,7 +4,7 @@
 #include <cstring>
 #include <mutex>
 
-#include "little_endian.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr {
 namespace detail {
@@ -25,20 +25,22 @@ constexpr char kRecordDomain[] = "symcr record MAC 2";
 
 // The MAC of `record` with its checksum and MAC fields read as zero, bound to `binding`.
 void record_mac(const std::uint8_t* record, std::size_t size, const OwnedKey& key,
-                const RecordBinding& binding, std::uint8_t (&mac)[kSha256Size]) {
-  static constexpr std::uint8_t kZero[kSha256Size] = {};
-  HmacSha256 hmac(key.bytes.data(), key.bytes.size());
+                const RecordBinding& binding, std::uint8_t (&mac)[format::kSha256Size]) {
+  static constexpr std::uint8_t kZero[format::kSha256Size] = {};
+  format::HmacSha256 hmac(key.bytes.data(), key.bytes.size());
   hmac.update(kRecordDomain, sizeof kRecordDomain);
   hmac.update(binding.store_id, kStoreIdSize);
   std::uint8_t location[8];
-  le::store64(location, binding.location);
+  format::store64(location, binding.location);
   hmac.update(location, sizeof location);
-  hmac.update(binding.schema_digest, kSha256Size);
-  hmac.update(record, kRecordChecksumOffset);
+  hmac.update(binding.schema_digest, format::kSha256Size);
+  hmac.update(record, format::kRecordChecksumOffset);
   hmac.update(kZero, 4);
-  hmac.update(record + kRecordChecksumOffset + 4, kRecordMacOffset - kRecordChecksumOffset - 4);
-  hmac.update(kZero, kSha256Size);
-  hmac.update(record + kRecordMacOffset + kSha256Size, size - kRecordMacOffset - kSha256Size);
+  hmac.update(record + format::kRecordChecksumOffset + 4,
+              format::kRecordMacOffset - format::kRecordChecksumOffset - 4);
+  hmac.update(kZero, format::kSha256Size);
+  hmac.update(record + format::kRecordMacOffset + format::kRecordMacSize,
+              size - format::kRecordMacOffset - format::kRecordMacSize);
   hmac.finish(mac);
 }
 
@@ -69,9 +71,9 @@ std::atomic<std::uint64_t> schema_digests{0};
 }  // namespace
 
 void schema_digest(const std::uint8_t* schema, std::size_t size,
-                   std::uint8_t (&digest)[kSha256Size]) {
+                   std::uint8_t (&digest)[format::kSha256Size]) {
   schema_digests.fetch_add(1, std::memory_order_relaxed);
-  Sha256 sha;
+  format::Sha256 sha;
   sha.update(schema, size);
   sha.finish(digest);
 }
@@ -80,26 +82,26 @@ std::uint64_t schema_digest_count() { return schema_digests.load(std::memory_ord
 
 void sign_record(const KeyRing& keys, std::uint8_t* record, std::size_t size,
                  const RecordBinding& binding) {
-  std::uint8_t mac[kSha256Size];
+  std::uint8_t mac[format::kSha256Size];
   record_mac(record, size, keys.signing(), binding, mac);
-  std::memcpy(record + kRecordMacOffset, mac, sizeof mac);
+  std::memcpy(record + format::kRecordMacOffset, mac, sizeof mac);
 }
 
 Status check_authentication(const KeyRing* keys, const std::uint8_t* record,
                             const RecordView& view, const RecordBinding& binding) {
   if (keys == nullptr) return Status();
   const RecordHeader& header = view.header;
-  if ((header.flags & kRecordAuthenticated) == 0) {
+  if ((header.flags & format::kRecordAuthenticated) == 0) {
     return Status(Error::Unauthenticated,
                   "the checkpoint carries no MAC, and this program authenticates checkpoints: "
                   "refused");
   }
-  if (header.mac_version != kRecordMacVersion) {
+  if (header.mac_version != format::kRecordMacVersion) {
     return Status(Error::Unauthenticated,
                   "the checkpoint's MAC is of version %u, which binds neither its store, its "
                   "slot nor its schema's SHA-256 (this build makes and accepts version %u): "
                   "refused",
-                  header.mac_version, kRecordMacVersion);
+                  header.mac_version, format::kRecordMacVersion);
   }
   const OwnedKey* key = keys->find(header.key_id);
   if (key == nullptr) {
@@ -108,9 +110,9 @@ Status check_authentication(const KeyRing* keys, const std::uint8_t* record,
                   "hold: refused",
                   header.key_id);
   }
-  std::uint8_t mac[kSha256Size];
+  std::uint8_t mac[format::kSha256Size];
   record_mac(record, view.record_size, *key, binding, mac);
-  if (!equal_macs(mac, record + kRecordMacOffset, kSha256Size)) {
+  if (!format::equal_macs(mac, record + format::kRecordMacOffset, format::kSha256Size)) {
     return Status(Error::Unauthenticated,
                   "the checkpoint's MAC does not verify with key id %u: it was changed after it "
                   "was written, written with another key, or moved from another slot or "
@@ -131,8 +133,8 @@ Status check_standalone_authentication(const KeyRing* keys, const std::uint8_t* 
 
 void store_item_mac(const OwnedKey& key, const char* domain, const std::uint8_t* store_id,
                     const std::uint8_t* bytes, std::size_t size,
-                    std::uint8_t (&mac)[kSha256Size]) {
-  HmacSha256 hmac(key.bytes.data(), key.bytes.size());
+                    std::uint8_t (&mac)[format::kSha256Size]) {
+  format::HmacSha256 hmac(key.bytes.data(), key.bytes.size());
   hmac.update(domain, std::strlen(domain) + 1);
   hmac.update(store_id, kStoreIdSize);
   hmac.update(bytes, size);

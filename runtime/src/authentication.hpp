@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "record.hpp"
-#include "sha256.hpp"
+#include "symcr/format/sha256.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {
@@ -46,10 +46,10 @@ inline constexpr std::uint64_t kNoLocation = UINT64_MAX;
 struct RecordBinding {
   std::uint8_t store_id[kStoreIdSize] = {};
   std::uint64_t location = kNoLocation;
-  std::uint8_t schema_digest[kSha256Size] = {};  // SHA-256 of the writer schema's bytes
+  std::uint8_t schema_digest[format::kSha256Size] = {};  // SHA-256 of the writer schema's bytes
 };
 void schema_digest(const std::uint8_t* schema, std::size_t size,
-                   std::uint8_t (&digest)[kSha256Size]);
+                   std::uint8_t (&digest)[format::kSha256Size]);
 // How many schema_digest() calls this process made. Hashing a schema costs several times the
 // rest of opening a store, so only keys make a store compute one (the tests check this).
 std::uint64_t schema_digest_count();
@@ -74,7 +74,7 @@ Status check_standalone_authentication(const KeyRing* keys, const std::uint8_t* 
 // `key` for the store `store_id`; `domain` tells the kinds apart.
 void store_item_mac(const OwnedKey& key, const char* domain, const std::uint8_t* store_id,
                     const std::uint8_t* bytes, std::size_t size,
-                    std::uint8_t (&mac)[kSha256Size]);
+                    std::uint8_t (&mac)[format::kSha256Size]);
 
 }  // namespace symcr::detail
 

@@ -10,9 +10,9 @@
 #include <cstdio>
 #include <string>
 
-#include "device_format.hpp"
 #include "report_access.hpp"
 #include "restorer.hpp"
+#include "symcr/format/payload.hpp"
 
 namespace symcr::detail {
 
@@ -72,8 +72,8 @@ void Restorer::decide_clock_deltas(const ClockReadings& readings) {
 void Restorer::rebase(std::uint8_t* dst, const TypeInfo& type, const FieldTime& time) const {
   if (!rebasing_) return;
   if (type.kind != Kind::Int && type.kind != Kind::UInt) return;
-  device::detail::rebase_time(dst, type.size, time.never,
-                              static_cast<std::uint64_t>(clock_deltas_[time.clock->index]));
+  format::rebase_time(dst, type.size, time.never,
+                      static_cast<std::uint64_t>(clock_deltas_[time.clock->index]));
 }
 
 }  // namespace restoring

@@ -18,10 +18,12 @@
 #endif
 #endif
 
+#include "symcr/format/hashes.hpp"
+
 namespace symcr::detail {
 namespace {
 
-constexpr std::uint32_t kPolynomial = 0x82F63B78u;  // Castagnoli, bit-reflected
+constexpr std::uint32_t kPolynomial = format::kCrc32cPolynomial;
 
 // Appending zero bits to a CRC register is linear: a 32x32 GF(2) matrix, one column per
 // register bit.

@@ -1,4 +1,5 @@
-// CRC-32C (Castagnoli), the checksum of records, store headers and schema areas.
+// CRC-32C (Castagnoli), the checksum of records, store headers and schema areas: the host's
+// fast implementations of the format core's CRC (symcr/format/hashes.hpp).
 #ifndef SYMCR_SRC_CRC32C_HPP
 #define SYMCR_SRC_CRC32C_HPP
 

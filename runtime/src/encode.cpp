@@ -232,16 +232,14 @@ class Encoder {
   // was read from memory.
   void put_clock_readings() {
     if (given_readings_ != nullptr) {
-      std::memcpy(grow(8), &given_readings_->epoch, 8);
-      std::memcpy(grow(8 * std::size_t{given_readings_->count}), given_readings_->readings,
-                  8 * std::size_t{given_readings_->count});
+      const std::size_t size = format::clock_readings_size(given_readings_->count);
+      std::memcpy(grow(size), given_readings_->bytes, size);
       return;
     }
-    const std::uint64_t epoch = process_epoch();
-    std::memcpy(grow(8), &epoch, 8);
+    format::store64(grow(format::kClockEpochSize), process_epoch());
     for (const ClockInfo* clock : facts_.clocks) {
       const std::int64_t reading = clock && clock->read ? clock->read() : 0;
-      std::memcpy(grow(8), &reading, 8);
+      format::store64(grow(format::kClockReadingSize), static_cast<std::uint64_t>(reading));
     }
   }
 
@@ -797,7 +795,7 @@ class Encoder {
     if (!ok()) return region;
     put_u32(type);
     s_.heap.push_back(HeapObject{region, pos_});
-    put_u8(reference.shared ? 1 : 0);
+    put_u8(reference.shared ? format::kHeapOwnerShared : format::kHeapOwnerRaw);
     encoding_heap_ = region;
     encode_object(type, reinterpret_cast<const std::uint8_t*>(start));
     encoding_heap_ = kNoRegion;

@@ -13,8 +13,8 @@
 #include <cstring>
 
 #include "file_system.hpp"
-#include "little_endian.hpp"
 #include "record.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -221,23 +221,19 @@ Status read_record_file(const char* path, std::vector<std::uint8_t>& out,
   Status status = open_regular_file(path, fd, info);
   if (!status.ok()) return status;
   const auto file_size = static_cast<std::uint64_t>(info.st_size);
-  out.resize(static_cast<std::size_t>(std::min<std::uint64_t>(file_size, kRecordHeaderSize)));
+  out.resize(
+      static_cast<std::size_t>(std::min<std::uint64_t>(file_size, format::kRecordHeaderSize)));
   std::size_t got = 0;
   status = pread_full(fd.get(), out.data(), out.size(), 0, got, path);
   if (!status.ok()) return status;
   out.resize(got);
   // Only a header the parser would accept says how long the record is; any other head is all
   // the parser needs to refuse the file.
-  if (got < kRecordHeaderSize || std::memcmp(out.data(), kRecordMagic, sizeof kRecordMagic) != 0) {
+  format::RecordHeader header;
+  if (format::decode_record_header(out.data(), got, &header) != format::HeaderFault::None) {
     return Status();
   }
-  const std::uint16_t version = le::load16(out.data() + 8);
-  const std::uint16_t header_size = le::load16(out.data() + 10);
-  if (version == 0 || version > kRecordFormatVersion || header_size < kRecordHeaderSize) {
-    return Status();
-  }
-  const std::uint64_t record_size = std::uint64_t{header_size} + le::load32(out.data() + 40) +
-                                    le::load32(out.data() + 44);
+  const std::uint64_t record_size = format::claimed_record_size(header);
   if (file_size > record_size) {
     trailing = file_size - record_size;
     return Status(Error::Corrupt, "%s: %llu unexpected bytes after the %llu-byte record", path,

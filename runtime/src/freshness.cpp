@@ -12,8 +12,8 @@
 #include "crc32c.hpp"
 #include "file_io.hpp"
 #include "file_system.hpp"
-#include "little_endian.hpp"
 #include "record.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -23,7 +23,7 @@ constexpr std::uint8_t kCounterMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'C', 'T', 'R
 constexpr char kCounterDomain[] = "symcr freshness counter";
 constexpr std::uint64_t kCounterCopies[2] = {0, 128};
 constexpr std::size_t kCounterSigned = 40;  // magic, key id, reserved, value, store id
-constexpr std::size_t kCounterCopySize = kCounterSigned + kSha256Size;
+constexpr std::size_t kCounterCopySize = kCounterSigned + format::kSha256Size;
 
 bool fill_random(std::uint8_t* out, std::size_t size) {
   std::size_t got = 0;
@@ -46,11 +46,11 @@ bool fill_random(std::uint8_t* out, std::size_t size) {
 void encode_counter_copy(std::uint64_t value, const std::uint8_t* store_id, const OwnedKey& key,
                          std::uint8_t* out) {
   std::memcpy(out, kCounterMagic, sizeof kCounterMagic);
-  le::store32(out + 8, key.id);
-  le::store32(out + 12, 0);
-  le::store64(out + 16, value);
+  format::store32(out + 8, key.id);
+  format::store32(out + 12, 0);
+  format::store64(out + 16, value);
   std::memcpy(out + 24, store_id, kStoreIdSize);
-  std::uint8_t mac[kSha256Size];
+  std::uint8_t mac[format::kSha256Size];
   store_item_mac(key, kCounterDomain, store_id, out, kCounterSigned, mac);
   std::memcpy(out + kCounterSigned, mac, sizeof mac);
 }
@@ -65,8 +65,8 @@ void new_store_id(std::uint8_t (&id)[kStoreIdSize]) {
   const std::uint64_t a = static_cast<std::uint64_t>(now.tv_sec) * 1000000000u +
                           static_cast<std::uint64_t>(now.tv_nsec);
   const std::uint64_t b = static_cast<std::uint64_t>(getpid()) ^ (a << 17);
-  le::store64(id, a);
-  le::store64(id + 8, b);
+  format::store64(id, a);
+  format::store64(id + 8, b);
 }
 
 void encode_store_id(const std::uint8_t (&id)[kStoreIdSize], std::uint8_t* out) {
@@ -75,7 +75,7 @@ void encode_store_id(const std::uint8_t (&id)[kStoreIdSize], std::uint8_t* out) 
     std::uint8_t* copy = out + (at - kStoreIdOffset);
     std::memcpy(copy, kStoreIdMagic, sizeof kStoreIdMagic);
     std::memcpy(copy + 8, id, kStoreIdSize);
-    le::store32(copy + 8 + kStoreIdSize, crc32c(copy, 8 + kStoreIdSize));
+    format::store32(copy + 8 + kStoreIdSize, crc32c(copy, 8 + kStoreIdSize));
   }
 }
 
@@ -87,7 +87,7 @@ bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id
     if (size < at + kStoreIdCopySize) continue;
     const std::uint8_t* copy = page + at;
     if (std::memcmp(copy, kStoreIdMagic, sizeof kStoreIdMagic) != 0 ||
-        le::load32(copy + 8 + kStoreIdSize) != crc32c(copy, 8 + kStoreIdSize)) {
+        format::load32(copy + 8 + kStoreIdSize) != crc32c(copy, 8 + kStoreIdSize)) {
       continue;
     }
     std::memcpy(id, copy + 8, kStoreIdSize);
@@ -128,15 +128,17 @@ Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
     if (at + kCounterCopySize > size) continue;
     const std::uint8_t* copy = bytes + at;
     if (std::memcmp(copy, kCounterMagic, sizeof kCounterMagic) != 0) continue;
-    const OwnedKey* key = keys.find(le::load32(copy + 8));
+    const OwnedKey* key = keys.find(format::load32(copy + 8));
     if (key == nullptr) {
-      why = Status(Error::RolledBack, "it is signed with key id %u, which this program does not "
-                   "hold", le::load32(copy + 8));
+      why = Status(Error::RolledBack,
+                   "it is signed with key id %u, which this program does not "
+                   "hold",
+                   format::load32(copy + 8));
       continue;
     }
-    std::uint8_t mac[kSha256Size];
+    std::uint8_t mac[format::kSha256Size];
     store_item_mac(*key, kCounterDomain, copy + 24, copy, kCounterSigned, mac);
-    if (!equal_macs(mac, copy + kCounterSigned, kSha256Size)) {
+    if (!format::equal_macs(mac, copy + kCounterSigned, format::kSha256Size)) {
       why = Status(Error::RolledBack, "its MAC does not verify: it was forged or damaged");
       continue;
     }
@@ -144,8 +146,8 @@ Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
       why = Status(Error::RolledBack, "it is the counter of another store");
       continue;
     }
-    const std::uint64_t copy_value = le::load64(copy + 16);
-    if (copy_value > kMaxRecordSequence) {
+    const std::uint64_t copy_value = format::load64(copy + 16);
+    if (copy_value > format::kMaxRecordSequence) {
       why = Status(Error::RolledBack, "its value is beyond the sequence range");
       continue;
     }

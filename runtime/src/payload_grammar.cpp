@@ -15,13 +15,20 @@ namespace {
 // Sizes saturate here rather than wrap: no payload is that large.
 constexpr std::uint64_t kHuge = std::uint64_t{1} << 62;
 
-std::uint64_t saturating_add(std::uint64_t a, std::uint64_t b) {
-  return a + b < a || a + b > kHuge ? kHuge : a + b;
-}
-std::uint64_t saturating_multiply(std::uint64_t a, std::uint64_t count) {
-  return a != 0 && count > kHuge / a ? kHuge : a * count;
-}
+// A size of an untrusted schema's values: it saturates at kHuge instead of wrapping.
+struct SaturatingSize {
+  std::uint64_t value;
+  explicit SaturatingSize(std::uint64_t v) : value(v) {}
+  SaturatingSize operator+(SaturatingSize other) const {
+    const std::uint64_t sum = value + other.value;
+    return SaturatingSize(sum < value || sum > kHuge ? kHuge : sum);
+  }
+  SaturatingSize operator*(SaturatingSize count) const {
+    return SaturatingSize(value != 0 && count.value > kHuge / value ? kHuge : value * count.value);
+  }
+};
 
+// Each type's least and fixed wire size, by the format core's rule (format::wire_size_of).
 class SizeFacts {
  public:
   SizeFacts(const Schema& writer, WireSizes& out) : writer_(writer), out_(out) {
@@ -33,45 +40,13 @@ class SizeFacts {
   __attribute__((cold)) void compute(std::uint32_t t) {
     if (out_.least[t] != kUnknown) return;
     const TypeInfo& type = writer_.types[t];
-    std::uint64_t least = 0;
-    bool fixed = true;
-    switch (type.kind) {
-      case Kind::Bool:
-        least = 1;
-        break;
-      case Kind::Int:
-      case Kind::UInt:
-      case Kind::Float:
-      case Kind::Enum:
-      case Kind::Union:
-        least = type.size;
-        break;
-      case Kind::Struct:
-        for (std::uint32_t f = 0; f < type.field_count; ++f) {
-          compute(type.fields[f].type);
-          least = saturating_add(least, out_.least[type.fields[f].type]);
-          fixed = fixed && out_.fixed[type.fields[f].type] != WireSizes::kVariable;
-        }
-        break;
-      case Kind::Array:
-        compute(type.element);
-        least = saturating_multiply(out_.least[type.element], type.count);
-        fixed = out_.fixed[type.element] != WireSizes::kVariable;
-        break;
-      case Kind::String:
-      case Kind::Container:
-      case Kind::Variant:
-      case Kind::Pointer:
-      case Kind::SharedPtr:
-        least = 4;
-        fixed = type.kind == Kind::Pointer || type.kind == Kind::SharedPtr;
-        break;
-      case Kind::Optional:
-      case Kind::UniquePtr:
-        least = 1;
-        fixed = false;
-        break;
-    }
+    bool fixed = format::fixed_wire_kind(type.kind);
+    const std::uint64_t least =
+        format::wire_size_of<SaturatingSize>(type, [this, &fixed](std::uint32_t member) {
+          compute(member);
+          fixed = fixed && out_.fixed[member] != WireSizes::kVariable;
+          return SaturatingSize(out_.least[member]);
+        }).value;
     out_.least[t] = least;
     if (fixed && least < kHuge) out_.fixed[t] = least;
   }
@@ -95,17 +70,10 @@ __attribute__((cold)) WireSizes wire_sizes(const Schema& writer) {
 
 std::vector<const ClockInfo*> schema_clocks(const Schema& schema) {
   std::vector<const ClockInfo*> clocks;
-  for (std::uint32_t t = 0; t < schema.type_count; ++t) {
-    const TypeInfo& type = schema.types[t];
-    if (type.kind != Kind::Struct) continue;
-    for (std::uint32_t f = 0; f < type.field_count; ++f) {
-      const FieldInfo& field = type.fields[f];
-      if (!(field.flags & kFieldClockTime) || !field.time || !field.time->clock) continue;
-      const ClockInfo* clock = field.time->clock;
-      if (clock->index >= clocks.size()) clocks.resize(clock->index + std::size_t{1}, nullptr);
-      clocks[clock->index] = clock;
-    }
-  }
+  format::for_each_field_clock(schema, [&clocks](const ClockInfo& clock) {
+    if (clock.index >= clocks.size()) clocks.resize(clock.index + std::size_t{1}, nullptr);
+    clocks[clock.index] = &clock;
+  });
   return clocks;
 }
 
@@ -226,25 +194,27 @@ bool PayloadReader::heap_count(std::uint32_t& count) {
 bool PayloadReader::heap_object(std::uint32_t ordinal, std::uint32_t& type, std::uint8_t& owner) {
   if (!in_.read(type) || !in_.read(owner)) return truncated("heap object");
   if (type >= writer_.type_count) return fail("heap object %u has type %u", ordinal, type);
-  if (owner > 1) return fail("heap object %u has owner %u", ordinal, owner);
+  if (owner > format::kHeapOwnerShared) return fail("heap object %u has owner %u", ordinal, owner);
   return true;
 }
 
 bool PayloadReader::reference_count(std::uint32_t& count) {
   if (!in_.read(count)) return truncated("reference count");
-  // A reference takes at least 11 bytes: base kind, object, step count and target.
-  if (count > in_.remaining() / 11) return fail("reference count %u exceeds the payload", count);
+  // A reference takes at least an object reference without steps: base, object, step count and
+  // target.
+  if (count > in_.remaining() / format::object_reference_size(0)) {
+    return fail("reference count %u exceeds the payload", count);
+  }
   return true;
 }
 
 bool PayloadReader::clock_readings(ClockReadings& out) {
   out = ClockReadings();
   if (sizes_.clock_count == 0) return true;
-  const std::uint8_t* bytes = nullptr;
-  if (!in_.read(out.epoch) || !in_.bytes(std::size_t{8} * sizes_.clock_count, bytes)) {
+  if (!in_.bytes(format::clock_readings_size(sizes_.clock_count), out.bytes)) {
     return truncated("clock readings");
   }
-  out.readings = bytes;
+  out.epoch = format::load64(out.bytes);
   out.count = sizes_.clock_count;
   return true;
 }

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "symcr/format/payload.hpp"
 #include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 #include "wire.hpp"
@@ -55,14 +56,13 @@ std::vector<const ClockInfo*> schema_clocks(const Schema& schema);
 
 // What ends a payload of a schema with clocks.
 struct ClockReadings {
-  std::uint64_t epoch = 0;                // the writing process (0: unknown, e.g. a device)
-  const std::uint8_t* readings = nullptr;  // clock_count little-endian i64, by clock index
+  std::uint64_t epoch = 0;              // the writing process (0: unknown, e.g. a device)
+  const std::uint8_t* bytes = nullptr;  // the epoch, then `count` readings (format core)
   std::uint32_t count = 0;
-  std::int64_t reading(std::uint32_t clock) const {
-    std::int64_t value = 0;
-    std::memcpy(&value, readings + 8 * std::size_t{clock}, sizeof value);  // wire.hpp: LE host
-    return value;
+  const std::uint8_t* reading_bytes(std::uint32_t clock) const {
+    return bytes + format::clock_reading_offset(clock);
   }
+  std::int64_t reading(std::uint32_t clock) const { return format::clock_reading(bytes, clock); }
 };
 
 // Per type, the levels of values its values hold by value: 0 for a type that holds none, a
@@ -75,11 +75,14 @@ enum class ByValueNesting : std::uint8_t { Ok, ContainsItself, TooDeep };
 ByValueNesting by_value_levels(const Schema& schema, std::vector<std::uint32_t>& levels,
                                std::uint32_t& culprit);
 
-// A Pointer's or SharedPtr's reference code: null, outside the saved state (raw pointers only),
-// or kFirstReference + the index of its target in the reference table.
-constexpr std::uint32_t kNullCode = 0;
-constexpr std::uint32_t kOutsideCode = 1;
-constexpr std::uint32_t kFirstReference = 2;
+// The payload's codes are the format core's (symcr/format/payload.hpp): a Pointer's or
+// SharedPtr's reference code, and what a reference starts from.
+using format::kBaseElement;
+using format::kBaseObject;
+using format::kFirstReference;
+using format::kNullCode;
+using format::kOutsideCode;
+using format::ReferenceBase;
 
 // The member a reference's step at a struct names: its fields first, then its reference
 // members (format.md §2); nullptr when there is no such member.
@@ -88,9 +91,6 @@ inline const FieldInfo* step_member(const TypeInfo& type, std::uint32_t step) {
   step -= type.field_count;
   return step < type.reference_member_count ? &type.reference_members[step] : nullptr;
 }
-
-// What a reference starts from: a saved object (a root or heap object) or a container element.
-enum ReferenceBase : std::uint8_t { kBaseObject = 0, kBaseElement = 1 };
 
 // One step of a value's symbolic path: "copter", ".mission", "[3]", "heap#2(ModeAuto)".
 // Decoders keep a stack of frames and render the path only when they report it.

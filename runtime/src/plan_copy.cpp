@@ -84,9 +84,8 @@ void Planner::compute_copy(PlanNode& n) {
 // The whole payload is copy-only when every writer root is kept and copy-only: then it is
 // the roots' copy programs back to back and two empty sections (heap objects, references).
 void Planner::compute_copy_only_payload() {
-  std::uint64_t size = 2 * sizeof(std::uint32_t);
-  const std::uint32_t clocks = plan_.wire_sizes.clock_count;
-  if (clocks) size += sizeof(std::uint64_t) * (1 + std::uint64_t{clocks});  // epoch, readings
+  std::uint64_t size = format::kHeapCountSize + format::kReferenceCountSize +
+                       format::clock_readings_size(plan_.wire_sizes.clock_count);
   for (const RootPlan& root : plan_.roots) {
     if (root.reader_root == kNoType || !child_copy_only(root.node)) return;
     size += root.node->copy_wire;

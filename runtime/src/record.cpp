@@ -8,12 +8,12 @@
 #include "authentication.hpp"
 #include "crc32c.hpp"
 #include "encode.hpp"
-#include "little_endian.hpp"
 #include "parsed_schema.hpp"
 #include "plan.hpp"
 #include "report_access.hpp"
 #include "restore_payload.hpp"
 #include "schema_blob.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -26,30 +26,19 @@ std::uint64_t realtime_ns() {
 }
 
 void store_header(const RecordHeader& h, std::uint8_t* p) {
-  std::memcpy(p, kRecordMagic, sizeof kRecordMagic);
-  le::store16(p + 8, h.format_version);
-  le::store16(p + 10, h.header_size);
-  le::store32(p + 12, h.flags);
-  le::store64(p + 16, h.sequence);
-  le::store64(p + 24, h.timestamp_ns);
-  le::store64(p + 32, h.schema_hash);
-  le::store32(p + 40, h.schema_size);
-  le::store32(p + 44, h.payload_size);
-  le::store32(p + 48, h.checksum);
-  le::store32(p + 52, h.program_id);
-  if ((h.flags & kRecordAuthenticated) != 0) {
-    le::store32(p + kRecordKeyIdOffset, h.key_id);
-    le::store32(p + kRecordMacVersionOffset, h.mac_version);
-    le::store64(p + kRecordJournalFreshnessOffset, h.journal_freshness);
+  format::encode_record_header(h, p);
+  if ((h.flags & format::kRecordAuthenticated) != 0) {
+    format::RecordAuthentication authentication;
+    authentication.key_id = h.key_id;
+    authentication.mac_version = h.mac_version;
+    authentication.journal_freshness = h.journal_freshness;
+    format::encode_record_authentication(authentication, p);
   }
 }
 
 // CRC of the record with the checksum field read as zero, without modifying the bytes.
 std::uint32_t record_checksum(const std::uint8_t* record, std::size_t size) {
-  static constexpr std::uint8_t kZero[4] = {};
-  std::uint32_t crc = crc32c(record, kRecordChecksumOffset);
-  crc = crc32c_extend(crc, kZero, sizeof kZero);
-  return crc32c_extend(crc, record + kRecordChecksumOffset + 4, size - kRecordChecksumOffset - 4);
+  return format::record_checksum(record, size, crc32c_extend);
 }
 
 // True when `bytes` are exactly `blob`'s and `hash` is its hash: then the hash need not be
@@ -85,7 +74,7 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   // With keys set, the record is authenticated: a longer header, with the key id and the MAC.
   const bool authenticated = signing->keys != nullptr;
   const std::uint16_t header_size =
-      authenticated ? kRecordAuthenticatedHeaderSize : kRecordHeaderSize;
+      authenticated ? format::kRecordAuthenticatedHeaderSize : format::kRecordHeaderSize;
   std::size_t schema_size = 0;
   if (inline_schema) {
     schema_size = blob.size;
@@ -109,13 +98,13 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
                   payload_size);
   }
   RecordHeader header;
-  header.format_version = kRecordFormatVersion;
+  header.format_version = format::kRecordFormatVersion;
   header.header_size = header_size;
-  header.flags = (inline_schema ? kRecordSchemaInline : 0) |
-                 (authenticated ? kRecordAuthenticated : 0);
+  header.flags = (inline_schema ? format::kRecordSchemaInline : 0) |
+                 (authenticated ? format::kRecordAuthenticated : 0);
   if (authenticated) {
     header.key_id = signing->keys->signing().id;
-    header.mac_version = kRecordMacVersion;
+    header.mac_version = format::kRecordMacVersion;
     header.journal_freshness = signing->journal_freshness;
   }
   header.sequence = sequence;
@@ -134,55 +123,45 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
           ? crc32c_combine(record_checksum(out.data(), header_size + schema_size),
                            payload_crc.value, payload_size)
           : record_checksum(out.data(), out.size());
-  le::store32(out.data() + kRecordChecksumOffset, checksum);
+  format::store32(out.data() + format::kRecordChecksumOffset, checksum);
   return Status();
 }
 
 void reseal_record(std::uint8_t* record, std::size_t size, const RecordSigning& signing) {
-  le::store32(record + kRecordKeyIdOffset, signing.keys->signing().id);
-  le::store32(record + kRecordMacVersionOffset, kRecordMacVersion);
-  le::store64(record + kRecordJournalFreshnessOffset, signing.journal_freshness);
+  format::RecordAuthentication authentication;
+  authentication.key_id = signing.keys->signing().id;
+  authentication.mac_version = format::kRecordMacVersion;
+  authentication.journal_freshness = signing.journal_freshness;
+  format::encode_record_authentication(authentication, record);
   sign_record(*signing.keys, record, size, *signing.binding);
-  le::store32(record + kRecordChecksumOffset, record_checksum(record, size));
+  format::store32(record + format::kRecordChecksumOffset, record_checksum(record, size));
 }
 
 Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
                     const SchemaBlob* known) {
   out = RecordView();
-  if (size == 0) return Status(Error::Truncated, "truncated: empty");
-  const std::size_t magic_bytes = size < sizeof kRecordMagic ? size : sizeof kRecordMagic;
-  if (std::memcmp(data, kRecordMagic, magic_bytes) != 0) {
-    return Status(Error::NotACheckpoint, "not a symcr checkpoint (bad magic)");
-  }
-  if (size < kRecordHeaderSize) {
-    return Status(Error::Truncated, "truncated: %zu bytes, shorter than the %u-byte header", size,
-                  unsigned{kRecordHeaderSize});
-  }
   RecordHeader& h = out.header;
-  h.format_version = le::load16(data + 8);
-  h.header_size = le::load16(data + 10);
-  h.flags = le::load32(data + 12);
-  h.sequence = le::load64(data + 16);
-  h.timestamp_ns = le::load64(data + 24);
-  h.schema_hash = le::load64(data + 32);
-  h.schema_size = le::load32(data + 40);
-  h.payload_size = le::load32(data + 44);
-  h.checksum = le::load32(data + 48);
-  h.program_id = le::load32(data + 52);
-
-  // The version comes before everything else: a newer version may lay out the rest anew.
-  if (h.format_version > kRecordFormatVersion) {
-    return Status(Error::FutureVersion,
-                  "written by checkpoint format version %u; this build reads up to version %u",
-                  unsigned{h.format_version}, unsigned{kRecordFormatVersion});
+  switch (format::decode_record_header(data, size, &h)) {
+    case format::HeaderFault::None:
+      break;
+    case format::HeaderFault::Empty:
+      return Status(Error::Truncated, "truncated: empty");
+    case format::HeaderFault::BadMagic:
+      return Status(Error::NotACheckpoint, "not a symcr checkpoint (bad magic)");
+    case format::HeaderFault::Truncated:
+      return Status(Error::Truncated, "truncated: %zu bytes, shorter than the %u-byte header", size,
+                    unsigned{format::kRecordHeaderSize});
+    case format::HeaderFault::FutureVersion:
+      return Status(Error::FutureVersion,
+                    "written by checkpoint format version %u; this build reads up to version %u",
+                    unsigned{h.format_version}, unsigned{format::kRecordFormatVersion});
+    case format::HeaderFault::ZeroVersion:
+      return Status(Error::Corrupt, "format version 0 is invalid");
+    case format::HeaderFault::ShortHeader:
+      return Status(Error::Corrupt, "header size %u is below the minimum %u",
+                    unsigned{h.header_size}, unsigned{format::kRecordHeaderSize});
   }
-  if (h.format_version == 0) return Status(Error::Corrupt, "format version 0 is invalid");
-  if (h.header_size < kRecordHeaderSize) {
-    return Status(Error::Corrupt, "header size %u is below the minimum %u", unsigned{h.header_size},
-                  unsigned{kRecordHeaderSize});
-  }
-  // 64-bit sum of 16- and 32-bit fields: cannot overflow.
-  const std::uint64_t record_size = std::uint64_t{h.header_size} + h.schema_size + h.payload_size;
+  const std::uint64_t record_size = format::claimed_record_size(h);
   if (record_size > size) {
     return Status(Error::Truncated, "truncated: header says %llu bytes, %zu available",
                   static_cast<unsigned long long>(record_size), size);
@@ -192,23 +171,25 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
     return Status(Error::Checksum, "checksum mismatch: stored %08x, computed %08x", h.checksum,
                   actual);
   }
-  if ((h.flags & ~kRecordKnownFlags) != 0) {
+  if ((h.flags & ~format::kRecordKnownFlags) != 0) {
     return Status(Error::Corrupt, "unknown header flags %08x", h.flags);
   }
-  if ((h.flags & kRecordAuthenticated) != 0) {
-    if (h.header_size < kRecordLegacyAuthenticatedHeaderSize) {
+  if ((h.flags & format::kRecordAuthenticated) != 0) {
+    if (h.header_size < format::kRecordLegacyAuthenticatedHeaderSize) {
       return Status(Error::Corrupt, "authenticated, but a %u-byte header has no room for a MAC",
                     unsigned{h.header_size});
     }
-    h.key_id = le::load32(data + kRecordKeyIdOffset);
-    h.mac_version = le::load32(data + kRecordMacVersionOffset);
-    if (h.mac_version != 0 && h.header_size < kRecordAuthenticatedHeaderSize) {
+    h.key_id = format::load32(data + format::kRecordKeyIdOffset);
+    h.mac_version = format::load32(data + format::kRecordMacVersionOffset);
+    if (h.mac_version != 0 && h.header_size < format::kRecordAuthenticatedHeaderSize) {
       return Status(Error::Corrupt, "MAC version %u, but a %u-byte header has no room for it",
                     h.mac_version, unsigned{h.header_size});
     }
-    if (h.mac_version != 0) h.journal_freshness = le::load64(data + kRecordJournalFreshnessOffset);
+    if (h.mac_version != 0) {
+      h.journal_freshness = format::load64(data + format::kRecordJournalFreshnessOffset);
+    }
   }
-  const bool inline_schema = (h.flags & kRecordSchemaInline) != 0;
+  const bool inline_schema = (h.flags & format::kRecordSchemaInline) != 0;
   if (inline_schema != (h.schema_size != 0)) {
     return Status(Error::Corrupt, "schema flag %s but %u bytes of inline schema",
                   inline_schema ? "set" : "clear", h.schema_size);
@@ -219,7 +200,7 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
   out.record_size = static_cast<std::size_t>(record_size);
   out.schema_is_known = inline_schema && is_blob(known, out.schema, h.schema_size, h.schema_hash);
   if (inline_schema && !out.schema_is_known &&
-      fnv1a64(out.schema, h.schema_size) != h.schema_hash) {
+      format::fnv1a64(out.schema, h.schema_size) != h.schema_hash) {
     return Status(Error::Corrupt, "inline schema does not match its hash %016llx",
                   static_cast<unsigned long long>(h.schema_hash));
   }
@@ -264,8 +245,11 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size, con
   // of an earlier build again). The header's hash only picks the candidate; the bytes decide.
   const SchemaBlob& own = schema_blob(reader);
   std::shared_ptr<const Plan> plan;
-  if (size >= kRecordHeaderSize && le::load64(data + 32) != own.hash) {
-    plan = cached_plan(le::load64(data + 32), reader);
+  const std::uint64_t schema_hash = size >= format::kRecordHeaderSize
+                                        ? format::load64(data + format::kRecordSchemaHashOffset)
+                                        : 0;
+  if (size >= format::kRecordHeaderSize && schema_hash != own.hash) {
+    plan = cached_plan(schema_hash, reader);
   }
   SchemaBlob plan_blob;  // the cached plan's writer schema, to recognise it by its bytes
   if (plan && plan->writer_owner) {

@@ -1,5 +1,6 @@
-// Records (docs/format.md §1): a 56-byte header (96 with a MAC), an optional inline schema and a
-// payload, covered by one CRC-32C. Shared by single-file checkpoints, in-memory checkpoints and
+// Records (docs/format.md §1; the header's layout is the format core's, symcr/format/record.hpp):
+// a 56-byte header (112 with a MAC), an optional inline schema and a payload, covered by one
+// CRC-32C. Shared by single-file checkpoints, in-memory checkpoints and
 // store slots. Parsing never trusts a length: every size is checked against the bytes available.
 #ifndef SYMCR_SRC_RECORD_HPP
 #define SYMCR_SRC_RECORD_HPP
@@ -11,6 +12,7 @@
 
 #include "parsed_schema.hpp"
 #include "schema_blob.hpp"
+#include "symcr/format/record.hpp"
 #include "symcr/generated.hpp"
 #include "symcr/symcr.hpp"
 
@@ -18,42 +20,11 @@ namespace symcr::detail {
 
 class ParsedSchema;
 
-inline constexpr std::uint8_t kRecordMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'C', 'K', 'P'};
-inline constexpr std::uint16_t kRecordFormatVersion = 1;
-inline constexpr std::uint16_t kRecordHeaderSize = 56;
-inline constexpr std::uint32_t kRecordSchemaInline = 1u << 0;
-inline constexpr std::uint32_t kRecordAuthenticated = 1u << 1;
-inline constexpr std::uint32_t kRecordKnownFlags = kRecordSchemaInline | kRecordAuthenticated;
-inline constexpr std::size_t kRecordChecksumOffset = 48;
-// An authenticated record's header goes on: u32 key_id, u32 MAC version, the 32-byte MAC, u64
-// journal freshness (a store's: the freshness value of its restore journal when the record
-// was saved; 0 elsewhere), u64 reserved (0). Version 0 (96-byte headers of earlier builds)
-// bound neither store, slot nor schema digest, and is refused.
-inline constexpr std::uint16_t kRecordAuthenticatedHeaderSize = 112;
-inline constexpr std::uint16_t kRecordLegacyAuthenticatedHeaderSize = 96;
-inline constexpr std::size_t kRecordKeyIdOffset = 56;
-inline constexpr std::size_t kRecordMacVersionOffset = 60;
-inline constexpr std::size_t kRecordMacOffset = 64;
-inline constexpr std::size_t kRecordJournalFreshnessOffset = 96;
-inline constexpr std::uint32_t kRecordMacVersion = 2;
-// Sequences of a store never reach 2^63 (one save a nanosecond would take 292 years): a record
-// above is damage or forgery, and the numbering can never wrap.
-inline constexpr std::uint64_t kMaxRecordSequence = (std::uint64_t{1} << 63) - 1;
-
-struct RecordHeader {
-  std::uint16_t format_version = 0;
-  std::uint16_t header_size = 0;
-  std::uint32_t flags = 0;
-  std::uint64_t sequence = 0;
-  std::uint64_t timestamp_ns = 0;
-  std::uint64_t schema_hash = 0;
-  std::uint32_t schema_size = 0;
-  std::uint32_t payload_size = 0;
-  std::uint32_t checksum = 0;
-  std::uint32_t program_id = 0;  // the writing program (program_id_of), 0 when anonymous
-  std::uint32_t key_id = 0;      // kRecordAuthenticated: the key its MAC was made with
-  std::uint32_t mac_version = 0;            // kRecordAuthenticated: kRecordMacVersion
-  std::uint64_t journal_freshness = 0;      // kRecordAuthenticated, version 2
+// The 56-byte header's fields (format::RecordHeader), and the authenticated header's after them.
+struct RecordHeader : format::RecordHeader {
+  std::uint32_t key_id = 0;             // kRecordAuthenticated: the key its MAC was made with
+  std::uint32_t mac_version = 0;        // kRecordAuthenticated: kRecordMacVersion
+  std::uint64_t journal_freshness = 0;  // kRecordAuthenticated, version 2
 };
 
 // A record validated in place: views into the caller's bytes, valid while they are.

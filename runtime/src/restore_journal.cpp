@@ -6,8 +6,8 @@
 
 #include "authentication.hpp"
 #include "crc32c.hpp"
-#include "little_endian.hpp"
 #include "record.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -26,32 +26,32 @@ constexpr std::size_t kSealMacSize = kRestoreJournalSealSize - 24;
 bool ranges_hold(const RestoreJournal& journal) {
   return journal.suspect_low <= journal.suspect_high &&
          journal.crashed_low <= journal.crashed_high &&
-         journal.highest_sequence() <= kMaxRecordSequence;
+         journal.highest_sequence() <= format::kMaxRecordSequence;
 }
 
 // Whether the copy at `data` carries a seal that verifies for `seal`; `why` says otherwise.
 bool seal_holds(const std::uint8_t* data, const JournalSeal& seal, std::uint64_t& freshness,
                 std::uint64_t& newest, std::string& why) {
   const std::uint8_t* s = data + kRestoreJournalSize;
-  if (le::load32(s + 4) != 1) {
+  if (format::load32(s + 4) != 1) {
     why = "it carries no MAC (written without keys)";
     return false;
   }
-  const OwnedKey* key = seal.keys->find(le::load32(s));
+  const OwnedKey* key = seal.keys->find(format::load32(s));
   if (key == nullptr) {
-    why = "its MAC is made with key id " + std::to_string(le::load32(s)) +
+    why = "its MAC is made with key id " + std::to_string(format::load32(s)) +
           ", which this program does not hold";
     return false;
   }
-  std::uint8_t mac[kSha256Size];
+  std::uint8_t mac[format::kSha256Size];
   store_item_mac(*key, kSealDomain, seal.store_id, data, kSealSigned, mac);
-  if (!equal_macs(mac, s + 24, kSealMacSize)) {
+  if (!format::equal_macs(mac, s + 24, kSealMacSize)) {
     why = "its MAC does not verify (forged, or another store's)";
     return false;
   }
-  freshness = le::load64(s + 8);
-  newest = le::load64(s + 16);
-  if (freshness > kMaxRecordSequence || newest > kMaxRecordSequence) {
+  freshness = format::load64(s + 8);
+  newest = format::load64(s + 16);
+  if (freshness > format::kMaxRecordSequence || newest > format::kMaxRecordSequence) {
     why = "its freshness value is beyond the sequence range";
     return false;
   }
@@ -61,19 +61,19 @@ bool seal_holds(const std::uint8_t* data, const JournalSeal& seal, std::uint64_t
 // One copy: whether it holds a journal, and which.
 bool decode_copy(const std::uint8_t* data, RestoreJournal& out) {
   if (std::memcmp(data, kJournalMagic, sizeof kJournalMagic) != 0 ||
-      le::load32(data + kChecked) != crc32c(data, kChecked)) {
+      format::load32(data + kChecked) != crc32c(data, kChecked)) {
     return false;
   }
   RestoreJournal journal;
-  journal.generation = le::load64(data + 8);
-  journal.unconfirmed = le::load64(data + 16);
-  journal.suspect_low = le::load64(data + 24);
-  journal.suspect_high = le::load64(data + 32);
-  journal.given_up_through = le::load64(data + 40);
-  journal.crashed_low = le::load64(data + 48);
-  journal.crashed_high = le::load64(data + 56);
-  journal.fallbacks = le::load32(data + 64);
-  journal.depth = le::load32(data + 68);
+  journal.generation = format::load64(data + 8);
+  journal.unconfirmed = format::load64(data + 16);
+  journal.suspect_low = format::load64(data + 24);
+  journal.suspect_high = format::load64(data + 32);
+  journal.given_up_through = format::load64(data + 40);
+  journal.crashed_low = format::load64(data + 48);
+  journal.crashed_high = format::load64(data + 56);
+  journal.fallbacks = format::load32(data + 64);
+  journal.depth = format::load32(data + 68);
   if (!ranges_hold(journal)) return false;  // not ours to trust
   out = journal;
   return true;
@@ -81,15 +81,15 @@ bool decode_copy(const std::uint8_t* data, RestoreJournal& out) {
 
 bool decode_legacy(const std::uint8_t* data, RestoreJournal& out) {
   if (std::memcmp(data, kLegacyMagic, sizeof kLegacyMagic) != 0 ||
-      le::load32(data + kLegacyChecked) != crc32c(data, kLegacyChecked)) {
+      format::load32(data + kLegacyChecked) != crc32c(data, kLegacyChecked)) {
     return false;
   }
   RestoreJournal journal;
-  journal.unconfirmed = le::load64(data + 8);
-  journal.suspect_low = le::load64(data + 16);
-  journal.suspect_high = le::load64(data + 24);
-  journal.given_up_through = le::load64(data + 32);
-  journal.fallbacks = le::load32(data + 40);
+  journal.unconfirmed = format::load64(data + 8);
+  journal.suspect_low = format::load64(data + 16);
+  journal.suspect_high = format::load64(data + 24);
+  journal.given_up_through = format::load64(data + 32);
+  journal.fallbacks = format::load32(data + 40);
   if (!ranges_hold(journal)) return false;
   out = journal;
   return true;
@@ -176,25 +176,25 @@ void RestoreJournal::confirm() {
 void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out,
                             const JournalSeal* seal) {
   std::memcpy(out, kJournalMagic, sizeof kJournalMagic);
-  le::store64(out + 8, journal.generation);
-  le::store64(out + 16, journal.unconfirmed);
-  le::store64(out + 24, journal.suspect_low);
-  le::store64(out + 32, journal.suspect_high);
-  le::store64(out + 40, journal.given_up_through);
-  le::store64(out + 48, journal.crashed_low);
-  le::store64(out + 56, journal.crashed_high);
-  le::store32(out + 64, journal.fallbacks);
-  le::store32(out + 68, journal.depth);
-  le::store32(out + kChecked, crc32c(out, kChecked));
+  format::store64(out + 8, journal.generation);
+  format::store64(out + 16, journal.unconfirmed);
+  format::store64(out + 24, journal.suspect_low);
+  format::store64(out + 32, journal.suspect_high);
+  format::store64(out + 40, journal.given_up_through);
+  format::store64(out + 48, journal.crashed_low);
+  format::store64(out + 56, journal.crashed_high);
+  format::store32(out + 64, journal.fallbacks);
+  format::store32(out + 68, journal.depth);
+  format::store32(out + kChecked, crc32c(out, kChecked));
   std::uint8_t* s = out + kRestoreJournalSize;
   std::memset(s, 0, kRestoreJournalSealSize);
   if (seal == nullptr || seal->keys == nullptr) return;
   const OwnedKey& key = seal->keys->signing();
-  le::store32(s, key.id);
-  le::store32(s + 4, 1);
-  le::store64(s + 8, journal.freshness);
-  le::store64(s + 16, journal.newest);
-  std::uint8_t mac[kSha256Size];
+  format::store32(s, key.id);
+  format::store32(s + 4, 1);
+  format::store64(s + 8, journal.freshness);
+  format::store64(s + 16, journal.newest);
+  std::uint8_t mac[format::kSha256Size];
   store_item_mac(key, kSealDomain, seal->store_id, out, kSealSigned, mac);
   std::memcpy(s + 24, mac, kSealMacSize);
 }

@@ -1,10 +1,12 @@
 // Serialisation of a running build's schema (docs/format.md §2) and its FNV-1a 64 hash.
 #include <cstring>
+#include <utility>
 
 #include "device_format.hpp"
 #include "payload_grammar.hpp"
 #include "schema_blob.hpp"
 #include "schema_facts.hpp"
+#include "symcr/format/hashes.hpp"
 #include "wire.hpp"
 
 // compute_schema_facts runs once per schema and process (the result is cached, see
@@ -31,10 +33,6 @@ void put_aliases(std::vector<std::uint8_t>& out, const char* const* aliases) {
 void put_f64(std::vector<std::uint8_t>& out, double value) { put_le(out, value); }
 
 }  // namespace
-
-std::uint64_t fnv1a64(const std::uint8_t* data, std::size_t size) {
-  return device::detail::fnv1a64(data, size);  // one definition for both runtimes
-}
 
 void serialise_schema(const Schema& schema, std::vector<std::uint8_t>& out) {
   put_u32(out, schema.type_count);
@@ -141,7 +139,7 @@ void serialise_blob(const Schema& schema, SchemaBlob& blob) {
   serialise_schema(schema, blob.storage);
   blob.data = blob.storage.data();
   blob.size = blob.storage.size();
-  blob.hash = fnv1a64(blob.data, blob.size);
+  blob.hash = format::fnv1a64(blob.data, blob.size);
 }
 
 namespace {
@@ -220,7 +218,9 @@ __attribute__((cold)) SchemaFacts compute_schema_facts(const Schema& schema) {
   facts.flat_count.assign(schema.type_count, 0);
   facts.flat_wire_size.assign(schema.type_count, 0);
   facts.has_pointer_fields.assign(schema.type_count, false);
-  facts.nesting_levels = value_levels(schema);
+  // The flat runs' wire size is the format's rule's (their bytes are their memory bytes).
+  WireSizes sizes = wire_sizes(schema);
+  facts.nesting_levels = std::move(sizes.levels);
   for (std::uint32_t t = 0; t < schema.type_count; ++t) {
     const TypeInfo& type = schema.types[t];
     if (type.kind != Kind::Struct) continue;
@@ -240,9 +240,7 @@ __attribute__((cold)) SchemaFacts compute_schema_facts(const Schema& schema) {
     if (!flat_runs_of(schema, t, 0, runs, 0)) continue;
     facts.flat_first[t] = static_cast<std::uint32_t>(facts.flat_runs.size());
     facts.flat_count[t] = static_cast<std::uint32_t>(runs.size());
-    std::uint32_t wire = 0;
-    for (const FlatRun& run : runs) wire += run.length;
-    facts.flat_wire_size[t] = wire;
+    facts.flat_wire_size[t] = static_cast<std::uint32_t>(sizes.fixed[t]);
     facts.flat_runs.insert(facts.flat_runs.end(), runs.begin(), runs.end());
   }
   for (std::uint32_t t = 0; t < schema.type_count; ++t) {

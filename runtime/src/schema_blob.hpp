@@ -21,7 +21,7 @@ struct SchemaBlob {
   const std::uint8_t* data = nullptr;  // the generated constant, or storage's bytes
   std::size_t size = 0;
   std::uint64_t hash = 0;
-  std::uint32_t program_id = 0;  // program_id_of(schema.program)
+  std::uint32_t program_id = 0;  // format::program_id(schema.program)
   std::vector<std::uint8_t> storage;
 };
 // Serialises `schema` into `blob` (its storage) and hashes it (schema_blob.cpp).
@@ -29,11 +29,6 @@ void serialise_blob(const Schema& schema, SchemaBlob& blob);
 
 // `schema`'s blob, serialised at its first use and cached (schema_cache.cpp).
 const SchemaBlob& schema_blob(const Schema& schema);
-
-// A program's identity in record headers: FNV-1a 32 of its name, never 0; 0 for no name.
-std::uint32_t program_id_of(const char* program);
-
-std::uint64_t fnv1a64(const std::uint8_t* data, std::size_t size);
 
 }  // namespace symcr::detail
 

@@ -7,6 +7,7 @@
 #include "device_format.hpp"
 #include "schema_blob.hpp"
 #include "schema_facts.hpp"
+#include "symcr/format/hashes.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -64,7 +65,7 @@ const SchemaCacheEntry& schema_cache_entry(const Schema& schema) {
   } else {
     serialise_blob(schema, entry->blob);
   }
-  entry->blob.program_id = program_id_of(schema.program);
+  entry->blob.program_id = format::program_id(schema.program);
   entry->schema = &schema;
   cache->push_back(CachedSchema{key, entry});
   last = cache->back();
@@ -72,9 +73,5 @@ const SchemaCacheEntry& schema_cache_entry(const Schema& schema) {
 }
 
 const SchemaBlob& schema_blob(const Schema& schema) { return schema_cache_entry(schema).blob; }
-
-std::uint32_t program_id_of(const char* program) {
-  return device::detail::program_id(program);  // one definition for both runtimes
-}
 
 }  // namespace symcr::detail

@@ -8,10 +8,10 @@
 
 #include "crc32c.hpp"
 #include "file_io.hpp"
-#include "little_endian.hpp"
 #include "parsed_schema.hpp"
 #include "record.hpp"
 #include "schema_blob.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -31,21 +31,20 @@ Status write_schema_file(const Schema& schema, const char* path) {
     return Status(Error::TooLarge, "schema of %zu bytes exceeds the format's 4 GiB limit",
                   blob.size);
   }
-  std::vector<std::uint8_t> record(kRecordHeaderSize + blob.size);
-  std::uint8_t* h = record.data();
-  for (std::size_t i = 0; i < sizeof kRecordMagic; ++i) h[i] = kRecordMagic[i];
-  le::store16(h + 8, kRecordFormatVersion);
-  le::store16(h + 10, kRecordHeaderSize);
-  le::store32(h + 12, kRecordSchemaInline);
-  le::store64(h + 16, 0);  // sequence
-  le::store64(h + 24, now_ns());
-  le::store64(h + 32, blob.hash);
-  le::store32(h + 40, static_cast<std::uint32_t>(blob.size));
-  le::store32(h + 44, 0);  // payload_size: a schema file carries no values
-  le::store32(h + 48, 0);  // checksum, computed over the record with this field zero
-  le::store32(h + 52, blob.program_id);
-  for (std::size_t i = 0; i < blob.size; ++i) h[kRecordHeaderSize + i] = blob.data[i];
-  le::store32(h + kRecordChecksumOffset, crc32c(record.data(), record.size()));
+  std::vector<std::uint8_t> record(format::kRecordHeaderSize + blob.size);
+  format::RecordHeader header;
+  header.format_version = format::kRecordFormatVersion;
+  header.header_size = format::kRecordHeaderSize;
+  header.flags = format::kRecordSchemaInline;
+  header.timestamp_ns = now_ns();
+  header.schema_hash = blob.hash;
+  header.schema_size = static_cast<std::uint32_t>(blob.size);
+  header.payload_size = 0;  // a schema file carries no values
+  header.program_id = blob.program_id;
+  format::encode_record_header(header, record.data());  // its checksum 0 while computed
+  for (std::size_t i = 0; i < blob.size; ++i) record[format::kRecordHeaderSize + i] = blob.data[i];
+  format::store32(record.data() + format::kRecordChecksumOffset,
+                  crc32c(record.data(), record.size()));
   return write_file_atomically(path, record.data(), record.size(), Durability::PageCache);
 }
 

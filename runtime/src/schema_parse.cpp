@@ -12,6 +12,7 @@
 #include "parsed_schema.hpp"
 #include "payload_grammar.hpp"
 #include "schema_blob.hpp"
+#include "symcr/format/hashes.hpp"
 #include "wire.hpp"
 
 namespace symcr::detail {
@@ -452,7 +453,7 @@ Status parse_schema(const std::uint8_t* data, std::size_t size, ParsedSchema& ou
   Parser parser(data, size, *parsed.storage);
   Status status = parser.run();
   if (!status.ok()) return status;
-  parsed.storage->hash = hash != nullptr ? *hash : fnv1a64(data, size);
+  parsed.storage->hash = hash != nullptr ? *hash : format::fnv1a64(data, size);
   parsed.storage->bytes.assign(data, data + size);
   out = std::move(parsed);
   return Status();

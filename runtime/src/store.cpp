@@ -22,7 +22,6 @@
 #include "file_io.hpp"
 #include "file_system.hpp"
 #include "freshness.hpp"
-#include "little_endian.hpp"
 #include "program_schema.hpp"
 #include "record.hpp"
 #include "report_access.hpp"
@@ -30,6 +29,7 @@
 #include "restore_payload.hpp"
 #include "schema_blob.hpp"
 #include "store_layout.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr {
@@ -47,10 +47,10 @@ bool all_zero(const std::uint8_t* p, std::size_t n) {
 // zero, or the start of a store header (its magic, or a prefix of it, then zeros or the rest).
 // Such a file with no record in it is initialised again rather than refused forever.
 bool interrupted_initialisation(const std::uint8_t* header, std::size_t size) {
-  const std::size_t magic = std::min(size, sizeof detail::kStoreFileMagic);
+  const std::size_t magic = std::min(size, sizeof format::kStoreFileMagic);
   std::size_t matched = 0;
-  while (matched < magic && header[matched] == detail::kStoreFileMagic[matched]) ++matched;
-  return matched == sizeof detail::kStoreFileMagic || all_zero(header + matched, size - matched);
+  while (matched < magic && header[matched] == format::kStoreFileMagic[matched]) ++matched;
+  return matched == sizeof format::kStoreFileMagic || all_zero(header + matched, size - matched);
 }
 
 bool same_dimensions(const StoreGeometry& a, const StoreGeometry& b) {
@@ -62,16 +62,16 @@ bool same_dimensions(const StoreGeometry& a, const StoreGeometry& b) {
 bool geometry_from_file_size(const StoreOptions& options, std::uint64_t file_size,
                              StoreGeometry& out) {
   const std::uint64_t slots_bytes = std::uint64_t{options.slots} * options.slot_size;
-  if (file_size < detail::kStorePageSize + slots_bytes) return false;
-  const std::uint64_t areas = file_size - detail::kStorePageSize - slots_bytes;
-  if (areas % (2 * detail::kStorePageSize) != 0 || areas / 2 < detail::kStoreMinSchemaAreaSize ||
+  if (file_size < format::kStorePageSize + slots_bytes) return false;
+  const std::uint64_t areas = file_size - format::kStorePageSize - slots_bytes;
+  if (areas % (2 * format::kStorePageSize) != 0 || areas / 2 < format::kStoreMinSchemaAreaSize ||
       areas / 2 > 0xFFFFFFFFull) {
     return false;
   }
   out.slot_count = options.slots;
   out.slot_size = options.slot_size;
   out.schema_area_size = static_cast<std::uint32_t>(areas / 2);
-  out.slots_offset = detail::kStorePageSize + areas;
+  out.slots_offset = format::kStorePageSize + areas;
   return true;
 }
 
@@ -252,7 +252,7 @@ struct Store::Impl {
     if (keys) {
       const std::uint64_t fresh =
           std::max({highest_known_sequence(), counter_value, recorded.freshness}) + 1;
-      if (fresh > detail::kMaxRecordSequence) {
+      if (fresh > format::kMaxRecordSequence) {
         return Status(Error::Corrupt, "%s: the store's sequence numbers are exhausted",
                       path.c_str());
       }
@@ -502,19 +502,21 @@ struct Store::Impl {
                     path.c_str());
     }
     const detail::SchemaBlob& blob = detail::schema_blob(schema);
-    if (detail::kStoreAreaHeaderSize + blob.size > geometry.schema_area_size) {
+    if (format::kStoreAreaHeaderSize + blob.size > geometry.schema_area_size) {
       return Status(Error::TooLarge,
                     "%s: this build's schema (%zu bytes) does not fit the store's schema area "
                     "(%u bytes); open a new store (a new path) for this build",
                     path.c_str(), blob.size, geometry.schema_area_size);
     }
-    std::vector<std::uint8_t> area_bytes(detail::kStoreAreaHeaderSize + blob.size);
-    detail::le::store64(area_bytes.data(), blob.hash);
-    detail::le::store32(area_bytes.data() + 8, static_cast<std::uint32_t>(blob.size));
-    std::memcpy(area_bytes.data() + detail::kStoreAreaHeaderSize, blob.data, blob.size);
-    detail::le::store32(
-        area_bytes.data() + 12,
-        detail::crc32c_extend(detail::crc32c(area_bytes.data(), 12), blob.data, blob.size));
+    std::vector<std::uint8_t> area_bytes(format::kStoreAreaHeaderSize + blob.size);
+    format::store64(area_bytes.data() + format::kStoreAreaHashOffset, blob.hash);
+    format::store32(area_bytes.data() + format::kStoreAreaSizeOffset,
+                    static_cast<std::uint32_t>(blob.size));
+    std::memcpy(area_bytes.data() + format::kStoreAreaHeaderSize, blob.data, blob.size);
+    format::store32(
+        area_bytes.data() + format::kStoreAreaCrcOffset,
+        detail::crc32c_extend(detail::crc32c(area_bytes.data(), format::kStoreAreaCrcOffset),
+                              blob.data, blob.size));
     // Forget the old area before overwriting it: a failed write leaves it unusable either way.
     areas[target] = StoreSchemaArea();
     for (Slot& slot : slots) {
@@ -557,7 +559,7 @@ struct Store::Impl {
           detail::pwrite_all(fd, copy.bytes, copy.size, static_cast<off_t>(copy.offset), file);
       if (!status.ok()) return status;
     }
-    std::uint8_t header[detail::kStoreHeaderSize];
+    std::uint8_t header[format::kStoreHeaderSize];
     detail::encode_store_header(g, header);
     Status status = detail::pwrite_all(fd, header, sizeof header, 0, file);
     if (!status.ok()) return status;
@@ -614,7 +616,7 @@ struct Store::Impl {
     StoreGeometry target =
         detail::store_geometry_for(requested.slot_count, requested.slot_size, own_schema_bytes);
     target.schema_area_size = std::max(target.schema_area_size, geometry.schema_area_size);
-    target.slots_offset = detail::kStorePageSize + 2 * std::uint64_t{target.schema_area_size};
+    target.slots_offset = format::kStorePageSize + 2 * std::uint64_t{target.schema_area_size};
 
     // What to carry: the areas, every checkpoint the crash-loop fallback may still need, then
     // the newest others the journal does not exclude, up to slot_count - 1 in all (the save
@@ -631,7 +633,7 @@ struct Store::Impl {
     std::vector<Copy> copies;
     for (int i = 0; i < 2; ++i) {
       if (!areas[i].valid) continue;
-      kept.emplace_back(detail::kStoreAreaHeaderSize + areas[i].size);
+      kept.emplace_back(format::kStoreAreaHeaderSize + areas[i].size);
       std::size_t got = 0;
       status = detail::pread_full(fd, kept.back().data(), kept.back().size(),
                                   static_cast<off_t>(area_offsets[i]), got, path.c_str());
@@ -736,7 +738,7 @@ struct Store::Impl {
     StoreGeometry guess;
     if (options != nullptr && geometry_from_file_size(*options, file_size, guess) &&
         detail::salvage_fits_geometry(salvage, guess, file_size)) {
-      std::uint8_t header[detail::kStoreHeaderSize];
+      std::uint8_t header[format::kStoreHeaderSize];
       detail::encode_store_header(guess, header);
       status = detail::pwrite_all(fd, header, sizeof header, 0, path.c_str());
       if (status.ok() && detail::file_system().fdatasync(fd) != 0) {
@@ -988,7 +990,7 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
   const Status counter_read =
       impl.keys ? impl.counter->read(impl.counter_value) : Status(Error::NoValidSlot, "no keys");
   impl.adopt_journal(header, got);
-  got = std::min(got, detail::kStoreHeaderSize);
+  got = std::min(got, format::kStoreHeaderSize);
   Status header_status;
   if (!created) header_status = detail::decode_store_header(header, got, path, impl.geometry);
   bool needs_initialising = created;
@@ -1097,7 +1099,7 @@ Status Store::save() {
   // cover it.
   const std::uint64_t newest =
       std::max({last_sequence_, impl.highest_known_sequence(), impl.keys ? impl.counter_value : 0});
-  if (newest >= detail::kMaxRecordSequence) {
+  if (newest >= format::kMaxRecordSequence) {
     return Status(Error::Corrupt,
                   "%s: the store's sequence numbers are exhausted (a record, the journal or the "
                   "freshness counter names sequence %llu, which only damage or forgery "

@@ -11,9 +11,9 @@
 #include "authentication.hpp"
 #include "crc32c.hpp"
 #include "file_io.hpp"
-#include "little_endian.hpp"
 #include "parsed_schema.hpp"
 #include "schema_blob.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
 namespace {
@@ -28,12 +28,14 @@ bool all_zero(const std::uint8_t* p, std::size_t n) {
 }
 
 std::uint64_t round_up_to_page(std::uint64_t n) {
-  return (n + kStorePageSize - 1) / kStorePageSize * kStorePageSize;
+  return (n + format::kStorePageSize - 1) / format::kStorePageSize * format::kStorePageSize;
 }
 
 // The size a record header claims for its whole record.
 std::uint64_t claimed_record_size(const std::uint8_t* header) {
-  return std::uint64_t{le::load16(header + 10)} + le::load32(header + 40) + le::load32(header + 44);
+  return std::uint64_t{format::load16(header + format::kRecordHeaderSizeOffset)} +
+         format::load32(header + format::kRecordSchemaSizeOffset) +
+         format::load32(header + format::kRecordPayloadSizeOffset);
 }
 
 }  // namespace
@@ -43,57 +45,61 @@ StoreGeometry store_geometry_for(std::uint32_t slots, std::uint32_t slot_size,
   StoreGeometry g;
   g.slot_count = slots;
   g.slot_size = slot_size;
-  const std::uint64_t wanted = 4 * (kStoreAreaHeaderSize + std::uint64_t{schema_bytes});
+  const std::uint64_t wanted = 4 * (format::kStoreAreaHeaderSize + std::uint64_t{schema_bytes});
   g.schema_area_size = static_cast<std::uint32_t>(
-      round_up_to_page(std::max<std::uint64_t>(kStoreMinSchemaAreaSize, wanted)));
-  g.slots_offset = kStorePageSize + 2 * std::uint64_t{g.schema_area_size};
+      round_up_to_page(std::max<std::uint64_t>(format::kStoreMinSchemaAreaSize, wanted)));
+  g.slots_offset = format::kStorePageSize + 2 * std::uint64_t{g.schema_area_size};
   return g;
 }
 
 Status check_store_dimensions(std::uint32_t slots, std::uint32_t slot_size) {
-  if (slots < 2 || slots > kStoreMaxSlots) {
-    return Status(Error::TooLarge, "a store needs 2 to %u slots, not %u", kStoreMaxSlots, slots);
+  if (slots < 2 || slots > format::kStoreMaxSlots) {
+    return Status(Error::TooLarge, "a store needs 2 to %u slots, not %u", format::kStoreMaxSlots,
+                  slots);
   }
-  if (slot_size < kStoreMinSlotSize || slot_size > kStoreMaxSlotSize) {
+  if (slot_size < format::kStoreMinSlotSize || slot_size > format::kStoreMaxSlotSize) {
     return Status(Error::TooLarge, "a store slot must have %u to %u bytes, not %u",
-                  kStoreMinSlotSize, kStoreMaxSlotSize, slot_size);
+                  format::kStoreMinSlotSize, format::kStoreMaxSlotSize, slot_size);
   }
   return Status();
 }
 
 void encode_store_header(const StoreGeometry& g, std::uint8_t* p) {
-  std::memset(p, 0, kStoreHeaderSize);
-  std::memcpy(p, kStoreFileMagic, sizeof kStoreFileMagic);
-  le::store16(p + 8, kStoreFileFormatVersion);
-  le::store32(p + 12, g.slot_count);
-  le::store32(p + 16, g.slot_size);
-  le::store32(p + 20, g.schema_area_size);
-  le::store64(p + 24, g.slots_offset);
-  le::store32(p + 32, crc32c(p, 32));
+  std::memset(p, 0, format::kStoreHeaderSize);
+  std::memcpy(p, format::kStoreFileMagic, sizeof format::kStoreFileMagic);
+  format::store16(p + format::kStoreVersionOffset, format::kStoreFileFormatVersion);
+  format::store32(p + format::kStoreSlotCountOffset, g.slot_count);
+  format::store32(p + format::kStoreSlotSizeOffset, g.slot_size);
+  format::store32(p + format::kStoreSchemaAreaSizeOffset, g.schema_area_size);
+  format::store64(p + format::kStoreSlotsOffsetOffset, g.slots_offset);
+  format::store32(p + format::kStoreHeaderCrcOffset, crc32c(p, format::kStoreHeaderCrcOffset));
 }
 
 Status decode_store_header(const std::uint8_t* p, std::size_t size, const char* path,
                            StoreGeometry& g) {
-  if (size < sizeof kStoreFileMagic || std::memcmp(p, kStoreFileMagic, 8) != 0) {
+  if (size < sizeof format::kStoreFileMagic || std::memcmp(p, format::kStoreFileMagic, 8) != 0) {
     return Status(Error::NotACheckpoint, "%s is not a symcr store (bad magic)", path);
   }
-  if (size < kStoreHeaderSize) return Status(Error::Truncated, "%s: store header truncated", path);
-  const std::uint16_t version = le::load16(p + 8);
-  if (version > kStoreFileFormatVersion) {
+  if (size < format::kStoreHeaderSize)
+    return Status(Error::Truncated, "%s: store header truncated", path);
+  const std::uint16_t version = format::load16(p + format::kStoreVersionOffset);
+  if (version > format::kStoreFileFormatVersion) {
     return Status(Error::FutureVersion,
                   "%s was written by store format version %u; this build reads up to %u", path,
-                  unsigned{version}, unsigned{kStoreFileFormatVersion});
+                  unsigned{version}, unsigned{format::kStoreFileFormatVersion});
   }
-  if (le::load32(p + 32) != crc32c(p, 32)) {
+  if (format::load32(p + format::kStoreHeaderCrcOffset) !=
+      crc32c(p, format::kStoreHeaderCrcOffset)) {
     return Status(Error::Checksum, "%s: store header checksum mismatch", path);
   }
-  g.slot_count = le::load32(p + 12);
-  g.slot_size = le::load32(p + 16);
-  g.schema_area_size = le::load32(p + 20);
-  g.slots_offset = le::load64(p + 24);
+  g.slot_count = format::load32(p + format::kStoreSlotCountOffset);
+  g.slot_size = format::load32(p + format::kStoreSlotSizeOffset);
+  g.schema_area_size = format::load32(p + format::kStoreSchemaAreaSizeOffset);
+  g.slots_offset = format::load64(p + format::kStoreSlotsOffsetOffset);
   if (version == 0 || !check_store_dimensions(g.slot_count, g.slot_size).ok() ||
-      g.schema_area_size <= kStoreAreaHeaderSize || g.schema_area_size % kStorePageSize != 0 ||
-      g.slots_offset != kStorePageSize + 2 * std::uint64_t{g.schema_area_size}) {
+      g.schema_area_size <= format::kStoreAreaHeaderSize ||
+      g.schema_area_size % format::kStorePageSize != 0 ||
+      g.slots_offset != format::kStorePageSize + 2 * std::uint64_t{g.schema_area_size}) {
     return Status(Error::Corrupt, "%s: invalid store header", path);
   }
   return Status();
@@ -102,29 +108,30 @@ Status decode_store_header(const std::uint8_t* p, std::size_t size, const char* 
 Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint64_t capacity,
                        const Schema* own, StoreSchemaArea& area) {
   area = StoreSchemaArea();
-  std::uint8_t head[kStoreAreaHeaderSize];
+  std::uint8_t head[format::kStoreAreaHeaderSize];
   std::size_t got = 0;
   Status status = pread_full(fd, head, sizeof head, static_cast<off_t>(offset), got, path);
   if (!status.ok()) return status;
-  const std::uint32_t size = le::load32(head + 8);
-  if (got < sizeof head || size == 0 || capacity < kStoreAreaHeaderSize ||
-      size > capacity - kStoreAreaHeaderSize) {
+  const std::uint32_t size = format::load32(head + format::kStoreAreaSizeOffset);
+  if (got < sizeof head || size == 0 || capacity < format::kStoreAreaHeaderSize ||
+      size > capacity - format::kStoreAreaHeaderSize) {
     return Status();  // empty or damaged: no schema here
   }
   std::vector<std::uint8_t> bytes(size);
-  status = pread_full(fd, bytes.data(), size, static_cast<off_t>(offset + kStoreAreaHeaderSize),
-                      got, path);
+  status = pread_full(fd, bytes.data(), size,
+                      static_cast<off_t>(offset + format::kStoreAreaHeaderSize), got, path);
   if (!status.ok()) return status;
-  const std::uint64_t hash = le::load64(head);
-  const std::uint32_t crc = crc32c_extend(crc32c(head, 12), bytes.data(), size);
-  if (got < size || crc != le::load32(head + 12)) return Status();
+  const std::uint64_t hash = format::load64(head + format::kStoreAreaHashOffset);
+  const std::uint32_t crc =
+      crc32c_extend(crc32c(head, format::kStoreAreaCrcOffset), bytes.data(), size);
+  if (got < size || crc != format::load32(head + format::kStoreAreaCrcOffset)) return Status();
   const SchemaBlob* own_blob = own ? &schema_blob(*own) : nullptr;
   if (own_blob && own_blob->hash == hash && own_blob->size == size &&
       std::memcmp(own_blob->data, bytes.data(), size) == 0) {
     area.own = own;  // the bytes are the blob the hash was computed over: nothing to check
   } else {
     auto parsed = std::make_shared<ParsedSchema>();
-    if (fnv1a64(bytes.data(), size) != hash ||
+    if (format::fnv1a64(bytes.data(), size) != hash ||
         !parse_schema(bytes.data(), size, *parsed, &hash).ok()) {
       return Status();
     }
@@ -181,7 +188,7 @@ Status read_store_slot(int fd, const char* path, std::uint64_t offset, std::uint
   std::size_t got = 0;
   Status status = pread_full(fd, buffer.data(), first, static_cast<off_t>(offset), got, path);
   if (!status.ok()) return status;
-  if (got < kRecordHeaderSize || all_zero(buffer.data(), 8)) {
+  if (got < format::kRecordHeaderSize || all_zero(buffer.data(), 8)) {
     // Never written, or cut off by a truncated file: nothing to restore either way.
     if (got > 0 && !all_zero(buffer.data(), std::min<std::size_t>(got, 8))) {
       out.state = StoreSlotState::Corrupt;
@@ -208,7 +215,7 @@ Status read_store_slot(int fd, const char* path, std::uint64_t offset, std::uint
     if (problem) *problem = parsed;
     return Status();
   }
-  if (view.header.sequence > kMaxRecordSequence) {
+  if (view.header.sequence > format::kMaxRecordSequence) {
     out.state = StoreSlotState::Corrupt;
     if (problem) {
       *problem = Status(Error::Corrupt,
@@ -244,15 +251,15 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
   // resumes after a record found, so a checkpoint held as data inside another is not taken.
   // The scan ends where the largest store the records found could belong to ends: slots are
   // one slot size apart, so the slot size divides the distance between any two records found,
-  // and a store has at most kStoreMaxSlots slots. Holes in a sparse file (zeros, no record) are
-  // skipped without reading them.
+  // and a store has at most format::kStoreMaxSlots slots. Holes in a sparse file (zeros, no record)
+  // are skipped without reading them.
   std::vector<std::uint8_t> chunk(kSalvageChunk);
   std::vector<std::uint8_t> record;
   RecordView view;
-  std::uint64_t position = kStorePageSize;
+  std::uint64_t position = format::kStorePageSize;
   std::uint64_t end = file_size;
   std::uint64_t spacing = 0;  // the greatest common divisor of the records' distances
-  while (position + kRecordHeaderSize <= end) {
+  while (position + format::kRecordHeaderSize <= end) {
     const off_t data = ::lseek(fd, static_cast<off_t>(position), SEEK_DATA);
     if (data < 0 && errno == ENXIO) break;  // only a hole from here on
     if (data > 0 && static_cast<std::uint64_t>(data) > position) {
@@ -263,20 +270,20 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
     Status status =
         pread_full(fd, chunk.data(), chunk.size(), static_cast<off_t>(position), got, path);
     if (!status.ok()) return status;
-    if (got < sizeof kRecordMagic) break;
+    if (got < sizeof format::kRecordMagic) break;
     const std::uint8_t* hit = static_cast<const std::uint8_t*>(
-        ::memmem(chunk.data(), got, kRecordMagic, sizeof kRecordMagic));
+        ::memmem(chunk.data(), got, format::kRecordMagic, sizeof format::kRecordMagic));
     if (hit == nullptr) {
-      position += got - (sizeof kRecordMagic - 1);  // a magic may straddle two pieces
+      position += got - (sizeof format::kRecordMagic - 1);  // a magic may straddle two pieces
       continue;
     }
     const std::uint64_t offset = position + static_cast<std::uint64_t>(hit - chunk.data());
-    std::uint8_t header[kRecordHeaderSize];
+    std::uint8_t header[format::kRecordHeaderSize];
     status = pread_full(fd, header, sizeof header, static_cast<off_t>(offset), got, path);
     if (!status.ok()) return status;
     const std::uint64_t claimed = got == sizeof header ? claimed_record_size(header) : 0;
     bool found = false;
-    if (claimed >= kRecordHeaderSize && claimed <= kStoreMaxSlotSize &&
+    if (claimed >= format::kRecordHeaderSize && claimed <= format::kStoreMaxSlotSize &&
         offset + claimed <= file_size) {
       record.resize(static_cast<std::size_t>(claimed));
       status = pread_full(fd, record.data(), record.size(), static_cast<off_t>(offset), got, path);
@@ -291,8 +298,10 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
       out.record_offsets.push_back(offset);
       out.record_sizes.push_back(static_cast<std::uint32_t>(view.record_size));
       const std::uint64_t slot_size_bound =
-          spacing != 0 ? std::min<std::uint64_t>(spacing, kStoreMaxSlotSize) : kStoreMaxSlotSize;
-      end = std::min(file_size, out.record_offsets.front() + kStoreMaxSlots * slot_size_bound);
+          spacing != 0 ? std::min<std::uint64_t>(spacing, format::kStoreMaxSlotSize)
+                       : format::kStoreMaxSlotSize;
+      end = std::min(file_size,
+                     out.record_offsets.front() + format::kStoreMaxSlots * slot_size_bound);
       position = offset + view.record_size;
     } else {
       position = offset + 1;
@@ -302,23 +311,24 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
   // boundary before the first slot.
   const std::uint64_t areas_end =
       out.record_offsets.empty() ? file_size : out.record_offsets.front();
-  for (std::uint64_t area_size = kStoreMinSchemaAreaSize;
-       kStorePageSize + 2 * area_size <= areas_end; area_size += kStorePageSize) {
+  for (std::uint64_t area_size = format::kStoreMinSchemaAreaSize;
+       format::kStorePageSize + 2 * area_size <= areas_end; area_size += format::kStorePageSize) {
     StoreSchemaArea candidate;
-    Status status =
-        load_store_area(fd, path, kStorePageSize + area_size, area_size, nullptr, candidate);
+    Status status = load_store_area(fd, path, format::kStorePageSize + area_size, area_size,
+                                    nullptr, candidate);
     if (!status.ok()) return status;
     if (candidate.valid) {
       out.areas[1] = std::move(candidate);
-      out.area_offsets[1] = kStorePageSize + area_size;
+      out.area_offsets[1] = format::kStorePageSize + area_size;
       out.area_capacities[1] = area_size;
       break;
     }
   }
-  out.area_offsets[0] = kStorePageSize;
-  out.area_capacities[0] = out.areas[1].valid
-                               ? out.area_capacities[1]
-                               : (areas_end > kStorePageSize ? areas_end - kStorePageSize : 0);
+  out.area_offsets[0] = format::kStorePageSize;
+  out.area_capacities[0] =
+      out.areas[1].valid
+          ? out.area_capacities[1]
+          : (areas_end > format::kStorePageSize ? areas_end - format::kStorePageSize : 0);
   return load_store_area(fd, path, out.area_offsets[0], out.area_capacities[0], nullptr,
                          out.areas[0]);
 }
@@ -329,7 +339,7 @@ bool salvage_fits_geometry(const StoreSalvage& salvage, const StoreGeometry& g,
   for (int i = 0; i < 2; ++i) {
     if (!salvage.areas[i].valid) continue;
     if (salvage.area_offsets[i] != g.area_offset(i) ||
-        kStoreAreaHeaderSize + salvage.areas[i].size > g.schema_area_size) {
+        format::kStoreAreaHeaderSize + salvage.areas[i].size > g.schema_area_size) {
       return false;
     }
   }
@@ -344,8 +354,8 @@ bool salvage_fits_geometry(const StoreSalvage& salvage, const StoreGeometry& g,
 }
 
 bool looks_like_store(const std::uint8_t* data, std::size_t size) {
-  return size >= sizeof kStoreFileMagic &&
-         std::memcmp(data, kStoreFileMagic, sizeof kStoreFileMagic) == 0;
+  return size >= sizeof format::kStoreFileMagic &&
+         std::memcmp(data, format::kStoreFileMagic, sizeof format::kStoreFileMagic) == 0;
 }
 
 }  // namespace symcr::detail

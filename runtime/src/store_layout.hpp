@@ -1,6 +1,7 @@
-// The store file's layout (docs/format.md §4), written once for the writing Store and the
-// read-only StoreReader: the header, the two schema areas, reading and classifying one slot,
-// and finding the checkpoints of a store whose header is damaged. Internal to the runtime.
+// The store file's layout (docs/format.md §4; its constants are the format core's,
+// symcr/format/store.hpp), written once for the writing Store and the read-only StoreReader: the
+// header, the two schema areas, reading and classifying one slot, and finding the checkpoints of a
+// store whose header is damaged. Internal to the runtime.
 #ifndef SYMCR_SRC_STORE_LAYOUT_HPP
 #define SYMCR_SRC_STORE_LAYOUT_HPP
 
@@ -11,19 +12,10 @@
 
 #include "parsed_schema.hpp"
 #include "record.hpp"
+#include "symcr/format/store.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {
-
-inline constexpr std::uint8_t kStoreFileMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'S', 'T', 'O'};
-inline constexpr std::uint16_t kStoreFileFormatVersion = 1;
-inline constexpr std::size_t kStoreHeaderSize = 36;  // 32 bytes of fields + their CRC
-inline constexpr std::uint64_t kStorePageSize = 4096;
-inline constexpr std::size_t kStoreAreaHeaderSize = 16;  // u64 hash, u32 size, u32 crc
-inline constexpr std::uint32_t kStoreMinSchemaAreaSize = 64 * 1024;
-inline constexpr std::uint32_t kStoreMaxSlots = 1u << 20;
-inline constexpr std::uint32_t kStoreMinSlotSize = 2 * kRecordHeaderSize;
-inline constexpr std::uint32_t kStoreMaxSlotSize = 1u << 30;
 
 struct StoreGeometry {
   std::uint32_t slot_count = 0;
@@ -32,7 +24,7 @@ struct StoreGeometry {
   std::uint64_t slots_offset = 0;
 
   std::uint64_t area_offset(int area) const {
-    return kStorePageSize + static_cast<std::uint64_t>(area) * schema_area_size;
+    return format::kStorePageSize + static_cast<std::uint64_t>(area) * schema_area_size;
   }
   std::uint64_t slot_offset(std::uint32_t slot) const {
     return slots_offset + static_cast<std::uint64_t>(slot) * slot_size;
@@ -47,7 +39,8 @@ StoreGeometry store_geometry_for(std::uint32_t slots, std::uint32_t slot_size,
 // TooLarge unless `slots` and `slot_size` are within the format's bounds.
 Status check_store_dimensions(std::uint32_t slots, std::uint32_t slot_size);
 
-void encode_store_header(const StoreGeometry& geometry, std::uint8_t* out);  // kStoreHeaderSize
+void encode_store_header(const StoreGeometry& geometry,
+                         std::uint8_t* out);  // format::kStoreHeaderSize
 // Decodes the first `size` bytes of a store: magic, version, CRC and geometry.
 Status decode_store_header(const std::uint8_t* data, std::size_t size, const char* path,
                            StoreGeometry& out);

@@ -38,7 +38,7 @@ Status StoreReader::open(const char* path) {
   seal.keys = keys.get();
   seal.store_id = store_id_;
   journal_ = read_restore_journal(header, got, &seal, &journal_distrust_);
-  status = decode_store_header(header, std::min<std::size_t>(got, kStoreHeaderSize), path,
+  status = decode_store_header(header, std::min<std::size_t>(got, format::kStoreHeaderSize), path,
                                geometry_);
   if (!status.ok()) return status;
   if (static_cast<std::uint64_t>(info.st_size) < geometry_.file_size()) {
@@ -80,7 +80,7 @@ RecordBinding StoreReader::binding(std::uint32_t index, int area) const {
   RecordBinding binding;
   std::memcpy(binding.store_id, store_id_, sizeof store_id_);
   binding.location = geometry_.slot_offset(index);
-  if (area >= 0) std::memcpy(binding.schema_digest, areas_[area].digest(), kSha256Size);
+  if (area >= 0) std::memcpy(binding.schema_digest, areas_[area].digest(), format::kSha256Size);
   return binding;
 }
 

@@ -53,7 +53,7 @@ class Walker {
     for (std::uint32_t c = 0; c < readings.count && c < clocks.size(); ++c) {
       push(PathFrame{PathFrame::Kind::Name, clocks[c] && clocks[c]->name ? clocks[c]->name : "?",
                      0});
-      leaf(kReading, readings.readings + 8 * std::size_t{c}, 8);
+      leaf(kReading, readings.reading_bytes(c), format::kClockReadingSize);
       pop();
     }
     pop();

@@ -32,9 +32,10 @@
 #include "crc32c.hpp"
 #include "file_io.hpp"
 #include "fixture_tables.hpp"
-#include "little_endian.hpp"
 #include "schema_blob.hpp"
 #include "schema_file.hpp"
+#include "symcr/format/bytes.hpp"
+#include "symcr/format/hashes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace {
@@ -62,9 +63,9 @@ bool flip_newest_slot(const char* path) {
   if (fd < 0) return false;
   std::uint8_t header[36];
   bool ok = ::pread(fd, header, sizeof header, 0) == sizeof header;
-  const std::uint32_t slot_count = symcr::detail::le::load32(header + 12);
-  const std::uint32_t slot_size = symcr::detail::le::load32(header + 16);
-  const std::uint64_t slots_offset = symcr::detail::le::load64(header + 24);
+  const std::uint32_t slot_count = symcr::format::load32(header + 12);
+  const std::uint32_t slot_size = symcr::format::load32(header + 16);
+  const std::uint64_t slots_offset = symcr::format::load64(header + 24);
   long newest_offset = -1;
   std::uint64_t newest_sequence = 0;
   for (std::uint32_t i = 0; ok && i < slot_count; ++i) {
@@ -72,7 +73,7 @@ bool flip_newest_slot(const char* path) {
     const long offset = static_cast<long>(slots_offset + std::uint64_t{i} * slot_size);
     if (::pread(fd, record, sizeof record, offset) != sizeof record) ok = false;
     if (!ok || std::memcmp(record, "SYMCRCKP", 8) != 0) continue;
-    const std::uint64_t sequence = symcr::detail::le::load64(record + 16);
+    const std::uint64_t sequence = symcr::format::load64(record + 16);
     if (newest_offset < 0 || sequence > newest_sequence) {
       newest_offset = offset;
       newest_sequence = sequence;
@@ -91,13 +92,14 @@ bool flip_and_resign(const char* path, long offset) {
   }
   bytes[static_cast<std::size_t>(offset)] ^= 0xFF;
   using namespace symcr::detail;
-  const std::uint16_t header_size = le::load16(bytes.data() + 10);
-  const std::uint32_t schema_size = le::load32(bytes.data() + 40);
+  const std::uint16_t header_size = symcr::format::load16(bytes.data() + 10);
+  const std::uint32_t schema_size = symcr::format::load32(bytes.data() + 40);
   if (std::size_t{header_size} + schema_size <= bytes.size()) {
-    le::store64(bytes.data() + 32, fnv1a64(bytes.data() + header_size, schema_size));
+    symcr::format::store64(bytes.data() + 32,
+                           symcr::format::fnv1a64(bytes.data() + header_size, schema_size));
   }
-  le::store32(bytes.data() + 48, 0);
-  le::store32(bytes.data() + 48, crc32c(bytes.data(), bytes.size()));
+  symcr::format::store32(bytes.data() + 48, 0);
+  symcr::format::store32(bytes.data() + 48, crc32c(bytes.data(), bytes.size()));
   return write_file_atomically(path, bytes.data(), bytes.size(), symcr::Durability::PageCache)
       .ok();
 }

@@ -12,6 +12,7 @@
 // StoreTest.FallsBackPastABitFlipInTheNewestSlot); they are not repeated here.
 #include <errno.h>
 #include <fcntl.h>
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/mman.h>
 #include <sys/mount.h>
@@ -28,11 +29,9 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "file_test_util.hpp"
-#include "little_endian.hpp"
 #include "reliability_schemas.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace reliability {
@@ -146,14 +145,14 @@ TEST(CrashConsistency, TornSlotAtEveryPageBoundaryFallsBackToThePreviousCheckpoi
   }
   // Slots: 1 and 3 share slot 0 (3 overwrote 1), 2 is in slot 1. Find slot 0 by its sequence.
   const std::vector<std::uint8_t> file = file_tests::read_file(path);
-  const std::uint32_t area_size = symcr::detail::le::load32(file.data() + 20);
+  const std::uint32_t area_size = symcr::format::load32(file.data() + 20);
   const std::uint64_t slots_offset = 4096 + 2 * std::uint64_t{area_size};
   for (std::uint32_t slot = 0; slot < 2; ++slot) {
     const std::uint64_t at = slots_offset + std::uint64_t{slot} * options.slot_size;
-    if (symcr::detail::le::load64(file.data() + at + 16) == 3) newest_offset = at;
+    if (symcr::format::load64(file.data() + at + 16) == 3) newest_offset = at;
   }
   ASSERT_NE(newest_offset, 0u);
-  const std::uint64_t record_size = 56 + symcr::detail::le::load32(file.data() + newest_offset + 44);
+  const std::uint64_t record_size = 56 + symcr::format::load32(file.data() + newest_offset + 44);
   newest_record.assign(file.begin() + newest_offset, file.begin() + newest_offset + record_size);
 
   // The slot as it was before sequence 3 was written: sequence 1's record.

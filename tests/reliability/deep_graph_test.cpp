@@ -11,6 +11,7 @@
 //     structs inside each of many containers is refused within that stack, and a schema whose
 //     types nest by value past the limit, or contain themselves by value, is refused.
 // The 10^6-node *cyclic* graph with sharing is EnginePerformance.MillionNodeCyclicGraph.
+#include <gtest/gtest.h>
 #include <pthread.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -20,15 +21,13 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
-#include "little_endian.hpp"
 #include "parsed_schema.hpp"
 #include "payload_grammar.hpp"
 #include "reliability_schemas.hpp"
 #include "restore_payload.hpp"
 #include "schema_blob.hpp"
 #include "schema_facts.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 #include "visit.hpp"
 
@@ -121,8 +120,8 @@ void* save_and_restore_deepest_chain(void* argument) {
     }
     std::size_t leaves = 0;
   } visitor;
-  std::vector<std::uint8_t> payload(run.buffer.begin() + 56 + symcr::detail::le::load32(run.buffer.data() + 40),
-                                    run.buffer.end());
+  std::vector<std::uint8_t> payload(
+      run.buffer.begin() + 56 + symcr::format::load32(run.buffer.data() + 40), run.buffer.end());
   run.decoded = symcr::detail::visit_payload(chain_schema(), payload.data(), payload.size(),
                                              visitor).ok() &&
                 visitor.leaves == run.depth + 1;  // one value per level
@@ -158,13 +157,13 @@ std::vector<std::uint8_t> nested_payload(std::size_t depth) {
   std::vector<std::uint8_t> payload(depth * 8 + 8 + 8);
   std::uint8_t* p = payload.data();
   for (std::size_t level = 0; level < depth; ++level, p += 8) {
-    symcr::detail::le::store32(p, static_cast<std::uint32_t>(level));
-    symcr::detail::le::store32(p + 4, 1);
+    symcr::format::store32(p, static_cast<std::uint32_t>(level));
+    symcr::format::store32(p + 4, 1);
   }
-  symcr::detail::le::store32(p, 7);      // the innermost value
-  symcr::detail::le::store32(p + 4, 0);  // with no elements
-  symcr::detail::le::store32(p + 8, 0);  // heap count
-  symcr::detail::le::store32(p + 12, 0);  // reference count
+  symcr::format::store32(p, 7);       // the innermost value
+  symcr::format::store32(p + 4, 0);   // with no elements
+  symcr::format::store32(p + 8, 0);   // heap count
+  symcr::format::store32(p + 12, 0);  // reference count
   return payload;
 }
 
@@ -231,7 +230,7 @@ struct StructChainInContainers {
   // The root's payload: `levels` vectors of one element each, the innermost empty.
   static std::vector<std::uint8_t> payload(std::size_t levels) {
     std::vector<std::uint8_t> bytes(4 * levels + 12, 0);
-    for (std::size_t i = 0; i < levels; ++i) symcr::detail::le::store32(bytes.data() + 4 * i, 1);
+    for (std::size_t i = 0; i < levels; ++i) symcr::format::store32(bytes.data() + 4 * i, 1);
     return bytes;  // then the empty vector, no heap objects, no references
   }
   std::vector<std::string> names;

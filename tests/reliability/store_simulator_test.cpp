@@ -31,12 +31,12 @@
 #include "authentication.hpp"
 #include "crc32c.hpp"
 #include "freshness.hpp"
-#include "little_endian.hpp"
 #include "record.hpp"
 #include "restore_journal.hpp"
 #include "schema_tables.hpp"
 #include "simulated_file_system.hpp"
 #include "store_layout.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace reliability {
@@ -81,21 +81,20 @@ std::map<std::uint64_t, std::int64_t> intact_checkpoints(const std::vector<std::
                                                          std::uint64_t* newest_journal = nullptr) {
   std::map<std::uint64_t, std::int64_t> found;
   symcr::detail::StoreGeometry g;
-  if (file.size() < symcr::detail::kStoreHeaderSize ||
+  if (file.size() < symcr::format::kStoreHeaderSize ||
       !symcr::detail::decode_store_header(file.data(), file.size(), "store", g).ok()) {
     return found;
   }
   std::set<std::uint64_t> area_hashes;
   for (int i = 0; i < 2; ++i) {
     const std::uint64_t at = g.area_offset(i);
-    if (at + symcr::detail::kStoreAreaHeaderSize > file.size()) continue;
+    if (at + symcr::format::kStoreAreaHeaderSize > file.size()) continue;
     const std::uint8_t* head = file.data() + at;
-    const std::uint32_t size = symcr::detail::le::load32(head + 8);
-    if (size == 0 || at + symcr::detail::kStoreAreaHeaderSize + size > file.size()) continue;
+    const std::uint32_t size = symcr::format::load32(head + 8);
+    if (size == 0 || at + symcr::format::kStoreAreaHeaderSize + size > file.size()) continue;
     const std::uint32_t crc = symcr::detail::crc32c_extend(
-        symcr::detail::crc32c(head, 12), head + symcr::detail::kStoreAreaHeaderSize, size);
-    if (crc == symcr::detail::le::load32(head + 12))
-      area_hashes.insert(symcr::detail::le::load64(head));
+        symcr::detail::crc32c(head, 12), head + symcr::format::kStoreAreaHeaderSize, size);
+    if (crc == symcr::format::load32(head + 12)) area_hashes.insert(symcr::format::load64(head));
   }
   for (std::uint32_t i = 0; i < g.slot_count; ++i) {
     const std::uint64_t at = g.slot_offset(i);
@@ -105,7 +104,7 @@ std::map<std::uint64_t, std::int64_t> intact_checkpoints(const std::vector<std::
     symcr::detail::RecordView view;
     if (!symcr::detail::parse_record(file.data() + at, room, view).ok()) continue;
     if (area_hashes.count(view.header.schema_hash) == 0 || view.payload_size < 8) continue;
-    found[view.header.sequence] = static_cast<std::int64_t>(symcr::detail::le::load64(view.payload));
+    found[view.header.sequence] = static_cast<std::int64_t>(symcr::format::load64(view.payload));
     if (newest_journal != nullptr && view.header.sequence == found.rbegin()->first) {
       *newest_journal = view.header.journal_freshness;
     }

@@ -4,6 +4,8 @@
 // kFieldHasRange/range_min/range_max) and a type's symcr_validate (TypeInfo::validate). A value
 // breaking them is rejected (named in the report), the reader keeps its own value, and strict
 // mode refuses the whole restore.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -12,18 +14,15 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "crc32c.hpp"
 #include "file_test_util.hpp"
-#include "little_endian.hpp"
 #include "reliability_schemas.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace reliability {
 namespace {
 
-namespace le = symcr::detail::le;
 using symcr::Decision;
 
 struct Sensor {
@@ -130,7 +129,8 @@ class TaintedData : public ::testing::Test {
     fill_good();
     ASSERT_TRUE(symcr::checkpoint(vehicle_schema(), path_.c_str()).ok());
     record_ = file_tests::read_file(path_);
-    payload_at_ = le::load16(record_.data() + 10) + le::load32(record_.data() + 40);
+    payload_at_ =
+        symcr::format::load16(record_.data() + 10) + symcr::format::load32(record_.data() + 40);
     ASSERT_EQ(record_.size() - payload_at_, kPayloadSize);
   }
 
@@ -140,8 +140,8 @@ class TaintedData : public ::testing::Test {
   void tamper(Edit edit) {
     std::vector<std::uint8_t> bytes = record_;
     edit(bytes.data() + payload_at_);
-    le::store32(bytes.data() + 48, 0);
-    le::store32(bytes.data() + 48, symcr::detail::crc32c(bytes.data(), bytes.size()));
+    symcr::format::store32(bytes.data() + 48, 0);
+    symcr::format::store32(bytes.data() + 48, symcr::detail::crc32c(bytes.data(), bytes.size()));
     file_tests::write_file(path_, bytes);
   }
 
@@ -167,12 +167,13 @@ bool rejected(const symcr::Report& report, const std::string& path, const char* 
 TEST_F(TaintedData, OutOfRangeAndInvalidValuesAreRejectedTheRestRestored) {
   tamper([](std::uint8_t* payload) {
     put_f32(payload + kAltitude, 1e9f);
-    le::store32(payload + kThrottle, static_cast<std::uint32_t>(-7));
+    symcr::format::store32(payload + kThrottle, static_cast<std::uint32_t>(-7));
     payload[kMode] = 250;                                           // no rule: restored
-    le::store32(payload + kLimits + 2 * 8, 100);                    // limits[2] = {100, 12}
-    le::store32(payload + kMore + 8 + 4, static_cast<std::uint32_t>(-9));  // more[1] = {-5, -9}
+    symcr::format::store32(payload + kLimits + 2 * 8, 100);         // limits[2] = {100, 12}
+    symcr::format::store32(payload + kMore + 8 + 4,
+                           static_cast<std::uint32_t>(-9));  // more[1] = {-5, -9}
     put_f64(payload + kSpeed, std::numeric_limits<double>::quiet_NaN());
-    le::store16(payload + kHeading, 360);
+    symcr::format::store16(payload + kHeading, 360);
   });
   reset_reader();
   const symcr::Report report = symcr::restore(vehicle_schema(), path_.c_str());
@@ -202,7 +203,7 @@ TEST_F(TaintedData, OutOfRangeAndInvalidValuesAreRejectedTheRestRestored) {
 }
 
 TEST_F(TaintedData, StrictModeRefusesTaintedCheckpointsAndWritesNothing) {
-  tamper([](std::uint8_t* payload) { le::store16(payload + kHeading, 9999); });
+  tamper([](std::uint8_t* payload) { symcr::format::store16(payload + kHeading, 9999); });
   reset_reader();
   const std::vector<std::uint8_t> before = file_tests::snapshot(vehicle.sensor);
   symcr::RestoreOptions strict;
@@ -212,7 +213,9 @@ TEST_F(TaintedData, StrictModeRefusesTaintedCheckpointsAndWritesNothing) {
   EXPECT_EQ(file_tests::snapshot(vehicle.sensor), before);
   EXPECT_EQ(vehicle.heading, 1);
 
-  tamper([](std::uint8_t* payload) { le::store32(payload + kLimits, 50); });  // limits[0] = {50, 10}
+  tamper([](std::uint8_t* payload) {
+    symcr::format::store32(payload + kLimits, 50);
+  });  // limits[0] = {50, 10}
   report = symcr::restore(vehicle_schema(), path_.c_str(), strict);
   EXPECT_EQ(report.status().error(), symcr::Error::Strict) << report.to_text();
   EXPECT_EQ(vehicle.limits[0].lo, -1);
@@ -227,10 +230,10 @@ TEST_F(TaintedData, StrictModeRefusesTaintedCheckpointsAndWritesNothing) {
 TEST_F(TaintedData, BoundaryValuesAreAccepted) {
   tamper([](std::uint8_t* payload) {
     put_f32(payload + kAltitude, -100.0f);
-    le::store32(payload + kThrottle, 100);
+    symcr::format::store32(payload + kThrottle, 100);
     put_f64(payload + kSpeed, 50.0);
-    le::store16(payload + kHeading, 0);
-    le::store32(payload + kLimits, 10);  // limits[0] = {10, 10}: lo <= hi holds
+    symcr::format::store16(payload + kHeading, 0);
+    symcr::format::store32(payload + kLimits, 10);  // limits[0] = {10, 10}: lo <= hi holds
   });
   reset_reader();
   const symcr::Report report = symcr::restore(vehicle_schema(), path_.c_str());

@@ -11,14 +11,13 @@
 #include "crc32c.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
-#include "little_endian.hpp"
 #include "record.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace {
 
 using namespace file_tests;
-namespace le = symcr::detail::le;
 
 const std::vector<std::uint8_t> kOldKey(32, 0x11);
 const std::vector<std::uint8_t> kNewKey = {'r', 'o', 't', 'a', 't', 'e', 'd'};
@@ -47,9 +46,9 @@ class AuthenticationTest : public ::testing::Test {
   }
   // The CRC made good again after a change: what an attacker who can write the file does.
   static void reseal(std::vector<std::uint8_t>& bytes) {
-    le::store32(bytes.data() + symcr::detail::kRecordChecksumOffset, 0);
-    le::store32(bytes.data() + symcr::detail::kRecordChecksumOffset,
-                symcr::detail::crc32c(bytes.data(), bytes.size()));
+    symcr::format::store32(bytes.data() + symcr::format::kRecordChecksumOffset, 0);
+    symcr::format::store32(bytes.data() + symcr::format::kRecordChecksumOffset,
+                           symcr::detail::crc32c(bytes.data(), bytes.size()));
   }
   static void expect_refused(const symcr::Report& report, const char* why) {
     EXPECT_EQ(report.status().error(), symcr::Error::Unauthenticated);
@@ -63,10 +62,11 @@ class AuthenticationTest : public ::testing::Test {
 TEST_F(AuthenticationTest, AnAuthenticatedCheckpointNamesItsKeyAndRestores) {
   use_keys({old_key()});
   const std::vector<std::uint8_t> bytes = checkpoint(3);
-  EXPECT_EQ(le::load16(bytes.data() + 10), 112u);  // header with key id, MAC version and MAC
-  EXPECT_EQ(le::load32(bytes.data() + 60), symcr::detail::kRecordMacVersion);
-  EXPECT_EQ(le::load32(bytes.data() + 12) & 2u, 2u);
-  EXPECT_EQ(le::load32(bytes.data() + 56), 1u);
+  EXPECT_EQ(symcr::format::load16(bytes.data() + 10),
+            112u);  // header with key id, MAC version and MAC
+  EXPECT_EQ(symcr::format::load32(bytes.data() + 60), symcr::format::kRecordMacVersion);
+  EXPECT_EQ(symcr::format::load32(bytes.data() + 12) & 2u, 2u);
+  EXPECT_EQ(symcr::format::load32(bytes.data() + 56), 1u);
   scramble_a();
   const symcr::Report report = restore(bytes);
   ASSERT_TRUE(report.ok()) << report.status().message();
@@ -76,7 +76,7 @@ TEST_F(AuthenticationTest, AnAuthenticatedCheckpointNamesItsKeyAndRestores) {
 TEST_F(AuthenticationTest, AChangeWithTheCrcMadeGoodIsRefused) {
   use_keys({old_key()});
   std::vector<std::uint8_t> bytes = checkpoint(3);
-  const std::size_t payload = 112 + le::load32(bytes.data() + 40);
+  const std::size_t payload = 112 + symcr::format::load32(bytes.data() + 40);
   bytes[payload] ^= 0x40;  // copter.ticks
   reseal(bytes);
   scramble_a();
@@ -93,7 +93,7 @@ TEST_F(AuthenticationTest, AnotherKeyIdTheProgramDoesNotHoldIsRefused) {
 
 TEST_F(AuthenticationTest, ACheckpointWithoutAMacIsRefusedWhenKeysAreSet) {
   const std::vector<std::uint8_t> bytes = checkpoint(3);  // no keys: no MAC
-  EXPECT_EQ(le::load16(bytes.data() + 10), 56u);
+  EXPECT_EQ(symcr::format::load16(bytes.data() + 10), 56u);
   use_keys({old_key()});
   scramble_a();
   expect_refused(restore(bytes), "carries no MAC");
@@ -113,7 +113,7 @@ TEST_F(AuthenticationTest, RotatedKeysStillVerifyTheOldKeysCheckpoints) {
   const std::vector<std::uint8_t> before = checkpoint(3);
   use_keys({new_key(), old_key()});  // the new key signs, the old one still verifies
   const std::vector<std::uint8_t> after = checkpoint(4);
-  EXPECT_EQ(le::load32(after.data() + 56), 2u);
+  EXPECT_EQ(symcr::format::load32(after.data() + 56), 2u);
   scramble_a();
   symcr::Report report = restore(before);
   ASSERT_TRUE(report.ok()) << report.status().message();
@@ -160,16 +160,17 @@ TEST_F(AuthenticationTest, AStoreWhoseNewestSlotWasTamperedWithRestoresNothing) 
   }
   // The newest slot (sequence 3) changed and resealed, as by someone who can write the file.
   std::vector<std::uint8_t> bytes = read_file(path);
-  const std::uint64_t slots = le::load64(bytes.data() + 24);
-  const std::uint32_t slot_size = le::load32(bytes.data() + 16);
+  const std::uint64_t slots = symcr::format::load64(bytes.data() + 24);
+  const std::uint32_t slot_size = symcr::format::load32(bytes.data() + 16);
   bool tampered = false;
   for (std::uint32_t i = 0; i < 4 && !tampered; ++i) {
     std::uint8_t* slot = bytes.data() + slots + std::uint64_t{i} * slot_size;
-    if (std::memcmp(slot, "SYMCRCKP", 8) != 0 || le::load64(slot + 16) != 3) continue;
-    const std::size_t size = 112 + le::load32(slot + 40) + le::load32(slot + 44);
+    if (std::memcmp(slot, "SYMCRCKP", 8) != 0 || symcr::format::load64(slot + 16) != 3) continue;
+    const std::size_t size =
+        112 + symcr::format::load32(slot + 40) + symcr::format::load32(slot + 44);
     slot[112] ^= 0x40;
-    le::store32(slot + 48, 0);
-    le::store32(slot + 48, symcr::detail::crc32c(slot, size));
+    symcr::format::store32(slot + 48, 0);
+    symcr::format::store32(slot + 48, symcr::detail::crc32c(slot, size));
     tampered = true;
   }
   ASSERT_TRUE(tampered);
@@ -285,13 +286,13 @@ TEST_F(AuthenticationTest, KeysSetAfterOpeningAStoreSignItsSavesForEveryBuild) {
   // bound to the slot it was written to, it does not verify where it lies now, and the
   // freshness counter knows a checkpoint numbered 2 was written.
   std::vector<std::uint8_t> bytes = read_file(path);
-  const std::uint64_t slots = le::load64(bytes.data() + 24);
-  const std::uint32_t slot_size = le::load32(bytes.data() + 16);
+  const std::uint64_t slots = symcr::format::load64(bytes.data() + 24);
+  const std::uint32_t slot_size = symcr::format::load32(bytes.data() + 16);
   int newest = -1, older = -1;
   for (std::uint32_t i = 0; i < 4; ++i) {
     const std::uint8_t* slot = bytes.data() + slots + std::uint64_t{i} * slot_size;
     if (std::memcmp(slot, "SYMCRCKP", 8) != 0) continue;
-    (le::load64(slot + 16) == 2 ? newest : older) = static_cast<int>(i);
+    (symcr::format::load64(slot + 16) == 2 ? newest : older) = static_cast<int>(i);
   }
   ASSERT_GE(newest, 0);
   ASSERT_GE(older, 0);

@@ -1,6 +1,7 @@
 // Single-file and in-memory checkpoints: round trips, every truncation and bit flip of a file
 // refused with the state untouched, and file safety (mode 0600, no symlink followed, exclusive
 // temp files, the previous checkpoint intact after a failed write).
+#include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -12,12 +13,10 @@
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "file_io.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
-#include "little_endian.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace file_tests {
@@ -215,7 +214,7 @@ TEST_F(CheckpointFile, FutureFormatVersionIsRefusedCleanly) {
   fill_a(1);
   ASSERT_TRUE(symcr::checkpoint(schema_a, path.c_str()).ok());
   std::vector<std::uint8_t> bytes = read_file(path);
-  symcr::detail::le::store16(bytes.data() + 8, 2);
+  symcr::format::store16(bytes.data() + 8, 2);
   write_file(path, bytes);
   scramble_a();
   const auto before = state_a();

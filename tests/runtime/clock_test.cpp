@@ -138,12 +138,12 @@ TEST(Clocks, TheHostMovesTheTimesOfADeviceCheckpoint) {
 
 TEST(Clocks, RebaseTimeWrapsInTheIntegersWidthAndSkipsNever) {
   std::uint8_t bytes[8] = {0xFF, 0xFF, 0, 0, 0, 0, 0, 0};
-  symcr::device::detail::rebase_time(bytes, 2, 0, 1);  // 0xFFFF + 1 wraps to 0 in 16 bits
+  symcr::format::rebase_time(bytes, 2, 0, 1);  // 0xFFFF + 1 wraps to 0 in 16 bits
   EXPECT_EQ(bytes[0], 0);
   EXPECT_EQ(bytes[1], 0);
   EXPECT_EQ(bytes[2], 0);
   std::uint32_t never = 0xFFFFFFFFu;
-  symcr::device::detail::rebase_time(reinterpret_cast<std::uint8_t*>(&never), 4, -1, 5);
+  symcr::format::rebase_time(reinterpret_cast<std::uint8_t*>(&never), 4, -1, 5);
   EXPECT_EQ(never, 0xFFFFFFFFu);  // -1 is 0xFFFFFFFF in 32 bits
 }
 

@@ -17,9 +17,9 @@
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
 #include "freshness.hpp"
-#include "little_endian.hpp"
 #include "restore_journal.hpp"
 #include "store_fixture.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace file_tests {
@@ -473,8 +473,8 @@ TEST_F(CrashLoopTest, TheEarlierVersionsJournalCountsOnlyUntilTheCopiesAreWritte
   save_seeds(1, 4);
   std::vector<std::uint8_t> bytes = read_file(path);
   std::uint8_t legacy[48] = {'S', 'Y', 'M', 'C', 'R', 'J', 'N', 'L'};
-  symcr::detail::le::store64(legacy + 8, 4);  // 4 restored, never confirmed
-  symcr::detail::le::store32(legacy + 44, symcr::detail::crc32c(legacy, 44));
+  symcr::format::store64(legacy + 8, 4);  // 4 restored, never confirmed
+  symcr::format::store32(legacy + 44, symcr::detail::crc32c(legacy, 44));
   std::copy(legacy, legacy + sizeof legacy, bytes.begin() + 64);
   write_file(path, bytes);
   ASSERT_EQ(journal().unconfirmed, 4u) << "the earlier version's journal is read";

@@ -2,6 +2,8 @@
 // the store file but holds no key cannot make the program restore an older state than the
 // newest it wrote, nor freeze it there, nor switch restores off. Each attack leaves the state
 // untouched and is refused (Error::RolledBack, Unauthenticated) or reported.
+#include "freshness.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -12,17 +14,14 @@
 #include "crc32c.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
-#include "freshness.hpp"
-#include "little_endian.hpp"
 #include "record.hpp"
 #include "restore_journal.hpp"
 #include "schema_blob.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace file_tests {
 namespace {
-
-namespace le = symcr::detail::le;
 
 const std::vector<std::uint8_t> kKey(32, 0x5a);
 
@@ -83,26 +82,27 @@ class FreshnessTest : public ::testing::Test {
   }
   // The file offset of the slot holding sequence `sequence`, or 0.
   static std::uint64_t slot_of(const std::vector<std::uint8_t>& bytes, std::uint64_t sequence) {
-    const std::uint32_t slots = le::load32(bytes.data() + 12);
-    const std::uint32_t slot_size = le::load32(bytes.data() + 16);
-    const std::uint64_t first = le::load64(bytes.data() + 24);
+    const std::uint32_t slots = symcr::format::load32(bytes.data() + 12);
+    const std::uint32_t slot_size = symcr::format::load32(bytes.data() + 16);
+    const std::uint64_t first = symcr::format::load64(bytes.data() + 24);
     for (std::uint32_t i = 0; i < slots; ++i) {
       const std::uint64_t at = first + std::uint64_t{i} * slot_size;
       if (std::memcmp(bytes.data() + at, "SYMCRCKP", 8) == 0 &&
-          le::load64(bytes.data() + at + 16) == sequence) {
+          symcr::format::load64(bytes.data() + at + 16) == sequence) {
         return at;
       }
     }
     return 0;
   }
   static std::size_t record_size(const std::vector<std::uint8_t>& bytes, std::uint64_t at) {
-    return le::load16(bytes.data() + at + 10) + le::load32(bytes.data() + at + 40) +
-           le::load32(bytes.data() + at + 44);
+    return symcr::format::load16(bytes.data() + at + 10) +
+           symcr::format::load32(bytes.data() + at + 40) +
+           symcr::format::load32(bytes.data() + at + 44);
   }
   static void fix_crc(std::vector<std::uint8_t>& bytes, std::uint64_t at) {
     const std::size_t size = record_size(bytes, at);
-    le::store32(bytes.data() + at + 48, 0);
-    le::store32(bytes.data() + at + 48, symcr::detail::crc32c(bytes.data() + at, size));
+    symcr::format::store32(bytes.data() + at + 48, 0);
+    symcr::format::store32(bytes.data() + at + 48, symcr::detail::crc32c(bytes.data() + at, size));
   }
 
   TempDir dir;
@@ -185,7 +185,7 @@ TEST_F(FreshnessTest, AForgedJournalIsReportedAndNeverDisablesRestores) {
   // A journal that gives up on every checkpoint, its CRC right, its seal absent (no key).
   symcr::detail::RestoreJournal forged;
   forged.generation = 9;
-  forged.given_up_through = symcr::detail::kMaxRecordSequence;
+  forged.given_up_through = symcr::format::kMaxRecordSequence;
   for (const std::uint64_t copy : symcr::detail::kRestoreJournalOffsets) {
     symcr::detail::encode_restore_journal(forged, bytes.data() + copy);
   }
@@ -260,7 +260,7 @@ TEST_F(FreshnessTest, ASlotMovedToAnotherSlotOrAnotherStoreDoesNotVerify) {
   ASSERT_NE(to, 0u);
   std::copy(theirs.begin() + from, theirs.begin() + from + record_size(theirs, from),
             ours.begin() + to);
-  le::store64(ours.data() + to + 16, 2);  // not even its sequence changed would help
+  symcr::format::store64(ours.data() + to + 16, 2);  // not even its sequence changed would help
   fix_crc(ours, to);
   write_file(path, ours);
   symcr::Report report = restore();
@@ -290,7 +290,7 @@ TEST_F(FreshnessTest, AnUnauthenticatedSlotAtTheTopOfTheSequenceRangeSteersNothi
   save_seeds(1, 3);
   std::vector<std::uint8_t> bytes = read_file(path);
   const std::uint64_t at = slot_of(bytes, 1);
-  le::store64(bytes.data() + at + 16, ~std::uint64_t{0});  // its MAC no longer verifies
+  symcr::format::store64(bytes.data() + at + 16, ~std::uint64_t{0});  // its MAC no longer verifies
   fix_crc(bytes, at);
   write_file(path, bytes);
   save_seeds(4, 6);
@@ -312,7 +312,7 @@ TEST_F(FreshnessTest, SequencesNeverWrapEvenFromAnAuthenticSlot) {
   std::vector<std::uint8_t> bytes = read_file(path);
   const std::uint64_t at = slot_of(bytes, 2);
   ASSERT_NE(at, 0u);
-  le::store64(bytes.data() + at + 16, symcr::detail::kMaxRecordSequence);
+  symcr::format::store64(bytes.data() + at + 16, symcr::format::kMaxRecordSequence);
   symcr::detail::KeySnapshot keys = symcr::detail::current_keys();
   symcr::detail::RecordBinding binding;
   symcr::detail::read_store_id(bytes.data(), bytes.size(), binding.store_id);
@@ -336,7 +336,7 @@ TEST_F(FreshnessTest, SequencesNeverWrapEvenFromAnAuthenticSlot) {
   }
   // Above the range, a record is damage: without keys it reads as corrupt, never as newest.
   ASSERT_TRUE(symcr::set_checkpoint_keys(nullptr, 0).ok());
-  le::store64(bytes.data() + at + 16, symcr::detail::kMaxRecordSequence + 1);
+  symcr::format::store64(bytes.data() + at + 16, symcr::format::kMaxRecordSequence + 1);
   fix_crc(bytes, at);
   write_file(path, bytes);
   options.freshness_counter = nullptr;
@@ -357,8 +357,8 @@ TEST_F(FreshnessTest, AMissingForgedOrForeignCounterRestoresNothing) {
   expect_untouched();
 
   std::vector<std::uint8_t> forged = genuine;
-  le::store64(forged.data() + 16, 0);  // lowered, its MAC no longer right
-  le::store64(forged.data() + 128 + 16, 0);
+  symcr::format::store64(forged.data() + 16, 0);  // lowered, its MAC no longer right
+  symcr::format::store64(forged.data() + 128 + 16, 0);
   write_file(counter, forged);
   report = restore();
   expect_error(report, symcr::Error::RolledBack, "MAC does not verify");
@@ -410,9 +410,9 @@ TEST_F(FreshnessTest, ARecordOfAnEarlierMacVersionIsRefused) {
   fill_a(3);
   std::vector<std::uint8_t> bytes;
   ASSERT_TRUE(symcr::checkpoint_to_buffer(schema_a, bytes).ok());
-  le::store32(bytes.data() + symcr::detail::kRecordMacVersionOffset, 0);
-  le::store32(bytes.data() + 48, 0);
-  le::store32(bytes.data() + 48, symcr::detail::crc32c(bytes.data(), bytes.size()));
+  symcr::format::store32(bytes.data() + symcr::format::kRecordMacVersionOffset, 0);
+  symcr::format::store32(bytes.data() + 48, 0);
+  symcr::format::store32(bytes.data() + 48, symcr::detail::crc32c(bytes.data(), bytes.size()));
   scramble_a();
   const symcr::Report report = symcr::restore_from_buffer(schema_a, bytes.data(), bytes.size());
   expect_error(report, symcr::Error::Unauthenticated, "MAC is of version 0");

@@ -2,25 +2,24 @@
 // bytes that are not a whole, intact, current-version record.
 #include "record.hpp"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
 
-#include <gtest/gtest.h>
-
 #include "crc32c.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
-#include "little_endian.hpp"
 #include "schema_blob.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 namespace file_tests {
 namespace {
 
-namespace le = symcr::detail::le;
 using symcr::Error;
 
 std::vector<std::uint8_t> encoded_a(std::uint64_t sequence = 0) {
@@ -33,8 +32,8 @@ std::vector<std::uint8_t> encoded_a(std::uint64_t sequence = 0) {
 
 // Recomputes the checksum after a deliberate edit, so the test reaches the check after it.
 void reseal(std::vector<std::uint8_t>& record) {
-  le::store32(record.data() + 48, 0);
-  le::store32(record.data() + 48, symcr::detail::crc32c(record.data(), record.size()));
+  symcr::format::store32(record.data() + 48, 0);
+  symcr::format::store32(record.data() + 48, symcr::detail::crc32c(record.data(), record.size()));
 }
 
 symcr::Status parse(const std::vector<std::uint8_t>& bytes) {
@@ -47,20 +46,21 @@ TEST(Record, HeaderLayoutMatchesTheFormat) {
   const symcr::detail::SchemaBlob& blob = symcr::detail::schema_blob(schema_a);
   ASSERT_GE(record.size(), 56u + blob.size);
   EXPECT_EQ(std::memcmp(record.data(), "SYMCRCKP", 8), 0);
-  EXPECT_EQ(le::load16(record.data() + 8), 1u);    // format_version
-  EXPECT_EQ(le::load16(record.data() + 10), 56u);  // header_size
-  EXPECT_EQ(le::load32(record.data() + 12), 1u);   // flags: schema inline
-  EXPECT_EQ(le::load64(record.data() + 16), 42u);  // sequence
-  EXPECT_GT(le::load64(record.data() + 24), 1600000000ull * 1000000000ull);  // timestamp_ns
-  EXPECT_EQ(le::load64(record.data() + 32), blob.hash);
-  EXPECT_EQ(le::load32(record.data() + 40), blob.size);
-  EXPECT_EQ(le::load32(record.data() + 44), record.size() - 56 - blob.size);
-  EXPECT_EQ(le::load32(record.data() + 52), 0u);  // reserved
+  EXPECT_EQ(symcr::format::load16(record.data() + 8), 1u);    // format_version
+  EXPECT_EQ(symcr::format::load16(record.data() + 10), 56u);  // header_size
+  EXPECT_EQ(symcr::format::load32(record.data() + 12), 1u);   // flags: schema inline
+  EXPECT_EQ(symcr::format::load64(record.data() + 16), 42u);  // sequence
+  EXPECT_GT(symcr::format::load64(record.data() + 24),
+            1600000000ull * 1000000000ull);  // timestamp_ns
+  EXPECT_EQ(symcr::format::load64(record.data() + 32), blob.hash);
+  EXPECT_EQ(symcr::format::load32(record.data() + 40), blob.size);
+  EXPECT_EQ(symcr::format::load32(record.data() + 44), record.size() - 56 - blob.size);
+  EXPECT_EQ(symcr::format::load32(record.data() + 52), 0u);  // reserved
   EXPECT_EQ(std::memcmp(record.data() + 56, blob.data, blob.size), 0);
   // The checksum is the CRC-32C of the whole record with the checksum field zero.
   std::vector<std::uint8_t> zeroed = record;
-  le::store32(zeroed.data() + 48, 0);
-  EXPECT_EQ(le::load32(record.data() + 48),
+  symcr::format::store32(zeroed.data() + 48, 0);
+  EXPECT_EQ(symcr::format::load32(record.data() + 48),
             symcr::detail::crc32c(zeroed.data(), zeroed.size()));
 
   symcr::detail::RecordView view;
@@ -89,8 +89,8 @@ TEST(Record, ALargeValueChecksummedAsItIsCopiedGivesTheWholeRecordsCrc) {
   for (int save = 0; save < 2; ++save) {
     ASSERT_TRUE(symcr::checkpoint_to_buffer(schema, record).ok());
     std::vector<std::uint8_t> zeroed = record;
-    le::store32(zeroed.data() + 48, 0);
-    EXPECT_EQ(le::load32(record.data() + 48),
+    symcr::format::store32(zeroed.data() + 48, 0);
+    EXPECT_EQ(symcr::format::load32(record.data() + 48),
               symcr::detail::crc32c(zeroed.data(), zeroed.size()))
         << save;
   }
@@ -104,9 +104,9 @@ TEST(Record, StoreRecordsReferenceTheirSchemaByHash) {
   fill_a(1);
   std::vector<std::uint8_t> record;
   ASSERT_TRUE(symcr::detail::encode_record(schema_a, /*inline_schema=*/false, 9, record).ok());
-  EXPECT_EQ(le::load32(record.data() + 12), 0u);  // flags: schema by hash
-  EXPECT_EQ(le::load32(record.data() + 40), 0u);  // schema_size
-  EXPECT_EQ(le::load64(record.data() + 32), symcr::detail::schema_blob(schema_a).hash);
+  EXPECT_EQ(symcr::format::load32(record.data() + 12), 0u);  // flags: schema by hash
+  EXPECT_EQ(symcr::format::load32(record.data() + 40), 0u);  // schema_size
+  EXPECT_EQ(symcr::format::load64(record.data() + 32), symcr::detail::schema_blob(schema_a).hash);
   symcr::detail::RecordView view;
   ASSERT_TRUE(symcr::detail::parse_record(record.data(), record.size(), view).ok());
   EXPECT_EQ(view.schema, nullptr);
@@ -131,7 +131,7 @@ TEST(Record, WrongMagicIsNotACheckpoint) {
 
 TEST(Record, FutureVersionIsRefusedNamingBothVersions) {
   std::vector<std::uint8_t> record = encoded_a();
-  le::store16(record.data() + 8, 2);
+  symcr::format::store16(record.data() + 8, 2);
   reseal(record);
   const symcr::Status status = parse(record);
   EXPECT_EQ(status.error(), Error::FutureVersion);
@@ -140,28 +140,28 @@ TEST(Record, FutureVersionIsRefusedNamingBothVersions) {
   EXPECT_NE(std::string(status.message()).find("version 1"), std::string::npos)
       << status.message();
   // Refused before the checksum: a future version may checksum differently.
-  le::store16(record.data() + 8, 7);
+  symcr::format::store16(record.data() + 8, 7);
   EXPECT_EQ(parse(record).error(), Error::FutureVersion);
 }
 
 TEST(Record, VersionZeroAndShortHeaderSizeAreCorrupt) {
   std::vector<std::uint8_t> record = encoded_a();
-  le::store16(record.data() + 8, 0);
+  symcr::format::store16(record.data() + 8, 0);
   reseal(record);
   EXPECT_EQ(parse(record).error(), Error::Corrupt);
   record = encoded_a();
-  le::store16(record.data() + 10, 40);
+  symcr::format::store16(record.data() + 10, 40);
   reseal(record);
   EXPECT_EQ(parse(record).error(), Error::Corrupt);
 }
 
 TEST(Record, SizesBeyondTheAvailableBytesAreTruncated) {
   std::vector<std::uint8_t> record = encoded_a();
-  le::store32(record.data() + 44, 0xFFFFFFFFu);  // payload_size
+  symcr::format::store32(record.data() + 44, 0xFFFFFFFFu);  // payload_size
   reseal(record);
   EXPECT_EQ(parse(record).error(), Error::Truncated);
   record = encoded_a();
-  le::store32(record.data() + 40, 0xFFFFFFF0u);  // schema_size
+  symcr::format::store32(record.data() + 40, 0xFFFFFFF0u);  // schema_size
   EXPECT_EQ(parse(record).error(), Error::Truncated);
   record = encoded_a();
   record.pop_back();
@@ -179,11 +179,11 @@ TEST(Record, ChecksumMismatchIsDetected) {
 
 TEST(Record, UnknownFlagsAndInconsistentSchemaFlagAreCorrupt) {
   std::vector<std::uint8_t> record = encoded_a();
-  le::store32(record.data() + 12, 0x3);
+  symcr::format::store32(record.data() + 12, 0x3);
   reseal(record);
   EXPECT_EQ(parse(record).error(), Error::Corrupt);
   record = encoded_a();
-  le::store32(record.data() + 12, 0);  // says "by hash" but carries a schema
+  symcr::format::store32(record.data() + 12, 0);  // says "by hash" but carries a schema
   reseal(record);
   EXPECT_EQ(parse(record).error(), Error::Corrupt);
 }
@@ -199,7 +199,7 @@ TEST(Record, LongerHeaderOfTheSameVersionIsSkipped) {
   // A same-version writer may append header fields this reader does not know.
   std::vector<std::uint8_t> record = encoded_a(5);
   record.insert(record.begin() + 56, 8, 0xAB);
-  le::store16(record.data() + 10, 64);
+  symcr::format::store16(record.data() + 10, 64);
   reseal(record);
   symcr::detail::RecordView view;
   ASSERT_TRUE(symcr::detail::parse_record(record.data(), record.size(), view).ok());

@@ -8,6 +8,7 @@
 #include "parsed_schema.hpp"
 #include "schema_blob.hpp"
 #include "schema_facts.hpp"
+#include "symcr/format/hashes.hpp"
 
 namespace engine_tests {
 namespace {
@@ -17,18 +18,18 @@ using symcr::detail::parse_schema;
 using symcr::detail::schema_blob;
 
 TEST(EngineSchema, Fnv1aMatchesReferenceVectors) {
-  EXPECT_EQ(symcr::detail::fnv1a64(nullptr, 0), 0xcbf29ce484222325ull);
+  EXPECT_EQ(symcr::format::fnv1a64(nullptr, 0), 0xcbf29ce484222325ull);
   const std::uint8_t a[] = {'a'};
-  EXPECT_EQ(symcr::detail::fnv1a64(a, 1), 0xaf63dc4c8601ec8cull);
+  EXPECT_EQ(symcr::format::fnv1a64(a, 1), 0xaf63dc4c8601ec8cull);
   const std::uint8_t foobar[] = {'f', 'o', 'o', 'b', 'a', 'r'};
-  EXPECT_EQ(symcr::detail::fnv1a64(foobar, 6), 0x85944171f73967e8ull);
+  EXPECT_EQ(symcr::format::fnv1a64(foobar, 6), 0x85944171f73967e8ull);
 }
 
 TEST(EngineSchema, BlobIsCachedAndHashed) {
   const auto& first = schema_blob(b0::schema());
   const auto& second = schema_blob(b0::schema());
   EXPECT_EQ(&first, &second);
-  EXPECT_EQ(first.hash, symcr::detail::fnv1a64(first.data, first.size));
+  EXPECT_EQ(first.hash, symcr::format::fnv1a64(first.data, first.size));
   EXPECT_NE(first.hash, schema_blob(b1::schema()).hash);
 }
 

@@ -1,6 +1,6 @@
 // SHA-256 and HMAC-SHA-256 against published test vectors: FIPS 180-2's examples and RFC 4231's
 // HMAC-SHA-256 test cases (1-4, 6, 7; 5's truncated output is not used by symcr).
-#include "sha256.hpp"
+#include "symcr/format/sha256.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,11 +10,11 @@
 
 namespace {
 
-using symcr::detail::HmacSha256;
-using symcr::detail::kSha256Size;
-using symcr::detail::Sha256;
+using symcr::format::HmacSha256;
+using symcr::format::kSha256Size;
+using symcr::format::Sha256;
 
-std::string hex(const std::uint8_t (&digest)[kSha256Size]) {
+std::string hex(const std::uint8_t (&digest)[symcr::format::kSha256Size]) {
   std::string out;
   char two[3];
   for (std::uint8_t byte : digest) {
@@ -25,17 +25,17 @@ std::string hex(const std::uint8_t (&digest)[kSha256Size]) {
 }
 
 std::string sha256(const std::string& text) {
-  Sha256 hash;
+  symcr::format::Sha256 hash;
   hash.update(text.data(), text.size());
-  std::uint8_t digest[kSha256Size];
+  std::uint8_t digest[symcr::format::kSha256Size];
   hash.finish(digest);
   return hex(digest);
 }
 
 std::string hmac(const std::vector<std::uint8_t>& key, const std::string& data) {
-  HmacSha256 mac(key.data(), key.size());
+  symcr::format::HmacSha256 mac(key.data(), key.size());
   mac.update(data.data(), data.size());
-  std::uint8_t out[kSha256Size];
+  std::uint8_t out[symcr::format::kSha256Size];
   mac.finish(out);
   return hex(out);
 }
@@ -52,7 +52,7 @@ TEST(Sha256Test, Fips180Examples) {
 }
 
 TEST(Sha256Test, AMillionAsFedInPiecesOfEverySize) {
-  Sha256 hash;
+  symcr::format::Sha256 hash;
   const std::string piece(997, 'a');  // not a divisor of the block size
   std::size_t left = 1000000;
   for (std::size_t step = 1; left != 0; step = step % 997 + 1) {
@@ -60,7 +60,7 @@ TEST(Sha256Test, AMillionAsFedInPiecesOfEverySize) {
     hash.update(piece.data(), take);
     left -= take;
   }
-  std::uint8_t digest[kSha256Size];
+  std::uint8_t digest[symcr::format::kSha256Size];
   hash.finish(digest);
   EXPECT_EQ(hex(digest), "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
@@ -87,10 +87,10 @@ TEST(HmacSha256Test, Rfc4231) {
 }
 
 TEST(HmacSha256Test, MacsCompareEqualOnlyWhenEveryByteIs) {
-  std::uint8_t a[kSha256Size] = {}, b[kSha256Size] = {};
-  EXPECT_TRUE(symcr::detail::equal_macs(a, b, kSha256Size));
+  std::uint8_t a[symcr::format::kSha256Size] = {}, b[symcr::format::kSha256Size] = {};
+  EXPECT_TRUE(symcr::format::equal_macs(a, b, symcr::format::kSha256Size));
   b[31] = 1;
-  EXPECT_FALSE(symcr::detail::equal_macs(a, b, kSha256Size));
+  EXPECT_FALSE(symcr::format::equal_macs(a, b, symcr::format::kSha256Size));
 }
 
 }  // namespace

@@ -16,11 +16,11 @@
 #include "crc32c.hpp"
 #include "file_test_schemas.hpp"
 #include "file_test_util.hpp"
-#include "little_endian.hpp"
 #include "plan.hpp"
 #include "schema_blob.hpp"
 #include "store_fixture.hpp"
 #include "symcr/device.hpp"
+#include "symcr/format/bytes.hpp"
 #include "symcr/symcr.hpp"
 
 // Counts every allocation through operator new in this test binary: the store's save() must
@@ -39,7 +39,6 @@ void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 namespace file_tests {
 namespace {
 
-namespace le = symcr::detail::le;
 using symcr::Error;
 
 // Raw access to a store file, read through its header, to corrupt what a crash could.
@@ -47,14 +46,14 @@ struct StoreFile {
   std::string path;
   std::vector<std::uint8_t> bytes;
   explicit StoreFile(std::string p) : path(std::move(p)), bytes(read_file(path)) {}
-  std::uint32_t slot_count() const { return le::load32(bytes.data() + 12); }
-  std::uint32_t slot_size() const { return le::load32(bytes.data() + 16); }
-  std::uint32_t schema_area_size() const { return le::load32(bytes.data() + 20); }
-  std::uint64_t slots_offset() const { return le::load64(bytes.data() + 24); }
+  std::uint32_t slot_count() const { return symcr::format::load32(bytes.data() + 12); }
+  std::uint32_t slot_size() const { return symcr::format::load32(bytes.data() + 16); }
+  std::uint32_t schema_area_size() const { return symcr::format::load32(bytes.data() + 20); }
+  std::uint64_t slots_offset() const { return symcr::format::load64(bytes.data() + 24); }
   std::uint8_t* slot(std::uint32_t i) { return bytes.data() + slots_offset() + i * slot_size(); }
-  std::uint64_t sequence(std::uint32_t i) { return le::load64(slot(i) + 16); }
+  std::uint64_t sequence(std::uint32_t i) { return symcr::format::load64(slot(i) + 16); }
   std::size_t record_size(std::uint32_t i) {
-    return 56 + le::load32(slot(i) + 40) + le::load32(slot(i) + 44);
+    return 56 + symcr::format::load32(slot(i) + 40) + symcr::format::load32(slot(i) + 44);
   }
   std::uint32_t slot_with_sequence(std::uint64_t sequence) {
     for (std::uint32_t i = 0; i < slot_count(); ++i) {
@@ -64,8 +63,8 @@ struct StoreFile {
     return 0;
   }
   void reseal(std::uint32_t i) {
-    le::store32(slot(i) + 48, 0);
-    le::store32(slot(i) + 48, symcr::detail::crc32c(slot(i), record_size(i)));
+    symcr::format::store32(slot(i) + 48, 0);
+    symcr::format::store32(slot(i) + 48, symcr::detail::crc32c(slot(i), record_size(i)));
   }
   void write() const { write_file(path, bytes); }
 };
@@ -109,12 +108,13 @@ TEST_F(StoreTest, CreatesAPreallocatedFileWithMode0600) {
   EXPECT_EQ(permission_bits(path), 0600u);
   const StoreFile file(path);
   EXPECT_EQ(std::memcmp(file.bytes.data(), "SYMCRSTO", 8), 0);
-  EXPECT_EQ(le::load16(file.bytes.data() + 8), 1u);
+  EXPECT_EQ(symcr::format::load16(file.bytes.data() + 8), 1u);
   EXPECT_EQ(file.slot_count(), 4u);
   EXPECT_EQ(file.slot_size(), 65536u);
   EXPECT_EQ(file.slots_offset() % 4096, 0u);
   EXPECT_EQ(file.slots_offset(), 4096u + 2u * file.schema_area_size());
-  EXPECT_EQ(le::load32(file.bytes.data() + 32), symcr::detail::crc32c(file.bytes.data(), 32));
+  EXPECT_EQ(symcr::format::load32(file.bytes.data() + 32),
+            symcr::detail::crc32c(file.bytes.data(), 32));
   EXPECT_EQ(file.bytes.size(), file.slots_offset() + 4u * 65536u);
   struct stat info {};
   ASSERT_EQ(::stat(path.c_str(), &info), 0);
@@ -296,7 +296,7 @@ TEST_F(StoreTest, AFutureVersionSlotIsSkipped) {
   save_seeds(1, 3);
   StoreFile file(path);
   const std::uint32_t newest = file.slot_with_sequence(3);
-  le::store16(file.slot(newest) + 8, 2);
+  symcr::format::store16(file.slot(newest) + 8, 2);
   file.reseal(newest);
   file.write();
   scramble_a();
@@ -827,8 +827,8 @@ TEST_F(StoreTest, ACorruptStoreHeaderIsRecoveredFromTheSlots) {
 TEST_F(StoreTest, AFutureStoreVersionIsRefusedAndLeftAlone) {
   save_seeds(1, 1);
   StoreFile file(path);
-  le::store16(file.bytes.data() + 8, 2);
-  le::store32(file.bytes.data() + 32, symcr::detail::crc32c(file.bytes.data(), 32));
+  symcr::format::store16(file.bytes.data() + 8, 2);
+  symcr::format::store32(file.bytes.data() + 32, symcr::detail::crc32c(file.bytes.data(), 32));
   file.write();
   symcr::Store store;
   const symcr::Status status = symcr::Store::open(path.c_str(), schema_a, options, store);

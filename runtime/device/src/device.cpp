@@ -57,9 +57,9 @@ std::size_t record_size(const Schema& schema) {
     pointers += detail::pointer_count(schema, schema.roots[r].type);
   }
   if (pointers > kMaxReferences) pointers = kMaxReferences;
-  return detail::kHeaderSize + detail::values_size(schema) + 8 +  // the two counts
-         pointers * detail::kMaxReferenceSize +
-         detail::clock_readings_size(detail::clock_count(schema));
+  return format::kRecordHeaderSize + detail::values_size(schema) + format::kHeapCountSize +
+         format::kReferenceCountSize + pointers * detail::kMaxReferenceSize +
+         format::clock_readings_size(detail::clock_count(schema));
 }
 
 std::size_t scratch_size(const Schema& schema) {

@@ -13,9 +13,9 @@ namespace symcr {
 namespace device {
 namespace {
 
-using detail::load16;
-using detail::load32;
-using detail::load64;
+using format::load16;
+using format::load32;
+using format::load64;
 namespace p = plan;
 constexpr double kFloatMax = 3.40282346638528859811704183484516925440e+38;
 
@@ -64,20 +64,21 @@ class PlanRunner {
   // After the values: no heap objects, the reference table (each reference well-formed), and
   // the writer's clock readings ending the payload.
   Result read_trailer() {
-    const std::size_t readings = detail::clock_readings_size(writer_clocks_);
-    if (payload_size_ < values_ + 8 + readings) return Result::Truncated;
+    const std::size_t readings = format::clock_readings_size(writer_clocks_);
+    const std::size_t counts = format::kHeapCountSize + format::kReferenceCountSize;
+    if (payload_size_ < values_ + counts + readings) return Result::Truncated;
     if (load32(payload_ + values_) != 0) return Result::Corrupt;
-    reference_count_ = load32(payload_ + values_ + 4);
-    references_ = values_ + 8;
+    reference_count_ = load32(payload_ + values_ + format::kHeapCountSize);
+    references_ = values_ + counts;
     references_end_ = payload_size_ - readings;
     std::size_t at = references_;
     for (std::uint32_t i = 0; i < reference_count_; ++i) {
-      if (references_end_ - at < 7) return Result::Corrupt;
-      const std::size_t steps = load16(payload_ + at + 5);
-      if (steps > kMaxPathSteps || references_end_ - at - 7 < 4 * steps + 4) {
+      if (references_end_ - at < format::kObjectReferenceStepsOffset) return Result::Corrupt;
+      const std::size_t steps = load16(payload_ + at + format::kObjectReferenceStepCountOffset);
+      if (steps > kMaxPathSteps || references_end_ - at < format::object_reference_size(steps)) {
         return Result::Corrupt;
       }
-      at += 7 + 4 * steps + 4;
+      at += format::object_reference_size(steps);
     }
     return at == references_end_ ? Result::Ok : Result::Corrupt;
   }
@@ -307,16 +308,17 @@ class PlanRunner {
   // A pointer: null, outside the roots (the running build's value stays), or a reference whose
   // writer path is translated to the reader's and must end at the pointer's reader pointee.
   Result pointer(std::uint16_t pointee_index, std::size_t wire, std::size_t dst) {
-    if (!has_entries(pointee_index, 1) || !fits(wire, 4, dst, sizeof(std::uintptr_t))) {
+    if (!has_entries(pointee_index, 1) ||
+        !fits(wire, format::kPointerCodeSize, dst, sizeof(std::uintptr_t))) {
       return Result::Corrupt;
     }
     const std::uint32_t code = load32(payload_ + wire);
-    if (code == detail::kOutsideCode) return Result::Ok;
+    if (code == format::kOutsideCode) return Result::Ok;
     std::uintptr_t target = 0;
-    if (code != detail::kNullCode) {
-      if (code - detail::kFirstReference >= reference_count_) return Result::Corrupt;
+    if (code != format::kNullCode) {
+      if (code - format::kFirstReference >= reference_count_) return Result::Corrupt;
       const Result result =
-          reference(code - detail::kFirstReference, entry(pointee_index), &target);
+          reference(code - format::kFirstReference, entry(pointee_index), &target);
       if (result != Result::Ok) return result;
     }
     std::memcpy(stage_root_ + dst, &target, sizeof target);
@@ -325,11 +327,14 @@ class PlanRunner {
 
   Result reference(std::uint32_t index, std::uint64_t pointee, std::uintptr_t* address) const {
     std::size_t at = references_;
-    for (std::uint32_t i = 0; i < index; ++i)
-      at += 7 + 4 * std::size_t{load16(payload_ + at + 5)} + 4;
-    if (payload_[at] != detail::kBaseObject) return Result::Corrupt;
-    const std::uint32_t writer_root = load32(payload_ + at + 1);
-    const std::size_t step_count = load16(payload_ + at + 5);
+    for (std::uint32_t i = 0; i < index; ++i) {
+      at += format::object_reference_size(
+          load16(payload_ + at + format::kObjectReferenceStepCountOffset));
+    }
+    if (payload_[at] != format::kBaseObject) return Result::Corrupt;
+    const std::uint32_t writer_root = load32(payload_ + at + format::kReferenceObjectOffset);
+    const std::size_t step_count = load16(payload_ + at + format::kObjectReferenceStepCountOffset);
+    const std::uint8_t* const steps_at = payload_ + at + format::kObjectReferenceStepsOffset;
     if (writer_root >= writer_roots_) return Result::Corrupt;
     // Each table's entries: two u16, the first at `entry`, the second 2 bytes on.
     const std::uint8_t* roots = paths_;
@@ -340,7 +345,7 @@ class PlanRunner {
     if (reader_root == p::kNoPathIndex) return Result::Rejected;  // its root was removed
     std::uint32_t steps[kMaxPathSteps];
     for (std::size_t s = 0; s < step_count; ++s) {
-      const std::uint32_t step = load32(payload_ + at + 7 + 4 * s);
+      const std::uint32_t step = load32(steps_at + format::kReferenceStepSize * s);
       if (writer_type >= writer_types_) return Result::Corrupt;
       const std::uint32_t kind = load16(types + p::kPathEntrySize * writer_type);
       const std::uint32_t next = load16(types + p::kPathEntrySize * writer_type + 2);
@@ -379,11 +384,11 @@ class PlanRunner {
     if (writer_clock >= writer_clocks_) return Result::Corrupt;
     const ClockInfo* clock = detail::clock_at(reader_, reader_clock);
     const std::uint64_t saved =
-        load64(payload_ + references_end_ + 8 + 8 * std::size_t{writer_clock});
+        static_cast<std::uint64_t>(format::clock_reading(payload_ + references_end_, writer_clock));
     const std::uint64_t delta = clock != nullptr && clock->read != nullptr
                                     ? static_cast<std::uint64_t>(clock->read()) - saved
                                     : 0;
-    detail::rebase_time(stage_root_ + dst, size, never, delta);
+    format::rebase_time(stage_root_ + dst, size, never, delta);
     return Result::Ok;
   }
 

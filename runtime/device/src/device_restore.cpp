@@ -9,9 +9,8 @@ namespace symcr {
 namespace device {
 namespace {
 
-using detail::load16;
-using detail::load32;
-using detail::load64;
+using format::load16;
+using format::load32;
 
 class Restorer {
  public:
@@ -23,11 +22,12 @@ class Restorer {
     const std::size_t values = detail::values_size(schema_);
     const std::uint32_t clocks = detail::clock_count(schema_);
     if (clocks > kMaxClocks) return Result::Unsupported;
-    const std::size_t readings = detail::clock_readings_size(clocks);
-    if (size_ < values + 8 + readings) return Result::Truncated;
+    const std::size_t readings = format::clock_readings_size(clocks);
+    const std::size_t counts = format::kHeapCountSize + format::kReferenceCountSize;
+    if (size_ < values + counts + readings) return Result::Truncated;
     if (load32(payload_ + values) != 0) return Result::Corrupt;  // heap objects
-    reference_count_ = load32(payload_ + values + 4);
-    references_ = values + 8;
+    reference_count_ = load32(payload_ + values + format::kHeapCountSize);
+    references_ = values + counts;
     references_end_ = size_ - readings;
     Result result = check_references();
     if (result != Result::Ok) return result;
@@ -62,7 +62,8 @@ class Restorer {
   void decide_clock_deltas(std::uint32_t clocks) {
     for (std::uint32_t c = 0; c < clocks; ++c) {
       const ClockInfo* clock = detail::clock_at(schema_, c);
-      const std::uint64_t saved = load64(payload_ + references_end_ + 8 + 8 * std::size_t{c});
+      const std::uint64_t saved =
+          static_cast<std::uint64_t>(format::clock_reading(payload_ + references_end_, c));
       deltas_[c] = clock && clock->read ? static_cast<std::uint64_t>(clock->read()) - saved : 0;
     }
   }
@@ -74,25 +75,26 @@ class Restorer {
       const std::size_t stride = schema_.types[type.element].size;
       for (std::uint64_t i = 0; i < type.count; ++i) rebase(type.element, stage + i * stride, time);
     } else if (type.kind == Kind::Int || type.kind == Kind::UInt) {
-      detail::rebase_time(stage, type.size, time.never, deltas_[time.clock->index]);
+      format::rebase_time(stage, type.size, time.never, deltas_[time.clock->index]);
     }
   }
 
   // Reads the reference at `*at` (advancing it): its target's address in the live roots.
   Result reference_at(std::size_t* at, std::uintptr_t* address, std::uint32_t* type) const {
     std::size_t p = *at;
-    if (size_ - p < 1 + 4 + 2) return Result::Truncated;
-    if (payload_[p] != detail::kBaseObject) return Result::Corrupt;  // no containers here
-    const std::uint32_t root = load32(payload_ + p + 1);
-    const std::size_t step_count = load16(payload_ + p + 5);
-    p += 7;
+    if (size_ - p < format::kObjectReferenceStepsOffset) return Result::Truncated;
+    if (payload_[p] != format::kBaseObject) return Result::Corrupt;  // no containers here
+    const std::uint32_t root = load32(payload_ + p + format::kReferenceObjectOffset);
+    const std::size_t step_count = load16(payload_ + p + format::kObjectReferenceStepCountOffset);
     if (step_count > kMaxPathSteps) return Result::Corrupt;
-    if (size_ - p < 4 * step_count + 4) return Result::Truncated;
+    if (size_ - p < format::object_reference_size(step_count)) return Result::Truncated;
+    const std::uint8_t* step = payload_ + p + format::kObjectReferenceStepsOffset;
     std::uint32_t steps[kMaxPathSteps];
-    for (std::size_t s = 0; s < step_count; ++s) steps[s] = load32(payload_ + p + 4 * s);
-    p += 4 * step_count;
-    const std::uint32_t target_type = load32(payload_ + p);
-    p += 4;
+    for (std::size_t s = 0; s < step_count; ++s, step += format::kReferenceStepSize) {
+      steps[s] = load32(step);
+    }
+    const std::uint32_t target_type = load32(step);
+    p += format::object_reference_size(step_count);
     std::size_t offset = 0;
     if (!detail::follow_path(schema_, root, steps, step_count, &offset, type) ||
         *type != target_type) {
@@ -167,11 +169,11 @@ class Restorer {
   }
 
   Result pointer(const TypeInfo& type, std::uint8_t* stage) {
-    const std::uint32_t code = load32(take(4));
+    const std::uint32_t code = load32(take(format::kPointerCodeSize));
     std::uintptr_t target = 0;
-    if (code == detail::kOutsideCode) return Result::Ok;  // the running build's value stays
-    if (code != detail::kNullCode) {
-      const Result result = reference(code - detail::kFirstReference, type.element, &target);
+    if (code == format::kOutsideCode) return Result::Ok;  // the running build's value stays
+    if (code != format::kNullCode) {
+      const Result result = reference(code - format::kFirstReference, type.element, &target);
       if (result != Result::Ok) return result;
     }
     std::memcpy(stage, &target, sizeof target);
@@ -244,47 +246,44 @@ class Restorer {
   std::uint64_t deltas_[kMaxClocks] = {};
 };
 
-// The record's header checked against this build; the payload's bounds in `*payload`.
+// The record's header checked against this build; the payload's bounds in `*payload`, the
+// record's sequence in `*sequence`.
 // `*planned`: the plan of the record's previous build, or null for this build's own record.
 Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t size,
                     std::size_t* payload_offset, std::size_t* payload_size,
-                    const PlannedSchema** planned) {
-  if (size < detail::kHeaderSize) return Result::Truncated;
-  if (std::memcmp(bytes, detail::kMagic, sizeof detail::kMagic) != 0) return Result::Corrupt;
-  const std::uint16_t version = load16(bytes + detail::kOffsetVersion);
-  if (version > detail::kFormatVersion) return Result::FutureVersion;
-  if (version == 0) return Result::Corrupt;
-  const std::size_t header = load16(bytes + detail::kOffsetHeaderSize);
-  const std::uint64_t schema_size = load32(bytes + detail::kOffsetSchemaSize);
-  const std::uint64_t payload = load32(bytes + detail::kOffsetPayloadSize);
-  if (header < detail::kHeaderSize) return Result::Corrupt;
-  if (header + schema_size + payload > size) return Result::Truncated;
-  const std::size_t record = static_cast<std::size_t>(header + schema_size + payload);
-  const std::uint32_t stored = load32(bytes + detail::kOffsetChecksum);
-  const std::uint8_t zero[4] = {0, 0, 0, 0};
-  std::uint32_t crc = detail::crc32c(0, bytes, detail::kOffsetChecksum);
-  crc = detail::crc32c(crc, zero, 4);
-  crc = detail::crc32c(crc, bytes + detail::kOffsetChecksum + 4,
-                       record - detail::kOffsetChecksum - 4);
-  if (crc != stored) return Result::Corrupt;
-  const std::uint32_t flags = load32(bytes + detail::kOffsetFlags);
-  if ((flags & ~detail::kFlagInlineSchema) != 0) return Result::Corrupt;
-  if (((flags & detail::kFlagInlineSchema) != 0) != (schema_size != 0)) return Result::Corrupt;
-  const std::uint64_t schema_hash = load64(bytes + detail::kOffsetSchemaHash);
-  // An inline schema (a host's single-file checkpoint) must be the one its hash names.
-  if (schema_size != 0 && detail::fnv1a64(bytes + header, schema_size) != schema_hash) {
+                    std::uint64_t* sequence, const PlannedSchema** planned) {
+  format::RecordHeader h;
+  const format::HeaderFault fault = format::decode_record_header(bytes, size, &h);
+  if (fault == format::HeaderFault::FutureVersion) return Result::FutureVersion;
+  // Too short for a header, whatever its first bytes: truncated; else not a valid record.
+  if (fault != format::HeaderFault::None) {
+    return size < format::kRecordHeaderSize ? Result::Truncated : Result::Corrupt;
+  }
+  const std::uint64_t record = format::claimed_record_size(h);
+  if (record > size) return Result::Truncated;
+  const std::uint32_t crc =
+      format::record_checksum(bytes, static_cast<std::size_t>(record), format::crc32c_extend_small);
+  if (crc != h.checksum) return Result::Corrupt;
+  if ((h.flags & ~format::kRecordSchemaInline) != 0) return Result::Corrupt;
+  if (((h.flags & format::kRecordSchemaInline) != 0) != (h.schema_size != 0)) {
     return Result::Corrupt;
   }
+  // An inline schema (a host's single-file checkpoint) must be the one its hash names.
+  if (h.schema_size != 0 &&
+      format::fnv1a64(bytes + h.header_size, h.schema_size) != h.schema_hash) {
+    return Result::Corrupt;
+  }
+  const std::uint64_t schema_hash = h.schema_hash;
   *planned = nullptr;
   if (schema_hash != build.schema_hash) {
     if (detail::plan_for_writer != nullptr) *planned = detail::plan_for_writer(build, schema_hash);
     if (*planned == nullptr) return Result::OtherSchema;
   }
-  const std::uint32_t writer = load32(bytes + detail::kOffsetProgramId);
-  const std::uint32_t reader = detail::program_id(build.schema->program);
-  if (writer != 0 && reader != 0 && writer != reader) return Result::OtherProgram;
-  *payload_offset = static_cast<std::size_t>(header + schema_size);  // an inline schema: skipped
-  *payload_size = static_cast<std::size_t>(payload);
+  const std::uint32_t reader = format::program_id(build.schema->program);
+  if (h.program_id != 0 && reader != 0 && h.program_id != reader) return Result::OtherProgram;
+  *payload_offset = std::size_t{h.header_size} + h.schema_size;  // an inline schema: skipped
+  *payload_size = h.payload_size;
+  *sequence = h.sequence;
   return Result::Ok;
 }
 
@@ -321,17 +320,17 @@ Result restore(const Build& build, const std::uint8_t* bytes, std::size_t size,
   if (detail::first_unheld_type(schema) != kNoType) return Result::Unsupported;
   if (scratch == nullptr || scratch_capacity < scratch_size(schema)) return Result::NoSpace;
   std::size_t payload = 0, payload_size = 0;
+  std::uint64_t record_sequence = 0;
   const PlannedSchema* planned = nullptr;
-  Result result = check_record(build, bytes, size, &payload, &payload_size, &planned);
+  Result result =
+      check_record(build, bytes, size, &payload, &payload_size, &record_sequence, &planned);
   if (result != Result::Ok) return result;
   result = planned != nullptr
                ? detail::restore_planned_payload(schema, *planned, bytes + payload, payload_size,
                                                  scratch, scratch_capacity)
                : detail::restore_held_payload(schema, bytes + payload, payload_size, scratch,
                                               scratch_capacity);
-  if (result == Result::Ok && sequence != nullptr) {
-    *sequence = load64(bytes + detail::kOffsetSequence);
-  }
+  if (result == Result::Ok && sequence != nullptr) *sequence = record_sequence;
   return result;
 }
 

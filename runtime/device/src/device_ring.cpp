@@ -31,8 +31,9 @@ Storage memory_storage(void* base, std::size_t size) {
 Result Ring::open(const Storage& storage, std::size_t slot_size) {
   *this = Ring();
   const std::size_t unit = storage.erase_unit > 1 ? storage.erase_unit : 1;
-  if (storage.read == nullptr || storage.write == nullptr || slot_size < detail::kHeaderSize ||
-      slot_size % unit != 0 || (unit > 1 && storage.erase == nullptr)) {
+  if (storage.read == nullptr || storage.write == nullptr ||
+      slot_size < format::kRecordHeaderSize || slot_size % unit != 0 ||
+      (unit > 1 && storage.erase == nullptr)) {
     return Result::Unsupported;
   }
   const std::size_t slots = storage.size / slot_size;
@@ -50,13 +51,13 @@ Result Ring::open(const Storage& storage, std::size_t slot_size) {
 std::size_t Ring::scan(std::uint64_t* sequences, std::size_t* order) const {
   std::size_t used = 0;
   for (std::size_t i = 0; i < slot_count_; ++i) {
-    std::uint8_t header[detail::kHeaderSize];
+    std::uint8_t header[format::kRecordHeaderSize];
     sequences[i] = 0;
     if (!storage_.read(storage_.context, i * slot_size_, header, sizeof header) ||
-        std::memcmp(header, detail::kMagic, sizeof detail::kMagic) != 0) {
+        !format::starts_like_record(header, sizeof header)) {
       continue;
     }
-    sequences[i] = detail::load64(header + detail::kOffsetSequence);
+    sequences[i] = format::load64(header + format::kRecordSequenceOffset);
     if (sequences[i] == 0 || sequences[i] > kLastRingSequence) {  // not a sequence save writes
       sequences[i] = 0;
       continue;
@@ -75,21 +76,22 @@ std::size_t Ring::scan(std::uint64_t* sequences, std::size_t* order) const {
 bool Ring::whole(std::size_t slot) const {
   // The CRC is computed through a small window, so that open() and save() need no slot-sized
   // buffer: the header's checksum field counts as zeros (docs/format.md §1).
-  std::uint8_t window[detail::kHeaderSize];
+  std::uint8_t window[format::kRecordHeaderSize];
   const std::size_t offset = slot * slot_size_;
   if (!storage_.read(storage_.context, offset, window, sizeof window)) return false;
-  const std::size_t header = detail::load16(window + detail::kOffsetHeaderSize);
+  // Whatever the version: a whole record of a newer one is still the ring's newest.
+  const std::size_t header = format::load16(window + format::kRecordHeaderSizeOffset);
   const std::uint64_t record = static_cast<std::uint64_t>(header) +
-                               detail::load32(window + detail::kOffsetSchemaSize) +
-                               detail::load32(window + detail::kOffsetPayloadSize);
-  if (header < detail::kHeaderSize || record > slot_size_) return false;
-  const std::uint32_t stored = detail::load32(window + detail::kOffsetChecksum);
-  detail::store32(window + detail::kOffsetChecksum, 0);
-  std::uint32_t crc = detail::crc32c(0, window, sizeof window);
+                               format::load32(window + format::kRecordSchemaSizeOffset) +
+                               format::load32(window + format::kRecordPayloadSizeOffset);
+  if (header < format::kRecordHeaderSize || record > slot_size_) return false;
+  const std::uint32_t stored = format::load32(window + format::kRecordChecksumOffset);
+  format::store32(window + format::kRecordChecksumOffset, 0);
+  std::uint32_t crc = format::crc32c_extend_small(0, window, sizeof window);
   for (std::size_t at = sizeof window; at < record;) {
     const std::size_t n = record - at < sizeof window ? record - at : sizeof window;
     if (!storage_.read(storage_.context, offset + at, window, n)) return false;
-    crc = detail::crc32c(crc, window, n);
+    crc = format::crc32c_extend_small(crc, window, n);
     at += n;
   }
   return crc == stored;
@@ -125,7 +127,7 @@ Result Ring::save(const Build& build, std::uint8_t* buffer, std::size_t capacity
     if (!storage_.erase(storage_.context, offset, slot_size_)) return Result::Corrupt;
   } else {
     static const std::uint8_t kBlank[4] = {0};
-    if (!storage_.write(storage_.context, offset + detail::kOffsetChecksum, kBlank,
+    if (!storage_.write(storage_.context, offset + format::kRecordChecksumOffset, kBlank,
                         sizeof kBlank)) {
       return Result::Corrupt;
     }

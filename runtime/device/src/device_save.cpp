@@ -8,7 +8,7 @@ namespace symcr {
 namespace device {
 namespace {
 
-using detail::store32;
+using format::store32;
 
 struct Target {
   std::uintptr_t address;
@@ -21,12 +21,12 @@ class Saver {
       : schema_(schema), out_(out), capacity_(capacity) {}
 
   Result run(std::size_t* size) {
-    at_ = detail::kHeaderSize;
+    at_ = format::kRecordHeaderSize;
     for (std::uint32_t r = 0; r < schema_.root_count && result_ == Result::Ok; ++r) {
       value(schema_.roots[r].type, static_cast<const std::uint8_t*>(schema_.roots[r].address));
     }
-    put32(0);  // no heap objects
-    put32(static_cast<std::uint32_t>(target_count_));
+    put32(0);                                          // heap_count: no heap objects
+    put32(static_cast<std::uint32_t>(target_count_));  // ref_count
     for (std::size_t i = 0; i < target_count_ && result_ == Result::Ok; ++i) reference(i);
     clock_readings();
     *size = at_;
@@ -50,7 +50,7 @@ class Saver {
   }
   void put64(std::uint64_t v) {
     std::uint8_t bytes[8];
-    detail::store64(bytes, v);
+    format::store64(bytes, v);
     put(bytes, 8);
   }
 
@@ -120,19 +120,19 @@ class Saver {
     }
     if (type.kind == Kind::Bool) v = v != 0;
     std::uint8_t out[8];
-    detail::store64(out, v);
+    format::store64(out, v);
     put(out, type.size > 8 ? 8 : type.size);
   }
 
   void pointer(const TypeInfo& type, const std::uint8_t* p) {
     std::uintptr_t target;
     std::memcpy(&target, p, sizeof target);
-    if (target == 0) return put32(detail::kNullCode);
+    if (target == 0) return put32(format::kNullCode);
     std::uint32_t root = 0;
-    if (!find_root(target, &root)) return put32(detail::kOutsideCode);
+    if (!find_root(target, &root)) return put32(format::kOutsideCode);
     for (std::size_t i = 0; i < target_count_; ++i) {
       if (targets_[i].address == target && targets_[i].type == type.element) {
-        return put32(detail::kFirstReference + static_cast<std::uint32_t>(i));
+        return put32(format::kFirstReference + static_cast<std::uint32_t>(i));
       }
     }
     if (target_count_ == kMaxReferences) {
@@ -140,7 +140,7 @@ class Saver {
       return;
     }
     targets_[target_count_] = Target{target, type.element};
-    put32(detail::kFirstReference + static_cast<std::uint32_t>(target_count_++));
+    put32(format::kFirstReference + static_cast<std::uint32_t>(target_count_++));
   }
 
   bool find_root(std::uintptr_t target, std::uint32_t* root) const {
@@ -196,11 +196,11 @@ class Saver {
       }
       steps[step_count++] = step;
     }
-    const std::uint8_t base_kind = detail::kBaseObject;
+    const std::uint8_t base_kind = format::kBaseObject;
     put(&base_kind, 1);
     put32(root);
     std::uint8_t count[2];
-    detail::store16(count, static_cast<std::uint16_t>(step_count));
+    format::store16(count, static_cast<std::uint16_t>(step_count));
     put(count, 2);
     for (std::size_t s = 0; s < step_count; ++s) put32(steps[s]);
     put32(target.type);
@@ -222,23 +222,21 @@ Result save(const Build& build, std::uint64_t sequence, std::uint8_t* out, std::
   if (build.schema == nullptr || out == nullptr || size == nullptr) return Result::Unsupported;
   const Schema& schema = *build.schema;
   if (detail::first_unheld_type(schema) != kNoType) return Result::Unsupported;
-  if (capacity < detail::kHeaderSize) return Result::NoSpace;
+  if (capacity < format::kRecordHeaderSize) return Result::NoSpace;
   std::size_t record = 0;
   const Result result = Saver(schema, out, capacity).run(&record);
   if (result != Result::Ok) return result;
-  std::memcpy(out, detail::kMagic, sizeof detail::kMagic);
-  detail::store16(out + detail::kOffsetVersion, detail::kFormatVersion);
-  detail::store16(out + detail::kOffsetHeaderSize, detail::kHeaderSize);
-  detail::store32(out + detail::kOffsetFlags, 0);  // the schema is referenced by its hash
-  detail::store64(out + detail::kOffsetSequence, sequence);
-  detail::store64(out + 24, 0);  // no wall clock on a device
-  detail::store64(out + detail::kOffsetSchemaHash, build.schema_hash);
-  detail::store32(out + detail::kOffsetSchemaSize, 0);
-  detail::store32(out + detail::kOffsetPayloadSize,
-                  static_cast<std::uint32_t>(record - detail::kHeaderSize));
-  detail::store32(out + detail::kOffsetChecksum, 0);
-  detail::store32(out + detail::kOffsetProgramId, detail::program_id(schema.program));
-  detail::store32(out + detail::kOffsetChecksum, detail::crc32c(0, out, record));
+  format::RecordHeader header;
+  header.format_version = format::kRecordFormatVersion;
+  header.header_size = format::kRecordHeaderSize;
+  header.flags = 0;  // the schema is referenced by its hash
+  header.sequence = sequence;
+  header.timestamp_ns = 0;  // no wall clock on a device
+  header.schema_hash = build.schema_hash;
+  header.payload_size = static_cast<std::uint32_t>(record - format::kRecordHeaderSize);
+  header.program_id = format::program_id(schema.program);
+  format::encode_record_header(header, out);  // its checksum 0 while the CRC is computed
+  format::store32(out + format::kRecordChecksumOffset, format::crc32c_extend_small(0, out, record));
   *size = record;
   return Result::Ok;
 }

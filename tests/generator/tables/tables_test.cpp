@@ -12,6 +12,7 @@
 #include "roots.hpp"
 #include "schema_blob.hpp"
 #include "schema_facts.hpp"
+#include "symcr/format/hashes.hpp"
 
 // offsetof on these non-standard-layout types is conditionally supported; g++ supports it.
 #pragma GCC diagnostic ignored "-Winvalid-offsetof"
@@ -318,7 +319,7 @@ TEST(Tables, EmbeddedSerialisedFormIsTheTablesSerialised) {
   symcr::detail::serialise_schema(schema(), serialised);
   ASSERT_EQ(embedded->size, serialised.size());
   EXPECT_EQ(std::memcmp(embedded->bytes, serialised.data(), serialised.size()), 0);
-  EXPECT_EQ(embedded->hash, symcr::detail::fnv1a64(serialised.data(), serialised.size()));
+  EXPECT_EQ(embedded->hash, symcr::format::fnv1a64(serialised.data(), serialised.size()));
   const symcr::detail::SchemaBlob& used = symcr::detail::schema_blob(schema());
   EXPECT_EQ(used.data, embedded->bytes);  // the constant itself: nothing serialised at run time
   EXPECT_EQ(used.hash, embedded->hash);
