@@ -13,6 +13,7 @@
 #include "parsed_schema.hpp"
 #include "plan.hpp"
 #include "schema_blob.hpp"
+#include "symcr/format/hashes.hpp"
 #include "schema_file.hpp"
 
 namespace symcr_gen {
@@ -26,7 +27,7 @@ bool planPreviousSchemas(ProgramModel &Program,
   SchemaTables Tables(Program);
   const std::uint64_t OwnHash = Tables.serialised().hash;
   const std::uint32_t OwnProgram =
-      symcr::detail::program_id_of(Tables.schema().program);
+      symcr::format::program_id(Tables.schema().program);
   for (const std::string &File : SchemaFiles) {
     symcr::detail::ParsedSchema Previous;
     std::uint32_t PreviousProgram = 0;
