@@ -166,11 +166,11 @@ class CheckPass {
   std::uint32_t heap_refusals_ = 0;  // refusals before the heap object being decoded
 };
 
-class StagePass {
+// What a pass that keeps no records does at each of the traversal's points: nothing. A pass
+// derives from it and hides the points it acts at (the traversal calls them on the pass's own
+// type, so no call is virtual).
+class PassDefaults {
  public:
-  static constexpr bool kJudges = false;
-  static constexpr bool kWrites = true;
-
   bool heap_object(std::uint32_t, std::uint32_t, std::uint8_t, std::uint8_t*& dst) {
     dst = nullptr;
     return true;
@@ -189,7 +189,13 @@ class StagePass {
                     va_list) {}
 };
 
-class ApplyPass {
+class StagePass : public PassDefaults {
+ public:
+  static constexpr bool kJudges = false;
+  static constexpr bool kWrites = true;
+};
+
+class ApplyPass : public PassDefaults {
  public:
   static constexpr bool kJudges = false;
   static constexpr bool kWrites = true;
@@ -199,7 +205,6 @@ class ApplyPass {
     dst = static_cast<std::uint8_t*>(r_.heap_live_[h]);
     return true;
   }
-  void heap_object_decoded(std::uint32_t) {}
   bool container(const PlanNode*, std::uint32_t, std::uint32_t ordinal, std::uint32_t,
                  std::vector<void*>*& addresses) {
     if (ordinal < r_.element_slots_.size() && r_.element_slots_[ordinal] != kNoType) {
@@ -219,15 +224,13 @@ class ApplyPass {
     r_.rebase(dst, type, time);
   }
   void duplicate_key(const std::vector<PathFrame>& frames);
-  void report_value(const PlanNode*, std::uint32_t, const std::vector<PathFrame>&, const char*,
-                    va_list) {}
 
  private:
   Restorer& r_;
   Report& report_;
 };
 
-class ExplainPass {
+class ExplainPass : public PassDefaults {
  public:
   static constexpr bool kJudges = false;
   static constexpr bool kWrites = false;
@@ -235,25 +238,11 @@ class ExplainPass {
   explicit ExplainPass(std::unordered_map<std::uint32_t, std::string>& wanted)
       : wanted_(wanted) {}
 
-  bool heap_object(std::uint32_t, std::uint32_t, std::uint8_t, std::uint8_t*& dst) {
-    dst = nullptr;
-    return true;
-  }
-  void heap_object_decoded(std::uint32_t) {}
-  bool container(const PlanNode*, std::uint32_t, std::uint32_t, std::uint32_t,
-                 std::vector<void*>*&) {
-    return true;
-  }
   void pointer(const PlanNode*, bool, std::uint32_t, std::uint8_t*, std::uint32_t ordinal,
                std::uint32_t, std::uint32_t, const std::vector<PathFrame>& frames) {
     auto found = wanted_.find(ordinal);
     if (found != wanted_.end()) found->second = render_path(frames.data(), frames.size());
   }
-  bool checks_copies() const { return true; }
-  void rebase(std::uint8_t*, const TypeInfo&, const FieldTime&) const {}
-  void duplicate_key(const std::vector<PathFrame>&) {}
-  void report_value(const PlanNode*, std::uint32_t, const std::vector<PathFrame>&, const char*,
-                    va_list) {}
 
  private:
   std::unordered_map<std::uint32_t, std::string>& wanted_;
