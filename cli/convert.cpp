@@ -50,8 +50,8 @@ ClockTimebase clock_timebase(const Schema& writer, const std::uint8_t* payload, 
 
 // The readings that end the converted payload: the timebase its times are in, so that the
 // build's restore in any other process moves them by its clocks' advance since (by name; a
-// clock the timebase lacks reads 0, which no time of it needs: its times were kept, which
-// only --initial allows).
+// clock the timebase lacks reads 0, which no time needs: a time of a clock neither the
+// checkpoint nor --initial has a reading of keeps the value it has).
 std::vector<std::uint8_t> converted_readings(const Schema& build, const ClockTimebase& timebase,
                                              detail::ClockReadings& out) {
   const std::vector<const ClockInfo*> clocks = detail::schema_clocks(build);
@@ -127,11 +127,24 @@ int run_convert(const ConvertArgs& args) {
     const std::uint64_t input_size = checkpoint.record.record_size + build.bytes().size();
     status = layout.lay_out(build.schema(), input_size);
   }
+  // The result is in the checkpoint's timebase: its times are written as saved, so that the
+  // build's restore moves them exactly as it moves the checkpoint's own (ranges see them as
+  // saved, as there). The times kept from --initial are moved into that timebase as they are
+  // restored (a restore whose clocks read the checkpoint's readings), so they move by their
+  // clock's advance since --initial was saved; a clock the checkpoint has no reading of keeps
+  // --initial's reading, and its times their values.
+  ClockTimebase timebase;
+  if (status.ok()) {
+    timebase = clock_timebase(*checkpoint.writer, checkpoint.record.payload,
+                              checkpoint.record.payload_size);
+  }
   if (status.ok() && !args.initial.empty()) {
-    status = restore_initial_state(args.initial, args.schema, build, layout, initial_timebase);
-    // The checkpoint's times are moved into --initial's timebase, as the build's restore would
-    // move them in the process that saved that state: the times kept from it are in it already.
-    if (status.ok()) status = layout.read_clocks_as(initial_timebase.readings);
+    status = layout.read_clocks_as(timebase.readings);
+    if (status.ok()) {
+      status = restore_initial_state(args.initial, args.schema, build, layout, initial_timebase);
+    }
+    if (status.ok()) status = layout.read_clocks_as({});  // the checkpoint's times stay as saved
+    for (const auto& reading : initial_timebase.readings) timebase.readings.insert(reading);
   }
   if (!status.ok()) {
     print_error(status.message());
@@ -185,14 +198,9 @@ int run_convert(const ConvertArgs& args) {
   identity.size = build.bytes().size();
   identity.hash = build.hash();
   identity.program_id = build_program_id;
-  // Without --initial, nothing was moved: the checkpoint's timebase.
   detail::ClockReadings readings;
-  const std::vector<std::uint8_t> reading_bytes = converted_readings(
-      build.schema(),
-      !args.initial.empty() ? initial_timebase
-                            : clock_timebase(*checkpoint.writer, checkpoint.record.payload,
-                                             checkpoint.record.payload_size),
-      readings);
+  const std::vector<std::uint8_t> reading_bytes =
+      converted_readings(build.schema(), timebase, readings);
   std::vector<std::uint8_t> record;
   status = detail::encode_record_as(layout.schema(), identity, args.inline_schema,
                                     checkpoint.record.header.sequence, record, nullptr, &readings);

@@ -160,36 +160,38 @@ Status HostLayout::lay_out(const Schema& build, std::uint64_t input_size) {
 }
 
 Status HostLayout::read_clocks_as(const std::map<std::string, std::int64_t>& now) {
-  std::uint32_t count = 0;
-  std::size_t time_fields = 0;
-  for (const std::vector<FieldInfo>& fields : fields_) {
-    for (const FieldInfo& field : fields) {
-      if (!is_clock_time(field)) continue;
-      if (field.time->clock->index >= kMaxClocks) {
-        return Status(Error::Unsupported, "the build has more than %u clocks", kMaxClocks);
+  if (!clocks_copied_) {
+    std::uint32_t count = 0;
+    std::size_t time_fields = 0;
+    for (const std::vector<FieldInfo>& fields : fields_) {
+      for (const FieldInfo& field : fields) {
+        if (!is_clock_time(field)) continue;
+        if (field.time->clock->index >= kMaxClocks) {
+          return Status(Error::Unsupported, "the build has more than %u clocks", kMaxClocks);
+        }
+        if (field.time->clock->index >= count) count = field.time->clock->index + 1;
+        ++time_fields;
       }
-      if (field.time->clock->index >= count) count = field.time->clock->index + 1;
-      ++time_fields;
     }
+    // Sized once, never again: the fields point into both (and the schema's cached facts
+    // into clocks_).
+    clocks_.assign(count, ClockInfo{nullptr, nullptr, 0});
+    times_.reserve(time_fields);
+    for (std::vector<FieldInfo>& fields : fields_) {
+      for (FieldInfo& field : fields) {
+        if (!is_clock_time(field)) continue;
+        ClockInfo& ours = clocks_[field.time->clock->index];
+        if (ours.name == nullptr) ours = *field.time->clock;
+        times_.push_back(FieldTime{&ours, field.time->never});
+        field.time = &times_.back();
+      }
+    }
+    clocks_copied_ = true;
   }
-  // Sized once: the fields point into both.
-  clocks_.assign(count, ClockInfo{nullptr, nullptr, 0});
-  times_.clear();
-  times_.reserve(time_fields);
-  for (std::vector<FieldInfo>& fields : fields_) {
-    for (FieldInfo& field : fields) {
-      if (!is_clock_time(field)) continue;
-      const ClockInfo& build_clock = *field.time->clock;
-      ClockInfo& ours = clocks_[build_clock.index];
-      if (ours.name == nullptr) {
-        ours = build_clock;
-        const auto found = build_clock.name ? now.find(build_clock.name) : now.end();
-        ours.read = found != now.end() ? kClockReaders[build_clock.index] : nullptr;
-        if (found != now.end()) clock_now[build_clock.index] = found->second;
-      }
-      times_.push_back(FieldTime{&ours, field.time->never});
-      field.time = &times_.back();
-    }
+  for (ClockInfo& clock : clocks_) {
+    const auto found = clock.name != nullptr ? now.find(clock.name) : now.end();
+    clock.read = found != now.end() ? kClockReaders[clock.index] : nullptr;
+    if (found != now.end()) clock_now[clock.index] = found->second;
   }
   return Status();
 }

@@ -31,9 +31,9 @@ class HostLayout {
   Status lay_out(const Schema& build, std::uint64_t input_size);
   const Schema& schema() const { return schema_; }
   // After lay_out: a restore into the layout moves the times of each clock named in `now` as
-  // the build's own restore would in a process whose clock reads now[name] (for `symcr
-  // convert`, the process that saved --initial's state); the times of other clocks stay as
-  // saved. Process-wide: one layout's clocks are read at a time.
+  // the build's own restore would in a process whose clock reads now[name]; the times of
+  // other clocks stay as saved. Each call replaces the last one's readings. Process-wide: one
+  // layout's clocks are read at a time.
   static constexpr std::uint32_t kMaxClocks = 64;
   Status read_clocks_as(const std::map<std::string, std::int64_t>& now);
 
@@ -51,6 +51,7 @@ class HostLayout {
   std::vector<RootInfo> roots_;
   std::vector<ClockInfo> clocks_;  // the build's, reading the conversion's "now"
   std::vector<FieldTime> times_;   // the time fields', naming clocks_
+  bool clocks_copied_ = false;
   std::vector<std::unique_ptr<std::max_align_t[]>> memory_;
   Schema schema_{};
 };

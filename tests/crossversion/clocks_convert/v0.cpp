@@ -19,6 +19,7 @@ struct Failsafe {
 
 struct Vehicle {
   time_ms wp_start_ms;
+  time_ms near_ms;  // as long before the checkpoint as v1's --initial is saved after its start
   std::int64_t armed_us SYMCR_TIME(micros);
   std::uint32_t loiter_ms;  // a duration, not a time
   Failsafe failsafe;
@@ -29,6 +30,7 @@ SYMCR_CHECKPOINT Vehicle vehicle;
 
 int main(int argc, char** argv) {
   vehicle.wp_start_ms = 4800;
+  vehicle.near_ms = 4900;
   vehicle.armed_us = 999999000000ll;
   vehicle.loiter_ms = 1500;
   vehicle.failsafe.last_heartbeat_ms = 4990;
