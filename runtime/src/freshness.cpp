@@ -157,6 +157,24 @@ Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
   return found ? Status() : why;
 }
 
+Status check_counter_path(const char* counter, const struct stat& store, const char* store_path) {
+  struct stat info {};
+  if (file_system().lstat(counter, &info) != 0) return Status();
+  if (info.st_dev == store.st_dev && info.st_ino == store.st_ino) {
+    return Status(Error::Unsupported,
+                  "the freshness counter %s is the store %s itself: name another file, where "
+                  "whoever may write the store cannot",
+                  counter, store_path);
+  }
+  if (!S_ISREG(info.st_mode)) {
+    return Status(Error::Unsupported,
+                  "the freshness counter %s of store %s is not a regular file (a directory, "
+                  "device or symbolic link): name a file",
+                  counter, store_path);
+  }
+  return Status();
+}
+
 FileFreshnessCounter::FileFreshnessCounter(std::string path,
                                            const std::uint8_t (&store_id)[kStoreIdSize],
                                            Durability durability)

@@ -4,6 +4,8 @@
 #ifndef SYMCR_SRC_FRESHNESS_HPP
 #define SYMCR_SRC_FRESHNESS_HPP
 
+#include <sys/stat.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -54,6 +56,13 @@ std::uint64_t newest_allowed(const Sequences& sequences, const RestoreJournal& j
 // MAC), both written with one write, so that a cut write leaves the previous value or the new
 // one. The MAC is made with the signing key of the keys in force; a copy verifies with any key
 // the program holds. Never lowered. Through detail::file_system(), like the store.
+// Refuses a counter file path that names something other than a counter the store could own:
+// the store file itself (`store`: its fstat; the counter would be overwritten by the store
+// and vice versa, so rollback would go unnoticed), or an existing entry that is not a regular
+// file (a directory, a device, a symbolic link, which the counter never follows). A path
+// that does not exist yet is fine: the first save creates it.
+Status check_counter_path(const char* counter, const struct stat& store, const char* store_path);
+
 class FileFreshnessCounter final : public FreshnessCounter {
  public:
   FileFreshnessCounter(std::string path, const std::uint8_t (&store_id)[kStoreIdSize],

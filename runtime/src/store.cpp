@@ -979,10 +979,13 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
   if (options.freshness_counter != nullptr) {
     impl.counter = options.freshness_counter;
   } else {
-    impl.own_counter.reset(new detail::FileFreshnessCounter(
-        options.counter_path != nullptr ? std::string(options.counter_path)
-                                        : std::string(path) + ".fresh",
-        impl.store_id, options.durability));
+    // An empty path is no path: the default, next to the store.
+    const bool named = options.counter_path != nullptr && options.counter_path[0] != '\0';
+    const std::string counter_path = named ? options.counter_path : std::string(path) + ".fresh";
+    status = detail::check_counter_path(counter_path.c_str(), info, path);
+    if (!status.ok()) return creation_failed(status);
+    impl.own_counter.reset(
+        new detail::FileFreshnessCounter(counter_path, impl.store_id, options.durability));
     impl.own_counter->use_keys(impl.keys.get());
     impl.counter = impl.own_counter.get();
   }

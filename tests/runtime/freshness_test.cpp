@@ -390,6 +390,36 @@ TEST_F(FreshnessTest, ACounterPathAwayFromTheStoreIsUsed) {
   expect_a(2);
 }
 
+// A counter path naming the store itself would let the store overwrite its counter (and an
+// older copy of the store bring its own): refused at open, the store untouched. So is one
+// naming a directory; an empty path means the default, beside the store.
+TEST_F(FreshnessTest, ACounterPathNamingTheStoreOrADirectoryIsRefused) {
+  save_seeds(1, 2);
+  const std::vector<std::uint8_t> before = read_file(path);
+  for (const std::string& counter : {path, dir.path()}) {
+    options.counter_path = counter.c_str();
+    symcr::Store store;
+    const symcr::Status opened = symcr::Store::open(path.c_str(), schema_a, options, store);
+    EXPECT_EQ(opened.error(), symcr::Error::Unsupported) << counter;
+    EXPECT_NE(std::string(opened.message()).find(counter == path ? "is the store" : "not a regular"),
+              std::string::npos)
+        << opened.message();
+  }
+  EXPECT_EQ(read_file(path), before);
+  // A new store whose counter path is its own path: refused, and no file is left behind.
+  const std::string fresh = dir.file("new.store");
+  options.counter_path = fresh.c_str();
+  symcr::Store created;
+  EXPECT_EQ(symcr::Store::open(fresh.c_str(), schema_a, options, created).error(),
+            symcr::Error::Unsupported);
+  options.counter_path = "";
+  save_seeds(3, 3);
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"fresh.store", "fresh.store.fresh"}));
+  const symcr::Report report = restore();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  expect_a(3);
+}
+
 TEST_F(FreshnessTest, AHardwareCounterResetBelowTheStoreIsNoRollback) {
   // What the counter protects against is older state; a counter behind the store (a crash
   // between a save and its advance) still restores the newest.

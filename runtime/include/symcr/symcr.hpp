@@ -291,7 +291,9 @@ struct StoreOptions {
   // outliving the Store; when null, an authenticated file at `counter_path`, or when that is
   // null too, at the store's path with ".fresh" appended. Put that file where whoever may
   // write the store cannot (another owner, another partition): with both, an attacker can
-  // copy an old store and its old counter back together.
+  // copy an old store and its old counter back together. open() refuses (Unsupported) a
+  // counter_path naming the store file itself, or an existing entry that is not a regular
+  // file; an empty counter_path means the default.
   FreshnessCounter* freshness_counter = nullptr;
   const char* counter_path = nullptr;
 };
