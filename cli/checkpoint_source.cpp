@@ -192,9 +192,8 @@ Status read_key_ring(const std::string& path, std::vector<KeyFile>& keys) {
     const std::size_t first = entry.find_first_not_of(" \t\r");
     if (first == std::string::npos) continue;
     const std::size_t id_end = entry.find_first_of(" \t", first);
-    const std::size_t file = id_end == std::string::npos
-                                 ? std::string::npos
-                                 : entry.find_first_not_of(" \t", id_end);
+    const std::size_t file =
+        id_end == std::string::npos ? std::string::npos : entry.find_first_not_of(" \t", id_end);
     const std::string id = entry.substr(first, id_end - first);
     char* parsed_end = nullptr;
     const unsigned long value = std::strtoul(id.c_str(), &parsed_end, 10);

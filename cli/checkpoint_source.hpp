@@ -34,11 +34,11 @@ Status detect_file_kind(const std::string& path, FileKind& out);
 struct LoadedCheckpoint {
   std::string path;
   bool from_store = false;
-  std::uint32_t slot = 0;                  // from_store: which slot
-  int area = -1;                           // from_store: the schema area of its record
-  std::vector<std::uint8_t> bytes;         // the record
-  detail::RecordView record;               // views into `bytes`
-  detail::ParsedSchema inline_schema;      // single file: its own schema
+  std::uint32_t slot = 0;                      // from_store: which slot
+  int area = -1;                               // from_store: the schema area of its record
+  std::vector<std::uint8_t> bytes;             // the record
+  detail::RecordView record;                   // views into `bytes`
+  detail::ParsedSchema inline_schema;          // single file: its own schema
   std::unique_ptr<detail::StoreReader> store;  // from_store: owns the area's schema
   const Schema* writer = nullptr;
   std::uint64_t writer_hash = 0;

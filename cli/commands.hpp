@@ -17,11 +17,11 @@ struct KeyFile {
 };
 
 struct InspectArgs {
-  std::string path;                    // a checkpoint, a store or a schema file
-  std::optional<std::uint32_t> slot;   // store: this slot instead of the one a start restores
+  std::string path;                   // a checkpoint, a store or a schema file
+  std::optional<std::uint32_t> slot;  // store: this slot instead of the one a start restores
   bool json = false;
-  std::string writer_schema;           // for a record that names its schema by hash only
-  std::vector<KeyFile> keys;           // the program's keys (none: MACs are not checked)
+  std::string writer_schema;  // for a record that names its schema by hash only
+  std::vector<KeyFile> keys;  // the program's keys (none: MACs are not checked)
 };
 int run_inspect(const InspectArgs& args);
 
@@ -42,25 +42,25 @@ int run_diff(const DiffArgs& args);
 struct PlanArgs {
   std::vector<std::string> checkpoints;  // files, stores, or directories of them
   std::optional<std::uint32_t> slot;
-  std::string schema;                  // the target build's schema file
+  std::string schema;  // the target build's schema file
   bool strict = false;
   bool json = false;
   bool accept_other_program = false;  // plan a checkpoint of another program all the same
-  std::string writer_schema;           // for a record that names its schema by hash only
-  std::vector<KeyFile> keys;           // the program's keys (none: MACs are not checked)
+  std::string writer_schema;          // for a record that names its schema by hash only
+  std::vector<KeyFile> keys;          // the program's keys (none: MACs are not checked)
 };
 int run_plan(const PlanArgs& args);
 
 struct ConvertArgs {
   std::string checkpoint;
   std::optional<std::uint32_t> slot;
-  std::string schema;                  // the target build's schema file
+  std::string schema;  // the target build's schema file
   std::string output;
-  std::string initial;                 // a checkpoint of the target build's initial state
+  std::string initial;  // a checkpoint of the target build's initial state
   bool strict = false;
   bool accept_other_program = false;
-  bool inline_schema = false;          // else the record names its schema by hash only
-  std::string writer_schema;           // for a record that names its schema by hash only
+  bool inline_schema = false;  // else the record names its schema by hash only
+  std::string writer_schema;   // for a record that names its schema by hash only
 };
 int run_convert(const ConvertArgs& args);
 

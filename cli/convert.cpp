@@ -43,7 +43,8 @@ ClockTimebase clock_timebase(const Schema& writer, const std::uint8_t* payload, 
   const std::uint8_t* trailer = payload + size - trailer_size;
   timebase.epoch = format::load64(trailer);
   for (std::uint32_t c = 0; c < count; ++c) {
-    if (clocks[c] != nullptr) timebase.readings[clocks[c]->name] = format::clock_reading(trailer, c);
+    if (clocks[c] != nullptr)
+      timebase.readings[clocks[c]->name] = format::clock_reading(trailer, c);
   }
   return timebase;
 }

@@ -30,9 +30,12 @@ struct Difference {
 
 const char* change_name(Change change) {
   switch (change) {
-    case Change::Changed: return "changed";
-    case Change::Removed: return "removed";
-    case Change::Added: return "added";
+    case Change::Changed:
+      return "changed";
+    case Change::Removed:
+      return "removed";
+    case Change::Added:
+      return "added";
   }
   return "?";
 }
@@ -200,9 +203,9 @@ int run_diff(const DiffArgs& args) {
     print("no differences (" + std::to_string(values_a.size()) + " values)\n");
     return kExitOk;
   }
-  print("\n" + std::to_string(differences.size()) + " difference(s): " +
-        std::to_string(counts[0]) + " changed, " + std::to_string(counts[1]) + " removed, " +
-        std::to_string(counts[2]) + " added\n");
+  print("\n" + std::to_string(differences.size()) + " difference(s): " + std::to_string(counts[0]) +
+        " changed, " + std::to_string(counts[1]) + " removed, " + std::to_string(counts[2]) +
+        " added\n");
   return kExitFinding;
 }
 

@@ -10,9 +10,9 @@ namespace symcr::cli {
 Report dry_run_restore(const LoadedCheckpoint& checkpoint, const Schema& reader, bool strict) {
   RestoreOptions options;
   options.strict = strict;
-  Report report = detail::plan_payload(*checkpoint.writer, checkpoint.writer_hash,
-                                       checkpoint.record.payload,
-                                       checkpoint.record.payload_size, reader, options);
+  Report report =
+      detail::plan_payload(*checkpoint.writer, checkpoint.writer_hash, checkpoint.record.payload,
+                           checkpoint.record.payload_size, reader, options);
   symcr::detail::ReportAccess::set_sequence(report, checkpoint.record.header.sequence);
   return report;
 }

@@ -41,7 +41,8 @@ std::vector<HeaderField> describe_header(const detail::RecordHeader& h, const Sc
   };
   add_number("format_version", h.format_version);
   add_number("sequence", h.sequence);
-  fields.push_back({"time", utc_iso8601(h.timestamp_ns), JsonScalar::of(utc_iso8601(h.timestamp_ns))});
+  fields.push_back(
+      {"time", utc_iso8601(h.timestamp_ns), JsonScalar::of(utc_iso8601(h.timestamp_ns))});
   add_number("timestamp_ns", h.timestamp_ns);
   add_number("header_size", h.header_size);
   add_number("schema_size", h.schema_size);

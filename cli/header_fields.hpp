@@ -14,15 +14,15 @@
 namespace symcr::cli {
 
 struct HeaderField {
-  std::string name;   // JSON key; also the text label
+  std::string name;  // JSON key; also the text label
   std::string text;
   JsonScalar json;
 };
 
 // `schema` is the record's writer schema, or null when unknown. `schema_origin` says where it
 // lives ("inline", "store area 1").
-std::vector<HeaderField> describe_header(const detail::RecordHeader& header,
-                                         const Schema* schema, const std::string& schema_origin);
+std::vector<HeaderField> describe_header(const detail::RecordHeader& header, const Schema* schema,
+                                         const std::string& schema_origin);
 
 // "2026-11-23T03:45:12.123456789Z"
 std::string utc_iso8601(std::uint64_t timestamp_ns);

@@ -32,15 +32,26 @@ void JsonWriter::array_end() { impl_->out.arrayEnd(); }
 void JsonWriter::key_begin(const std::string& key) { impl_->out.attributeBegin(valid_utf8(key)); }
 void JsonWriter::key_end() { impl_->out.attributeEnd(); }
 
-
 void JsonWriter::value(const JsonScalar& s) {
   switch (s.kind) {
-    case JsonScalar::Kind::Null: impl_->out.value(nullptr); return;
-    case JsonScalar::Kind::Bool: impl_->out.value(s.boolean); return;
-    case JsonScalar::Kind::Int: impl_->out.value(s.integer); return;
-    case JsonScalar::Kind::UInt: impl_->out.value(s.unsigned_integer); return;
-    case JsonScalar::Kind::Double: impl_->out.value(s.real); return;
-    case JsonScalar::Kind::String: impl_->out.value(valid_utf8(s.string)); return;
+    case JsonScalar::Kind::Null:
+      impl_->out.value(nullptr);
+      return;
+    case JsonScalar::Kind::Bool:
+      impl_->out.value(s.boolean);
+      return;
+    case JsonScalar::Kind::Int:
+      impl_->out.value(s.integer);
+      return;
+    case JsonScalar::Kind::UInt:
+      impl_->out.value(s.unsigned_integer);
+      return;
+    case JsonScalar::Kind::Double:
+      impl_->out.value(s.real);
+      return;
+    case JsonScalar::Kind::String:
+      impl_->out.value(valid_utf8(s.string));
+      return;
   }
 }
 

@@ -20,15 +20,36 @@ struct JsonScalar {
   std::string string;
 
   static JsonScalar null() { return {}; }
-  static JsonScalar of(bool b) { JsonScalar s; s.kind = Kind::Bool; s.boolean = b; return s; }
-  static JsonScalar of_int(std::int64_t i) { JsonScalar s; s.kind = Kind::Int; s.integer = i; return s; }
-  static JsonScalar of_uint(std::uint64_t u) {
-    JsonScalar s; s.kind = Kind::UInt; s.unsigned_integer = u; return s;
+  static JsonScalar of(bool b) {
+    JsonScalar s;
+    s.kind = Kind::Bool;
+    s.boolean = b;
+    return s;
   }
-  static JsonScalar of_double(double d) { JsonScalar s; s.kind = Kind::Double; s.real = d; return s; }
+  static JsonScalar of_int(std::int64_t i) {
+    JsonScalar s;
+    s.kind = Kind::Int;
+    s.integer = i;
+    return s;
+  }
+  static JsonScalar of_uint(std::uint64_t u) {
+    JsonScalar s;
+    s.kind = Kind::UInt;
+    s.unsigned_integer = u;
+    return s;
+  }
+  static JsonScalar of_double(double d) {
+    JsonScalar s;
+    s.kind = Kind::Double;
+    s.real = d;
+    return s;
+  }
   static JsonScalar of(const char* text) { return of(std::string(text)); }
   static JsonScalar of(std::string text) {
-    JsonScalar s; s.kind = Kind::String; s.string = std::move(text); return s;
+    JsonScalar s;
+    s.kind = Kind::String;
+    s.string = std::move(text);
+    return s;
   }
 };
 
@@ -52,7 +73,9 @@ class JsonWriter {
   // Shorthands for `key: scalar`.
   void field(const std::string& key, const JsonScalar& scalar);
   void field(const std::string& key, const std::string& text) { field(key, JsonScalar::of(text)); }
-  void field(const std::string& key, const char* text) { field(key, JsonScalar::of(std::string(text))); }
+  void field(const std::string& key, const char* text) {
+    field(key, JsonScalar::of(std::string(text)));
+  }
   void field(const std::string& key, bool b) { field(key, JsonScalar::of(b)); }
   void field(const std::string& key, std::uint64_t u) { field(key, JsonScalar::of_uint(u)); }
   void field(const std::string& key, std::uint32_t u) { field(key, JsonScalar::of_uint(u)); }

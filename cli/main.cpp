@@ -23,26 +23,31 @@ namespace {
 cl::OptionCategory symcr_category("symcr options");
 
 cl::SubCommand inspect_command(
-    "inspect", "Show a checkpoint's header and its values by source names. For a store: every "
-               "slot, and the values of the one the program's next start would restore (or "
-               "--slot N).");
+    "inspect",
+    "Show a checkpoint's header and its values by source names. For a store: every "
+    "slot, and the values of the one the program's next start would restore (or "
+    "--slot N).");
 cl::SubCommand verify_command(
-    "verify", "Check a checkpoint or store: checksum, structure, full payload decode; for a "
-              "store, the slot the program's next start would restore. Exit 1 if invalid.");
+    "verify",
+    "Check a checkpoint or store: checksum, structure, full payload decode; for a "
+    "store, the slot the program's next start would restore. Exit 1 if invalid.");
 cl::SubCommand diff_command(
-    "diff", "List the values that differ between two checkpoints, by path (added and removed "
-            "paths too). Exit 1 if any differ.");
+    "diff",
+    "List the values that differ between two checkpoints, by path (added and removed "
+    "paths too). Exit 1 if any differ.");
 cl::SubCommand plan_command(
-    "plan", "Show the report restoring a checkpoint into a build would produce, from the "
-            "build's schema file, without running it; for several checkpoints (or directories "
-            "of them) a line each, then the reports of those that would not restore cleanly. "
-            "Exit 1 if a restore would fail or a field would be rejected (with --strict: if "
-            "any decision is lossy), 2 if a checkpoint cannot be read.");
+    "plan",
+    "Show the report restoring a checkpoint into a build would produce, from the "
+    "build's schema file, without running it; for several checkpoints (or directories "
+    "of them) a line each, then the reports of those that would not restore cleanly. "
+    "Exit 1 if a restore would fail or a field would be rejected (with --strict: if "
+    "any decision is lossy), 2 if a checkpoint cannot be read.");
 cl::SubCommand convert_command(
-    "convert", "Restore a checkpoint into another build, known by its schema file, by the rules "
-               "of that build's own restore, and write the result as that build's checkpoint "
-               "(for a device, which restores only its own build's). Exit 1, writing nothing, "
-               "if the restore would fail.");
+    "convert",
+    "Restore a checkpoint into another build, known by its schema file, by the rules "
+    "of that build's own restore, and write the result as that build's checkpoint "
+    "(for a device, which restores only its own build's). Exit 1, writing nothing, "
+    "if the restore would fail.");
 
 cl::opt<std::string> inspect_path(cl::Positional, cl::Required,
                                   cl::desc("<checkpoint | store | schema file>"),
@@ -62,8 +67,8 @@ cl::list<unsigned> key_ids(
     "key-id",
     cl::desc("The id of a --key-file key: the first --key-id is the first --key-file's, and so "
              "on (default 0 for a single key)"),
-    cl::value_desc("N"), cl::sub(inspect_command), cl::sub(verify_command),
-    cl::sub(plan_command), cl::cat(symcr_category));
+    cl::value_desc("N"), cl::sub(inspect_command), cl::sub(verify_command), cl::sub(plan_command),
+    cl::cat(symcr_category));
 cl::opt<std::string> key_ring(
     "key-ring",
     cl::desc("A file naming the program's keys, one a line: \"<id> <key file>\" (relative key "
@@ -84,8 +89,8 @@ cl::list<std::string> plan_checkpoints(cl::Positional, cl::OneOrMore,
                                        cl::desc("<checkpoint | store | directory>..."),
                                        cl::sub(plan_command), cl::cat(symcr_category));
 cl::opt<std::string> convert_checkpoint(cl::Positional, cl::Required,
-                                        cl::desc("<checkpoint | store>"),
-                                        cl::sub(convert_command), cl::cat(symcr_category));
+                                        cl::desc("<checkpoint | store>"), cl::sub(convert_command),
+                                        cl::cat(symcr_category));
 cl::opt<std::string> convert_output("o", cl::Required, cl::desc("The converted checkpoint"),
                                     cl::value_desc("file"), cl::sub(convert_command),
                                     cl::cat(symcr_category));
@@ -107,9 +112,9 @@ cl::opt<bool> convert_inline_schema(
              "device's records are)"),
     cl::sub(convert_command), cl::cat(symcr_category));
 
-cl::opt<bool> json_output("json", cl::desc("Write JSON instead of text"),
-                          cl::sub(inspect_command), cl::sub(verify_command),
-                          cl::sub(diff_command), cl::sub(plan_command), cl::cat(symcr_category));
+cl::opt<bool> json_output("json", cl::desc("Write JSON instead of text"), cl::sub(inspect_command),
+                          cl::sub(verify_command), cl::sub(diff_command), cl::sub(plan_command),
+                          cl::cat(symcr_category));
 cl::opt<unsigned> slot("slot",
                        cl::desc("Use this slot of a store instead of the one the program's next "
                                 "start would restore"),
@@ -128,8 +133,7 @@ cl::opt<std::string> plan_schema("schema", cl::Required,
 cl::opt<bool> plan_strict("strict",
                           cl::desc("Refuse any lossy decision, as RestoreOptions::strict does "
                                    "(exit 1)"),
-                          cl::sub(plan_command), cl::sub(convert_command),
-                          cl::cat(symcr_category));
+                          cl::sub(plan_command), cl::sub(convert_command), cl::cat(symcr_category));
 
 cl::opt<bool> plan_accept_other_program(
     "accept-other-program",
@@ -178,9 +182,14 @@ int run_subcommand() {
     return symcr::cli::run_diff({diff_a, diff_b, given(slot_a), given(slot_b), json_output});
   }
   if (plan_command) {
-    return symcr::cli::run_plan({{plan_checkpoints.begin(), plan_checkpoints.end()}, given(slot),
-                                 plan_schema, plan_strict, json_output, plan_accept_other_program,
-                                 writer_schema, keys});
+    return symcr::cli::run_plan({{plan_checkpoints.begin(), plan_checkpoints.end()},
+                                 given(slot),
+                                 plan_schema,
+                                 plan_strict,
+                                 json_output,
+                                 plan_accept_other_program,
+                                 writer_schema,
+                                 keys});
   }
   if (convert_command) {
     return symcr::cli::run_convert({convert_checkpoint, given(slot), plan_schema, convert_output,

@@ -88,8 +88,9 @@ void plan_one(const PlanArgs& args, const Build& build, PlannedCheckpoint& out) 
 
 // The heading naming what is planned.
 std::string planned_text(const PlannedCheckpoint& plan) {
-  return plan.restores_nothing ? plan.path + " (no checkpoint: the program's next start would "
-                                             "restore none)"
+  return plan.restores_nothing ? plan.path +
+                                     " (no checkpoint: the program's next start would "
+                                     "restore none)"
                                : describe_checkpoint(plan.checkpoint);
 }
 
@@ -299,8 +300,8 @@ int run_plan(const PlanArgs& args) {
       write_plan_json(json, args, build, plan, /*with_build=*/true);
       return exit_code;
     }
-    print("checkpoint  " + planned_text(plan) + "\nbuild       " + build_text +
-          "\nmode        " + (args.strict ? "strict" : "default") + "\n\n");
+    print("checkpoint  " + planned_text(plan) + "\nbuild       " + build_text + "\nmode        " +
+          (args.strict ? "strict" : "default") + "\n\n");
     print_plan_body(plan);
     print_verdict(Terminal::for_stdout(), plan);
     return exit_code;

@@ -51,8 +51,7 @@ void print_report_table(const Report& report) {
   print(table.render(terminal));
   std::string summary;
   for (const Decision decision : {Decision::Restored, Decision::Converted, Decision::Kept,
-                                  Decision::Dropped, Decision::Rejected,
-                                  Decision::Rebased}) {
+                                  Decision::Dropped, Decision::Rejected, Decision::Rebased}) {
     if (!summary.empty()) summary += ", ";
     summary += std::to_string(report.count(decision)) + " " + decision_name(decision);
   }

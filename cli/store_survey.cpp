@@ -36,8 +36,8 @@ Status read_counter(const detail::StoreReader& store, const detail::KeyRing& key
   if (!status.ok()) return status;
   status = detail::decode_counter_file(bytes.data(), bytes.size(), store.store_id(), keys, value);
   if (!status.ok()) {
-    return Status(Error::RolledBack, "the freshness counter %s cannot be trusted: %s",
-                  path.c_str(), status.message());
+    return Status(Error::RolledBack, "the freshness counter %s cannot be trusted: %s", path.c_str(),
+                  status.message());
   }
   return Status();
 }
@@ -112,9 +112,9 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
       Status status = store.read_record(i, bytes, view, area);
       // Every slot's MAC is checked with the keys given, as a restore's scan checks them.
       const Status authentic =
-          status.ok() ? detail::check_authentication(keys.get(), bytes.data(), view,
-                                                     store.binding(i, area))
-                      : Status();
+          status.ok()
+              ? detail::check_authentication(keys.get(), bytes.data(), view, store.binding(i, area))
+              : Status();
       if (status.ok() && authentic.ok()) {
         status = check_payload(store.area(area).schema(), view.payload, view.payload_size);
       }
@@ -286,7 +286,8 @@ void print_store_overview(const std::string& path, const detail::StoreReader& st
   header.add({{"restore_journal"}, {journal_text(store.journal())}});
   if (!store.journal().empty()) header.add({{"next_start"}, {next_start_text(store, survey)}});
   if (!survey.freshness.empty()) {
-    header.add({{"freshness"}, {survey.freshness, survey.rolled_back ? Colour::Red : Colour::None}});
+    header.add(
+        {{"freshness"}, {survey.freshness, survey.rolled_back ? Colour::Red : Colour::None}});
   }
   std::string restore_text = "none (" + survey.nothing_restored + ")";
   if (survey.restore_latest_slot) {

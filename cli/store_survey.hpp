@@ -19,14 +19,14 @@ namespace symcr::cli {
 
 struct SlotSurvey {
   std::uint32_t index = 0;
-  std::string state;            // valid, empty, corrupt, corrupt-payload, unknown-schema, ...
-  std::string problem;          // why it is not restorable ("" when it is)
-  bool written = false;         // not empty
-  bool has_header = false;      // header fields below are meaningful
+  std::string state;        // valid, empty, corrupt, corrupt-payload, unknown-schema, ...
+  std::string problem;      // why it is not restorable ("" when it is)
+  bool written = false;     // not empty
+  bool has_header = false;  // header fields below are meaningful
   detail::RecordHeader header;
   int area = -1;
   bool restorable = false;
-  bool damaged = false;         // written, and failed a check (not merely stale or empty)
+  bool damaged = false;          // written, and failed a check (not merely stale or empty)
   bool unauthenticated = false;  // sound, but its MAC fails with the keys given (damaged too)
   // Restorable, but the crash-loop fallback's journal (as the next start applies it)
   // excludes it: the next start passes over it (`problem` says why).

@@ -18,13 +18,26 @@ std::string Terminal::paint(Colour colour, const std::string& text) const {
   if (!colour_ || colour == Colour::None) return text;
   const char* code = "0";
   switch (colour) {
-    case Colour::None: break;
-    case Colour::Bold: code = "1"; break;
-    case Colour::Dim: code = "2"; break;
-    case Colour::Red: code = "31"; break;
-    case Colour::Green: code = "32"; break;
-    case Colour::Yellow: code = "33"; break;
-    case Colour::Cyan: code = "36"; break;
+    case Colour::None:
+      break;
+    case Colour::Bold:
+      code = "1";
+      break;
+    case Colour::Dim:
+      code = "2";
+      break;
+    case Colour::Red:
+      code = "31";
+      break;
+    case Colour::Green:
+      code = "32";
+      break;
+    case Colour::Yellow:
+      code = "33";
+      break;
+    case Colour::Cyan:
+      code = "36";
+      break;
   }
   return std::string("\x1b[") + code + "m" + text + "\x1b[0m";
 }

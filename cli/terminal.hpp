@@ -21,9 +21,9 @@ class Terminal {
   bool colour_;
 };
 
-// Columns padded to their widest cell, the last one unpadded; cells are made printable(). A column listed in `capped`
-// stops growing at `cap` characters (longer cells overflow their column), so one deep path
-// does not push every line off the screen.
+// Columns padded to their widest cell, the last one unpadded; cells are made printable(). A column
+// listed in `capped` stops growing at `cap` characters (longer cells overflow their column), so one
+// deep path does not push every line off the screen.
 class Table {
  public:
   struct Cell {

@@ -117,11 +117,21 @@ std::string quoted(const std::string& text) {
   for (const char c : text) {
     const auto byte = static_cast<unsigned char>(c);
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
       default:
         if (byte < 0x20 || byte == 0x7F) {
           char escaped[8];
@@ -139,8 +149,8 @@ bool underlying_is_signed(const Schema& writer, const TypeInfo& type) {
   return type.element < writer.type_count && writer.types[type.element].kind == Kind::Int;
 }
 
-void render(const Schema& writer, const TypeInfo& type, const std::uint8_t* bytes,
-            std::size_t size, const char* text, Value& out) {
+void render(const Schema& writer, const TypeInfo& type, const std::uint8_t* bytes, std::size_t size,
+            const char* text, Value& out) {
   char number[32];
   switch (type.kind) {
     case Kind::Bool:
@@ -175,11 +185,13 @@ void render(const Schema& writer, const TypeInfo& type, const std::uint8_t* byte
           return;
         }
       }
-      if (is_signed) std::snprintf(number, sizeof number, "%" PRId64, v);
-      else std::snprintf(number, sizeof number, "%" PRIu64, static_cast<std::uint64_t>(v));
+      if (is_signed)
+        std::snprintf(number, sizeof number, "%" PRId64, v);
+      else
+        std::snprintf(number, sizeof number, "%" PRIu64, static_cast<std::uint64_t>(v));
       out.text = std::string(number) + " (no enumerator)";
-      out.json = is_signed ? JsonScalar::of_int(v)
-                           : JsonScalar::of_uint(static_cast<std::uint64_t>(v));
+      out.json =
+          is_signed ? JsonScalar::of_int(v) : JsonScalar::of_uint(static_cast<std::uint64_t>(v));
       return;
     }
     case Kind::String: {
@@ -253,9 +265,8 @@ class Recorder : public detail::ValueVisitor {
         used_ += listing_.targets_.back().size() + sizeof(std::string) + 2 * sizeof(void*);
       }
     }
-    listing_.leaves_.push_back({&type, bytes, size,
-                                stack_.empty() ? ValueListing::kNoNode : stack_.back().node,
-                                target});
+    listing_.leaves_.push_back(
+        {&type, bytes, size, stack_.empty() ? ValueListing::kNoNode : stack_.back().node, target});
     used_ += sizeof(ValueListing::Leaf);
     too_large = used_ + listing_.nodes_.size() * sizeof(ValueListing::Node) > budget_;
   }

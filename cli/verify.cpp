@@ -32,8 +32,8 @@ std::vector<Check> check_record_file(const std::vector<std::uint8_t>& bytes, std
   detail::RecordView record;
   Status status = detail::parse_record(bytes.data(), bytes.size(), record);
   if (!status.ok()) {
-    checks.push_back({"record", false, std::string(error_name(status.error())) + ": " +
-                                           status.message()});
+    checks.push_back(
+        {"record", false, std::string(error_name(status.error())) + ": " + status.message()});
     return checks;
   }
   const detail::RecordHeader& h = record.header;
@@ -52,13 +52,14 @@ std::vector<Check> check_record_file(const std::vector<std::uint8_t>& bytes, std
     checks.push_back(
         {"authentication", true, "MAC verifies with key id " + std::to_string(h.key_id)});
   } else if ((h.flags & symcr::format::kRecordAuthenticated) != 0) {
-    checks.push_back({"authentication", true,
-                      "MAC with key id " + std::to_string(h.key_id) +
-                          ", not verified (no --key-file)"});
+    checks.push_back(
+        {"authentication", true,
+         "MAC with key id " + std::to_string(h.key_id) + ", not verified (no --key-file)"});
   }
   if (record.schema == nullptr) {
-    checks.push_back({"schema", false, "no inline schema (a store slot's record, schema " +
-                                           hex64(h.schema_hash) + " referenced by hash)"});
+    checks.push_back({"schema", false,
+                      "no inline schema (a store slot's record, schema " + hex64(h.schema_hash) +
+                          " referenced by hash)"});
     return checks;
   }
   detail::ParsedSchema schema;
@@ -82,8 +83,9 @@ std::vector<Check> check_record_file(const std::vector<std::uint8_t>& bytes, std
     checks.push_back({"payload", false, status.message()});
     return checks;
   }
-  checks.push_back({"payload", true, std::to_string(record.payload_size) + " bytes, " +
-                                         std::to_string(leaf_count) + " values decoded"});
+  checks.push_back({"payload", true,
+                    std::to_string(record.payload_size) + " bytes, " + std::to_string(leaf_count) +
+                        " values decoded"});
   return checks;
 }
 
@@ -129,8 +131,7 @@ int verify_record(const VerifyArgs& args) {
                  {check.detail}});
     }
     print(table.render(terminal));
-    print(terminal.paint(valid ? Colour::Green : Colour::Red, valid ? "valid" : "invalid") +
-          "\n");
+    print(terminal.paint(valid ? Colour::Green : Colour::Red, valid ? "valid" : "invalid") + "\n");
   }
   return valid ? kExitOk : kExitFinding;
 }
@@ -175,8 +176,8 @@ int verify_store(const VerifyArgs& args) {
   } else {
     const Terminal terminal = Terminal::for_stdout();
     print_store_overview(args.path, store, survey, std::nullopt);
-    std::string verdict = terminal.paint(valid ? Colour::Green : Colour::Red,
-                                         valid ? "valid" : "invalid");
+    std::string verdict =
+        terminal.paint(valid ? Colour::Green : Colour::Red, valid ? "valid" : "invalid");
     if (damaged) verdict += ": " + std::to_string(damaged) + " damaged slot(s)";
     if (!survey.restore_latest_slot) verdict += (damaged ? "; " : ": ") + survey.nothing_restored;
     print("\n" + verdict + "\n");

@@ -51,7 +51,8 @@ void Diagnostics::releaseNotes() {
   }
   if (Notes.empty())
     return;
-  // The file is shared by the generation steps that a parallel build runs at once.
+  // The file is shared by the generation steps that a parallel build runs at
+  // once.
   int Fd = -1;
   if (!Errors) {
     llvm::StringRef Parent = llvm::sys::path::parent_path(ShownNotesFile);
@@ -78,7 +79,8 @@ void Diagnostics::releaseNotes() {
     Shown += Line + "\n";
     Added += Line + "\n";
   }
-  // Appended where the read ended; should it fail, a later step prints the note again.
+  // Appended where the read ended; should it fail, a later step prints the note
+  // again.
   ssize_t Written = ::write(Fd, Added.data(), Added.size());
   (void)Written;
   ::close(Fd);
@@ -114,7 +116,8 @@ void Diagnostics::note(const Location &Loc, const std::string &Message) {
   print(Loc, "note", Message);
 }
 
-void Diagnostics::unrestorable(const Location &Where, const std::string &Message,
+void Diagnostics::unrestorable(const Location &Where,
+                               const std::string &Message,
                                const std::string &LeafSkip,
                                const MemberRef *Group) {
   const std::string &Fix = Group ? Group->SkipHint : LeafSkip;
@@ -166,15 +169,16 @@ void Diagnostics::flushUnrestorable() {
   std::string List;
   for (const std::string &Fix : AllFixes)
     List += (List.empty() ? "skip(" : ", ") + Fix;
-  note(Location(), "these skip lines remove every unrestorable value above: " +
-                       List + ")");
+  note(Location(),
+       "these skip lines remove every unrestorable value above: " + List + ")");
 }
 
-bool parseTimeArguments(const std::vector<std::string> &Arguments, TimeSpec &Out,
-                        std::string &Error) {
+bool parseTimeArguments(const std::vector<std::string> &Arguments,
+                        TimeSpec &Out, std::string &Error) {
   if (Arguments.empty() || Arguments.size() > 2 || Arguments[0].empty() ||
       Arguments[0].find('=') != std::string::npos) {
-    Error = "a time names its clock, and optionally never=N: (millis) or (millis, never=0)";
+    Error = "a time names its clock, and optionally never=N: (millis) or "
+            "(millis, never=0)";
     return false;
   }
   Out.Clock = Arguments[0];
@@ -183,7 +187,8 @@ bool parseTimeArguments(const std::vector<std::string> &Arguments, TimeSpec &Out
     llvm::StringRef Never(Arguments[1]);
     Never = Never.trim();
     if (!Never.consume_front("never=")) {
-      Error = "unexpected '" + Arguments[1] + "' in a time annotation (expected never=N)";
+      Error = "unexpected '" + Arguments[1] +
+              "' in a time annotation (expected never=N)";
       return false;
     }
     Never = Never.trim();
@@ -288,11 +293,12 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
   D.FromSidecar = FromSidecar;
   D.Where = At(NameBegin);
   if (!directiveKindFromName(Name, D.Kind)) {
-    Diags.error(At(NameBegin),
-                "unknown symcr directive '" + Name +
-                    "' (expected checkpoint, skip, renamed, include, range, "
-                    "checkpoint_at, restore_at, store, clock, time, not_owner or "
-                    "restores_alone)");
+    Diags.error(
+        At(NameBegin),
+        "unknown symcr directive '" + Name +
+            "' (expected checkpoint, skip, renamed, include, range, "
+            "checkpoint_at, restore_at, store, clock, time, not_owner or "
+            "restores_alone)");
     return false;
   }
   SkipSpace();
@@ -383,8 +389,10 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
   }
   if (D.Kind == DirectiveKind::Clock &&
       (D.Arguments.empty() || D.Arguments.size() > 2)) {
-    Diags.error(D.Where, "clock(...) takes the clock's reading function, or a name and the "
-                         "function: clock(millis) or clock(ms, AP_HAL::millis)");
+    Diags.error(
+        D.Where,
+        "clock(...) takes the clock's reading function, or a name and the "
+        "function: clock(millis) or clock(ms, AP_HAL::millis)");
     return false;
   }
   if (D.Kind == DirectiveKind::Time) {
@@ -394,11 +402,13 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
     TimeSpec Spec;
     std::string Error;
     if (D.Arguments.size() < 2 || !parseTimeArguments(Rest, Spec, Error)) {
-      Diags.error(D.Where, Error.empty()
-                               ? "time(...) takes the member (Type::field) or typedef, the "
-                                 "clock, and optionally never=N: time(Vehicle::last_ms, "
-                                 "millis)"
-                               : Error);
+      Diags.error(
+          D.Where,
+          Error.empty()
+              ? "time(...) takes the member (Type::field) or typedef, the "
+                "clock, and optionally never=N: time(Vehicle::last_ms, "
+                "millis)"
+              : Error);
       return false;
     }
   }

@@ -25,25 +25,26 @@ class PragmaHandler;
 namespace symcr_gen {
 
 enum class DirectiveKind {
-  Checkpoint, ///< checkpoint(var, ... [, shallow])
-  Skip,       ///< skip(Type, Type::field, ...)
-  Renamed,    ///< renamed(Type::field | Type | var, old_name)
-  Include,    ///< include(Type::field, ...): selected for a shallow root
-  Range,      ///< range(Type::field, lo, hi): as SYMCR_RANGE(lo, hi)
+  Checkpoint,   ///< checkpoint(var, ... [, shallow])
+  Skip,         ///< skip(Type, Type::field, ...)
+  Renamed,      ///< renamed(Type::field | Type | var, old_name)
+  Include,      ///< include(Type::field, ...): selected for a shallow root
+  Range,        ///< range(Type::field, lo, hi): as SYMCR_RANGE(lo, hi)
   CheckpointAt, ///< checkpoint_at(function, entry|exit [, every N])
-  RestoreAt,    ///< restore_at(function, entry|exit [, on_failure=continue|stop] ...)
-  Store,        ///< store(path [, slots=N] [, slot_size=N] [, durability=...]
-                ///< [, fallback_depth=N [, confirm_after=N]])
-  Clock,        ///< clock([name,] function): a clock and its reading function
-  Time,         ///< time(Type::field | typedef, clock [, never=N]): a time of a clock
-  NotOwner,     ///< not_owner(Type::field, ...): as SYMCR_NOT_OWNER
+  RestoreAt, ///< restore_at(function, entry|exit [, on_failure=continue|stop]
+             ///< ...)
+  Store,     ///< store(path [, slots=N] [, slot_size=N] [, durability=...]
+             ///< [, fallback_depth=N [, confirm_after=N]])
+  Clock,     ///< clock([name,] function): a clock and its reading function
+  Time, ///< time(Type::field | typedef, clock [, never=N]): a time of a clock
+  NotOwner,      ///< not_owner(Type::field, ...): as SYMCR_NOT_OWNER
   RestoresAlone, ///< restores_alone(Type::field, ...): as SYMCR_RESTORES_ALONE
 };
 
-/// Parses SYMCR_TIME's text ("millis" or "millis, never=0xFFFFFFFF"); false with \p Error
-/// set when it is malformed.
-bool parseTimeArguments(const std::vector<std::string> &Arguments, TimeSpec &Out,
-                        std::string &Error);
+/// Parses SYMCR_TIME's text ("millis" or "millis, never=0xFFFFFFFF"); false
+/// with \p Error set when it is malformed.
+bool parseTimeArguments(const std::vector<std::string> &Arguments,
+                        TimeSpec &Out, std::string &Error);
 
 struct DirectiveArgument {
   /// "Copter::mission", whitespace removed outside quotes; the quotes of a

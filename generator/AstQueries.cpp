@@ -1,4 +1,5 @@
-//===- AstQueries.cpp - Small questions about Clang declarations ------------===//
+//===- AstQueries.cpp - Small questions about Clang declarations
+//------------===//
 //
 // See AstQueries.h.
 //
@@ -93,7 +94,8 @@ std::string vtableSymbol(ASTContext &Context, const CXXRecordDecl *Class) {
 const CXXMethodDecl *vtableKeyFunction(ASTContext &Context,
                                        const CXXRecordDecl *Class) {
   const CXXMethodDecl *Key = Context.getCurrentKeyFunction(Class);
-  // A class template's instantiation has its vtable emitted wherever it is used.
+  // A class template's instantiation has its vtable emitted wherever it is
+  // used.
   if (!Key || Key->getTemplateSpecializationKind() == TSK_ImplicitInstantiation)
     return nullptr;
   return Key;

@@ -1,4 +1,5 @@
-//===- AstQueries.h - Small questions about Clang declarations --------------===//
+//===- AstQueries.h - Small questions about Clang declarations
+//--------------===//
 //
 // What symcr's annotations on a declaration say, where a declaration is, and
 // whether a record is a standard library template: the questions every part
@@ -31,7 +32,8 @@ bool hasAnnotation(const clang::Decl *D, llvm::StringRef Name);
 std::vector<std::string> renamedFromAnnotations(const clang::Decl *D);
 
 /// \p Loc as a file, line and column for diagnostics.
-Location locationOf(const clang::ASTContext &Context, clang::SourceLocation Loc);
+Location locationOf(const clang::ASTContext &Context,
+                    clang::SourceLocation Loc);
 
 /// \p RD is a specialization of a template of namespace std; \p Name is the
 /// template's name.
@@ -45,8 +47,9 @@ std::string vtableSymbol(clang::ASTContext &Context,
 /// The member function whose definition emits \p Class's vtable (the Itanium
 /// ABI's key function: its first virtual function neither pure nor inline), or
 /// null when every translation unit that needs the vtable emits its own copy.
-const clang::CXXMethodDecl *vtableKeyFunction(clang::ASTContext &Context,
-                                              const clang::CXXRecordDecl *Class);
+const clang::CXXMethodDecl *
+vtableKeyFunction(clang::ASTContext &Context,
+                  const clang::CXXRecordDecl *Class);
 
 /// The index of the trailing "[N][M]" suffix of an array type name.
 std::size_t arraySuffixStart(const std::string &Name);

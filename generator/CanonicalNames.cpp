@@ -1,4 +1,5 @@
-//===- CanonicalNames.cpp - The names of types ------------------------------===//
+//===- CanonicalNames.cpp - The names of types
+//------------------------------===//
 //
 // See TypeWalker.h.
 //
@@ -29,9 +30,10 @@ using namespace clang;
 
 namespace symcr_gen {
 
-/// Old names of a root or type resolve like its new name: an unqualified old name is in the same
-/// scope (`SYMCR_RENAMED_FROM("g_log")` on `robot::g_journal` is `robot::g_log`), as for a
-/// field. A leading `::` names the global scope.
+/// Old names of a root or type resolve like its new name: an unqualified old
+/// name is in the same scope (`SYMCR_RENAMED_FROM("g_log")` on
+/// `robot::g_journal` is `robot::g_log`), as for a field. A leading `::` names
+/// the global scope.
 void qualifyLike(const std::string &Name, std::vector<std::string> &OldNames) {
   std::string::size_type Cut = Name.rfind("::");
   // The scope of the new name, not counting "::" inside template arguments.
@@ -300,8 +302,8 @@ std::string TypeWalker::canonicalName(QualType Type, const WalkContext &C) {
                             ED->enumerator_begin()->getName().str() + ")";
     }
     if (const auto *Parent = dyn_cast<RecordDecl>(ED->getDeclContext()))
-      return recordName(Parent, C) + "::" +
-             (Unnamed.empty() ? Named->getName().str() : Unnamed);
+      return recordName(Parent, C) +
+             "::" + (Unnamed.empty() ? Named->getName().str() : Unnamed);
     if (!Unnamed.empty())
       return NameIndex::qualifiedScope(ED) + Unnamed;
     return NameIndex::qualifiedDeclName(Named);
@@ -333,7 +335,8 @@ std::string TypeWalker::fingerprint(const TypeModel &Model) const {
       F += "[" + std::to_string(Field.RangeMin) + "," +
            std::to_string(Field.RangeMax) + "]";
     if (Field.Flags & symcr::kFieldClockTime)
-      F += "{time " + Field.Clock + " never " + std::to_string(Field.Never) + "}";
+      F += "{time " + Field.Clock + " never " + std::to_string(Field.Never) +
+           "}";
   }
   for (const auto &E : Model.Enumerators)
     F += "|" + E.first + "=" + std::to_string(E.second);

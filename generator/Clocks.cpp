@@ -1,9 +1,11 @@
-//===- Clocks.cpp - Clocks and the times of their members ------------------===//
+//===- Clocks.cpp - Clocks and the times of their members
+//------------------===//
 //
-// clock([name,] function) names a clock and the function that reads it; time(...) and
-// SYMCR_TIME(...) mark a member, or every member of a typedef'd type, a time of a clock
-// (generator/README.md, "Clocks"). Checkpoints record each clock's reading; a restore in
-// another process moves the times by the clock's advance.
+// clock([name,] function) names a clock and the function that reads it;
+// time(...) and SYMCR_TIME(...) mark a member, or every member of a typedef'd
+// type, a time of a clock (generator/README.md, "Clocks"). Checkpoints record
+// each clock's reading; a restore in another process moves the times by the
+// clock's advance.
 //
 //===----------------------------------------------------------------------===//
 
@@ -27,7 +29,8 @@ namespace symcr_gen {
 namespace {
 
 /// SYMCR_TIME(clock [, never=N]) on \p D, as "clock, never=N".
-bool timeAnnotation(const Decl *D, TimeSpec &Out, std::string &Error, bool &Found) {
+bool timeAnnotation(const Decl *D, TimeSpec &Out, std::string &Error,
+                    bool &Found) {
   Found = false;
   for (const std::string &A : symcrAnnotations(D)) {
     llvm::StringRef Text(A);
@@ -47,7 +50,8 @@ bool timeAnnotation(const Decl *D, TimeSpec &Out, std::string &Error, bool &Foun
 
 class ClockFunctionFinder : public RecursiveASTVisitor<ClockFunctionFinder> {
 public:
-  ClockFunctionFinder(const std::string &Name, std::vector<const FunctionDecl *> &Out)
+  ClockFunctionFinder(const std::string &Name,
+                      std::vector<const FunctionDecl *> &Out)
       : Name(Name), Out(Out) {}
   bool VisitFunctionDecl(FunctionDecl *FD) {
     if (NameIndex::qualifiedDeclName(FD) == Name)
@@ -74,8 +78,10 @@ std::string whyNotAClock(const FunctionDecl *FD) {
   if (FD->isDependentContext())
     return "it is a template";
   QualType Result = FD->getReturnType().getCanonicalType();
-  if (!Result->isIntegerType() || Result->isBooleanType() || Result->isEnumeralType())
-    return "it does not return an integer (a clock's reading is an integer count of its "
+  if (!Result->isIntegerType() || Result->isBooleanType() ||
+      Result->isEnumeralType())
+    return "it does not return an integer (a clock's reading is an integer "
+           "count of its "
            "unit)";
   return "";
 }
@@ -84,7 +90,8 @@ std::string whyNotAClock(const FunctionDecl *FD) {
 
 bool TypeWalker::fieldTime(const FieldDecl *FD, const TimeSpec *Directive,
                            FieldModel &Field, const WalkContext &F) {
-  // Every annotation that applies, first the member's own, then its type's typedefs.
+  // Every annotation that applies, first the member's own, then its type's
+  // typedefs.
   std::vector<std::pair<TimeSpec, std::string>> Specs;
   std::string Error;
   bool Found = false;
@@ -109,7 +116,8 @@ bool TypeWalker::fieldTime(const FieldDecl *FD, const TimeSpec *Directive,
       }
       if (Found)
         Specs.push_back({Spec, "SYMCR_TIME on typedef '" + TypedefName + "'"});
-      if (auto It = Select.TypedefTimes.find(TypedefName); It != Select.TypedefTimes.end())
+      if (auto It = Select.TypedefTimes.find(TypedefName);
+          It != Select.TypedefTimes.end())
         Specs.push_back({It->second, "time(" + TypedefName + ", ...)"});
       T = Typedef->desugar();
       continue;
@@ -129,23 +137,26 @@ bool TypeWalker::fieldTime(const FieldDecl *FD, const TimeSpec *Directive,
   for (const auto &Other : Specs)
     if (Other.first.Clock != Specs.front().first.Clock ||
         Other.first.Never != Specs.front().first.Never) {
-      Sink->error(F.Where, "'" + F.Path + "' is a time of clock '" + Specs.front().first.Clock +
-                               "' by " + Specs.front().second + " and of clock '" +
+      Sink->error(F.Where, "'" + F.Path + "' is a time of clock '" +
+                               Specs.front().first.Clock + "' by " +
+                               Specs.front().second + " and of clock '" +
                                Other.first.Clock + "' by " + Other.second +
                                " (or another never value): keep one");
       return false;
     }
-  QualType Element = Context.getBaseElementType(FD->getType()).getCanonicalType();
-  if (FD->isBitField() || !Element->isIntegerType() || Element->isBooleanType() ||
-      Element->isEnumeralType()) {
-    Sink->error(F.Where, "'" + F.Path + "' is marked a time of clock '" +
-                             Specs.front().first.Clock + "', but " +
-                             (FD->isBitField() ? std::string("it is a bit-field")
-                                               : "its type is '" +
-                                                     FD->getType().getAsString(*Policy) +
-                                                     "'") +
-                             ": a time is an integer count of its clock's unit (or an array "
-                             "of them)");
+  QualType Element =
+      Context.getBaseElementType(FD->getType()).getCanonicalType();
+  if (FD->isBitField() || !Element->isIntegerType() ||
+      Element->isBooleanType() || Element->isEnumeralType()) {
+    Sink->error(
+        F.Where,
+        "'" + F.Path + "' is marked a time of clock '" +
+            Specs.front().first.Clock + "', but " +
+            (FD->isBitField()
+                 ? std::string("it is a bit-field")
+                 : "its type is '" + FD->getType().getAsString(*Policy) + "'") +
+            ": a time is an integer count of its clock's unit (or an array "
+            "of them)");
     return false;
   }
   Field.Flags |= symcr::kFieldClockTime;
@@ -155,10 +166,12 @@ bool TypeWalker::fieldTime(const FieldDecl *FD, const TimeSpec *Directive,
   return true;
 }
 
-void declareClock(const Directive &D, ProgramModel &Program, Diagnostics &Diags) {
+void declareClock(const Directive &D, ProgramModel &Program,
+                  Diagnostics &Diags) {
   const std::string Function =
       llvm::StringRef(D.Arguments.back().Text).ltrim(':').str();
-  // clock(millis) names the clock after its function; clock(ms, AP_HAL::millis) names it.
+  // clock(millis) names the clock after its function; clock(ms, AP_HAL::millis)
+  // names it.
   const std::string Name = D.Arguments[0].Text;
   auto It = std::find_if(Program.Clocks.begin(), Program.Clocks.end(),
                          [&](const ClockModel &C) { return C.Name == Name; });
@@ -167,16 +180,16 @@ void declareClock(const Directive &D, ProgramModel &Program, Diagnostics &Diags)
     Clock.Name = Name;
     Clock.Function = Function;
     Clock.Where = D.Where;
-    auto At = std::lower_bound(Program.Clocks.begin(), Program.Clocks.end(), Name,
-                               [](const ClockModel &C, const std::string &N) {
-                                 return C.Name < N;
-                               });
+    auto At = std::lower_bound(
+        Program.Clocks.begin(), Program.Clocks.end(), Name,
+        [](const ClockModel &C, const std::string &N) { return C.Name < N; });
     Program.Clocks.insert(At, Clock);
     return;
   }
   if (It->Function != Function)
     Diags.error(D.Where, "clock '" + Name + "' is read by '" + It->Function +
-                             "' (declared at " + It->Where.str() + ") and by '" + Function +
+                             "' (declared at " + It->Where.str() +
+                             ") and by '" + Function +
                              "' here: a clock has one reading function");
 }
 
@@ -201,40 +214,47 @@ void resolveClocks(ASTContext &Context, unsigned TUIndex, ProgramModel &Program,
         break;
       }
       if (Why.empty())
-        Why = Reason + " (" + locationOf(Context, FD->getLocation()).str() + ")";
+        Why =
+            Reason + " (" + locationOf(Context, FD->getLocation()).str() + ")";
     }
     if (!Usable) {
-      Diags.error(Clock.Where, "'" + Clock.Function + "' cannot read clock '" + Clock.Name +
-                                   "': " + Why +
-                                   "; name a function that takes no arguments and returns "
-                                   "an integer");
+      Diags.error(Clock.Where,
+                  "'" + Clock.Function + "' cannot read clock '" + Clock.Name +
+                      "': " + Why +
+                      "; name a function that takes no arguments and returns "
+                      "an integer");
       Clock.HomeTU = -2; // diagnosed
       continue;
     }
     Clock.HomeTU = static_cast<int>(TUIndex);
-    // C has no scope operator; in C++ the global qualification keeps a wrapper's own names
-    // out of the lookup.
+    // C has no scope operator; in C++ the global qualification keeps a
+    // wrapper's own names out of the lookup.
     Clock.CallExpression = (Context.getLangOpts().CPlusPlus ? "::" : "") +
                            NameIndex::qualifiedDeclName(Usable) + "()";
     QualType Result = Usable->getReturnType().getCanonicalType();
-    Clock.Unsigned64 = Result->isUnsignedIntegerType() && Context.getTypeSize(Result) == 64;
+    Clock.Unsigned64 =
+        Result->isUnsignedIntegerType() && Context.getTypeSize(Result) == 64;
   }
 }
 
 void checkClocks(const ProgramModel &Program, Diagnostics &Diags) {
   for (const ClockModel &Clock : Program.Clocks)
     if (Clock.HomeTU == -1)
-      Diags.error(Clock.Where, "clock '" + Clock.Name + "': no source declares its reading "
-                               "function '" + Clock.Function + "'");
+      Diags.error(Clock.Where, "clock '" + Clock.Name +
+                                   "': no source declares its reading "
+                                   "function '" +
+                                   Clock.Function + "'");
   for (const auto &Use : Program.ClockUses) {
-    bool Declared = std::any_of(Program.Clocks.begin(), Program.Clocks.end(),
-                                [&](const ClockModel &C) { return C.Name == Use.first; });
+    bool Declared =
+        std::any_of(Program.Clocks.begin(), Program.Clocks.end(),
+                    [&](const ClockModel &C) { return C.Name == Use.first; });
     if (!Declared)
-      Diags.error(Use.second, "time of an undeclared clock '" + Use.first +
-                                  "': name its reading function once with 'clock(" +
-                                  Use.first + ")' (or clock(" + Use.first +
-                                  ", function)) in the annotation file, '#pragma symcr "
-                                  "clock(...)' or SYMCR_CLOCK(...)");
+      Diags.error(Use.second,
+                  "time of an undeclared clock '" + Use.first +
+                      "': name its reading function once with 'clock(" +
+                      Use.first + ")' (or clock(" + Use.first +
+                      ", function)) in the annotation file, '#pragma symcr "
+                      "clock(...)' or SYMCR_CLOCK(...)");
   }
 }
 

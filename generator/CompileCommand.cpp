@@ -1,4 +1,5 @@
-//===- CompileCommand.cpp - compile commands written for g++, read by Clang ===//
+//===- CompileCommand.cpp - compile commands written for g++, read by Clang
+//===//
 
 #include "CompileCommand.h"
 
@@ -48,16 +49,20 @@ std::string standardFromMacros(llvm::StringRef Macros, bool IsC) {
   };
   if (IsC) {
     long V = Value("__STDC_VERSION__");
-    const char *Year = V >= 202000 ? "2x" : V >= 201710 ? "17" : V >= 201112 ? "11"
-                       : V >= 199901                    ? "99"
-                                                        : "89";
+    const char *Year = V >= 202000   ? "2x"
+                       : V >= 201710 ? "17"
+                       : V >= 201112 ? "11"
+                       : V >= 199901 ? "99"
+                                     : "89";
     return std::string(Gnu ? "gnu" : "c") + Year;
   }
   long V = Value("__cplusplus");
-  const char *Year = V > 202002 ? "2b" : V >= 202002 ? "20" : V >= 201703 ? "17"
-                     : V >= 201402                   ? "14"
-                     : V >= 201103                   ? "11"
-                                                     : "98";
+  const char *Year = V > 202002    ? "2b"
+                     : V >= 202002 ? "20"
+                     : V >= 201703 ? "17"
+                     : V >= 201402 ? "14"
+                     : V >= 201103 ? "11"
+                                   : "98";
   return std::string(Gnu ? "gnu++" : "c++") + Year;
 }
 
@@ -74,7 +79,8 @@ llvm::Optional<std::string> runCompiler(llvm::StringRef Compiler,
   std::vector<llvm::StringRef> Argv{*Program};
   Argv.insert(Argv.end(), Arguments.begin(), Arguments.end());
   llvm::Optional<llvm::StringRef> Redirects[] = {
-      llvm::StringRef(""), Stderr ? llvm::StringRef("") : llvm::StringRef(Output),
+      llvm::StringRef(""),
+      Stderr ? llvm::StringRef("") : llvm::StringRef(Output),
       Stderr ? llvm::StringRef(Output) : llvm::StringRef("")};
   llvm::Optional<std::string> Result;
   if (llvm::sys::ExecuteAndWait(*Program, Argv, llvm::None, Redirects,
@@ -171,8 +177,8 @@ std::string CompileCommandAdapter::defaultStandard(const std::string &Compiler,
       return It->second;
   }
   std::string Result;
-  if (llvm::Optional<std::string> Macros =
-          runCompiler(Compiler, {"-dM", "-E", "-x", IsC ? "c" : "c++", "/dev/null"}))
+  if (llvm::Optional<std::string> Macros = runCompiler(
+          Compiler, {"-dM", "-E", "-x", IsC ? "c" : "c++", "/dev/null"}))
     Result = standardFromMacros(*Macros, IsC);
   std::lock_guard<std::mutex> Guard(Lock);
   Defaults[Key] = Result;
@@ -182,33 +188,37 @@ std::string CompileCommandAdapter::defaultStandard(const std::string &Compiler,
 namespace {
 /// Programs a build puts in front of the compiler, which run it.
 bool isCompilerLauncher(llvm::StringRef Name) {
-  return Name == "symcr-c++" || Name == "symcr-cc" || Name == "ccache" || Name == "sccache" ||
-         Name == "distcc";
+  return Name == "symcr-c++" || Name == "symcr-cc" || Name == "ccache" ||
+         Name == "sccache" || Name == "distcc";
 }
 } // namespace
 
 CommandLineArguments
 CompileCommandAdapter::adapt(const CommandLineArguments &Command,
                              llvm::StringRef File) {
-  // A launcher in front of the compiler ("ccache g++"; "symcr-c++ g++" in a database written by
-  // a build through symcr's wrapper) is not the compiler, and the wrapper's options are not the
-  // compiler's. The flags the tooling inferred from the launcher's name (--driver-mode=, a
-  // target) follow the launcher: they stay, after the compiler.
+  // A launcher in front of the compiler ("ccache g++"; "symcr-c++ g++" in a
+  // database written by a build through symcr's wrapper) is not the compiler,
+  // and the wrapper's options are not the compiler's. The flags the tooling
+  // inferred from the launcher's name (--driver-mode=, a target) follow the
+  // launcher: they stay, after the compiler.
   CommandLineArguments Args(Command);
-  while (Args.size() > 1 && isCompilerLauncher(llvm::sys::path::filename(Args[0]))) {
+  while (Args.size() > 1 &&
+         isCompilerLauncher(llvm::sys::path::filename(Args[0]))) {
     std::size_t Compiler = 1;
     while (Compiler + 1 < Args.size() &&
            (llvm::StringRef(Args[Compiler]).startswith("--driver-mode=") ||
             llvm::StringRef(Args[Compiler]).startswith("--target=")))
       ++Compiler;
     CommandLineArguments Unwrapped{Args[Compiler]};
-    Unwrapped.insert(Unwrapped.end(), Args.begin() + 1, Args.begin() + Compiler);
+    Unwrapped.insert(Unwrapped.end(), Args.begin() + 1,
+                     Args.begin() + Compiler);
     Unwrapped.insert(Unwrapped.end(), Args.begin() + Compiler + 1, Args.end());
     Args = std::move(Unwrapped);
   }
   Args.erase(std::remove_if(Args.begin() + (Args.empty() ? 0 : 1), Args.end(),
                             [](const std::string &Arg) {
-                              return llvm::StringRef(Arg).startswith("--symcr-");
+                              return llvm::StringRef(Arg).startswith(
+                                  "--symcr-");
                             }),
              Args.end());
   if (Args.empty())

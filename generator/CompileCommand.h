@@ -25,11 +25,13 @@ namespace symcr_gen {
 
 class CompileCommandAdapter {
 public:
-  /// The adjusted command for \p File: a launcher in front of the compiler (ccache, symcr-c++)
-  /// and the wrapper's --symcr-* options dropped, flags translated or dropped, and the
-  /// compiler's default -std added when the command has none.
+  /// The adjusted command for \p File: a launcher in front of the compiler
+  /// (ccache, symcr-c++) and the wrapper's --symcr-* options dropped, flags
+  /// translated or dropped, and the compiler's default -std added when the
+  /// command has none.
   clang::tooling::CommandLineArguments
-  adapt(const clang::tooling::CommandLineArguments &Command, llvm::StringRef File);
+  adapt(const clang::tooling::CommandLineArguments &Command,
+        llvm::StringRef File);
 
   /// Flags dropped because Clang does not know them, each once, for a warning.
   std::set<std::string> droppedFlags() const;
@@ -46,7 +48,8 @@ private:
   /// directories as -isystem. Empty for a native or a Clang compiler.
   /// Remembered per compiler and -m flags.
   std::vector<std::string>
-  crossCompilerFlags(const clang::tooling::CommandLineArguments &Args, bool IsC);
+  crossCompilerFlags(const clang::tooling::CommandLineArguments &Args,
+                     bool IsC);
 
   mutable std::mutex Lock;
   std::set<std::string> Dropped;

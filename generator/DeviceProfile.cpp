@@ -1,4 +1,5 @@
-//===- DeviceProfile.cpp - What the device profile's runtime can hold ------===//
+//===- DeviceProfile.cpp - What the device profile's runtime can hold
+//------===//
 
 #include "DeviceProfile.h"
 
@@ -49,12 +50,14 @@ public:
     for (const RootModel &Root : Program.Roots)
       visit(Root.Type, Root.Name, Root.Where);
     for (const PointModel &Point : Program.Points) {
-      Diags.error(Point.Where,
-                  "'" + Point.Spelling + "': program points save into and "
-                  "restore from a checkpoint store, which the device profile "
-                  "has no files for; call symcr::device::Ring's save() and "
-                  "restore_latest() from the program instead, or build with "
-                  "the host profile");
+      Diags.error(
+          Point.Where,
+          "'" + Point.Spelling +
+              "': program points save into and "
+              "restore from a checkpoint store, which the device profile "
+              "has no files for; call symcr::device::Ring's save() and "
+              "restore_latest() from the program instead, or build with "
+              "the host profile");
       Clean = false;
     }
     return Clean;
@@ -73,7 +76,8 @@ private:
         Diags.error(Where,
                     "'" + Path + "' is a " + Type.Name +
                         ", which the device profile cannot hold (it has no "
-                        "heap and no standard containers): make it " + Fix +
+                        "heap and no standard containers): make it " +
+                        Fix +
                         ", or keep it out of checkpoints with SYMCR_SKIP, or "
                         "build with the host profile");
       Clean = false;
@@ -84,8 +88,9 @@ private:
     if (Type.Kind == symcr::Kind::Struct)
       for (const FieldModel &Field : Type.Fields)
         visit(Field.Type,
-              Path + ((Field.Flags & symcr::kFieldBase) ? ".(" + Field.Name + ")"
-                                                        : "." + Field.Name),
+              Path + ((Field.Flags & symcr::kFieldBase)
+                          ? ".(" + Field.Name + ")"
+                          : "." + Field.Name),
               Where);
   }
 

@@ -1,4 +1,5 @@
-//===- DeviceProfile.h - What the device profile's runtime can hold --------===//
+//===- DeviceProfile.h - What the device profile's runtime can hold
+//--------===//
 //
 // The device profile (runtime/device, symcr_add_checkpointing(... PROFILE
 // device)) runs without a heap or standard containers. It holds bool, integers

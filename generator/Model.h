@@ -44,7 +44,8 @@ struct MemberRef {
 /// header seen twice) is printed once. Thread-safe: TUs are parsed in parallel.
 class Diagnostics {
 public:
-  /// A quiet instance prints nothing: it collects what a tentative walk would have said.
+  /// A quiet instance prints nothing: it collects what a tentative walk would
+  /// have said.
   explicit Diagnostics(bool Quiet = false) : Quiet(Quiet) {}
   /// Nothing was reported (errors, held-back leaves).
   bool clean() const { return Errors == 0 && Groups.empty() && Fixes.empty(); }
@@ -89,7 +90,8 @@ private:
   };
   std::mutex Lock;
   bool Quiet = false;
-  std::vector<std::string> Collected; ///< what a quiet instance would have printed
+  std::vector<std::string>
+      Collected; ///< what a quiet instance would have printed
   std::map<std::string, bool> Seen;
   unsigned Errors = 0;
   std::map<std::string, Group> Groups; ///< by the member's skip hint
@@ -119,7 +121,8 @@ struct FieldModel {
   std::vector<std::string> RenamedFrom;
   double RangeMin = 0;
   double RangeMax = 0;
-  /// kFieldClockTime: the clock whose times the member holds, and its "no time yet" value.
+  /// kFieldClockTime: the clock whose times the member holds, and its "no time
+  /// yet" value.
   std::string Clock;
   std::int64_t Never = 0;
   /// A state flag declared to describe only state that is restored with it
@@ -146,8 +149,9 @@ struct TypeModel {
   std::vector<std::uint32_t> Alternatives;
   std::uint8_t ContainerKind = 0;
   OpsKind Ops = OpsKind::None;
-  /// Restore may have to create the type (a pointee, a container element): the wrapper emits
-  /// a Lifecycle when hasLifecycle(), and the type is flagged kTypeCreatable then.
+  /// Restore may have to create the type (a pointee, a container element): the
+  /// wrapper emits a Lifecycle when hasLifecycle(), and the type is flagged
+  /// kTypeCreatable then.
   bool NeedsLifecycle = false;
   /// A C++ (or C) spelling usable in the home TU, empty if the type cannot be
   /// named there (unnamed or function-local types).
@@ -166,23 +170,27 @@ struct TypeModel {
   bool HasMigrate = false;
   /// Index of the TU whose wrapper defines this type's ops and layout checks.
   unsigned HomeTU = 0;
-  /// Names the home wrapper's code for the type (ops_<Symbol>, lifecycle_<Symbol>, ...): see
-  /// symbolOf().
+  /// Names the home wrapper's code for the type (ops_<Symbol>,
+  /// lifecycle_<Symbol>, ...): see symbolOf().
   std::string Symbol;
-  /// A class restore may create as a heap object's dynamic type (kTypeDynamicType): its
-  /// vtable's mangled name and the index of its address point, for Lifecycle::vtable.
+  /// A class restore may create as a heap object's dynamic type
+  /// (kTypeDynamicType): its vtable's mangled name and the index of its address
+  /// point, for Lifecycle::vtable.
   std::string VtableSymbol;
   unsigned VtableAddressPoint = 0;
-  /// The function whose definition emits the vtable (the Itanium ABI's key function), when only
-  /// the source defining it does: the class is creatable only if a parsed source defines it.
+  /// The function whose definition emits the vtable (the Itanium ABI's key
+  /// function), when only the source defining it does: the class is creatable
+  /// only if a parsed source defines it.
   std::string VtableKeyFunction;
-  /// A polymorphic class a pointer points to: the classes (itself or derived) saving can
-  /// recognise as a heap object's dynamic type, and those it cannot, with why.
+  /// A polymorphic class a pointer points to: the classes (itself or derived)
+  /// saving can recognise as a heap object's dynamic type, and those it cannot,
+  /// with why.
   std::vector<std::uint32_t> DynamicTypes;
   std::vector<std::string> NotDynamicTypes;
-  std::string DynamicTypesReachedBy; ///< the first such pointer's path, for the note
-  Location DynamicTypesReachedAt;    ///< that pointer's declaration
-  std::string DynamicTypesSkipHint;  ///< and its skip line, "Ahrs::_view"
+  std::string
+      DynamicTypesReachedBy; ///< the first such pointer's path, for the note
+  Location DynamicTypesReachedAt;   ///< that pointer's declaration
+  std::string DynamicTypesSkipHint; ///< and its skip line, "Ahrs::_view"
 
   /// A Lifecycle is emitted only for types the home TU can name and construct
   /// with `new T()` (or calloc in C).
@@ -203,12 +211,14 @@ struct TypeModel {
   };
   /// Members left out of this type and why ("raw", "SYMCR_SKIP"), for --report.
   std::vector<LeftMember> Skipped;
-  /// Members the new build re-creates by itself, never restored and needing no annotation
-  /// (const and reference members, function and member pointers): their names go into the
-  /// schema (TypeInfo::left_to_new_build), and why, into --report.
+  /// Members the new build re-creates by itself, never restored and needing no
+  /// annotation (const and reference members, function and member pointers):
+  /// their names go into the schema (TypeInfo::left_to_new_build), and why,
+  /// into --report.
   std::vector<LeftMember> LeftToNewBuild;
-  /// Members whose values are not saved but which a pointer may target (kTypeReferenceMembers:
-  /// a shallow root's unselected members, and the parts of them on the way to a pointee).
+  /// Members whose values are not saved but which a pointer may target
+  /// (kTypeReferenceMembers: a shallow root's unselected members, and the parts
+  /// of them on the way to a pointee).
   std::vector<FieldModel> ReferenceMembers;
 
   std::vector<std::string> leftToNewBuildNames() const {
@@ -219,8 +229,8 @@ struct TypeModel {
   }
 };
 
-/// A boolean or enum member: a "state flag", which often says what state other members of
-/// its class hold (started, initialised, a mode).
+/// A boolean or enum member: a "state flag", which often says what state other
+/// members of its class hold (started, initialised, a mode).
 inline bool isStateFlag(const TypeModel &Type) {
   return Type.Kind == symcr::Kind::Bool || Type.Kind == symcr::Kind::Enum;
 }
@@ -259,9 +269,9 @@ struct PointStoreModel {
   unsigned Slots = 0;    ///< 0: the runtime's default
   unsigned SlotSize = 0; ///< 0: the runtime's default
   bool Fdatasync = false;
-  unsigned FallbackDepth = 0; ///< crash-loop fallback; 0: off
+  unsigned FallbackDepth = 0;   ///< crash-loop fallback; 0: off
   bool FallbackDefault = false; ///< FallbackDepth is the default, not given
-  unsigned ConfirmAfter = 0;  ///< checkpoints saved after a restore confirm it
+  unsigned ConfirmAfter = 0; ///< checkpoints saved after a restore confirm it
   std::string Spelling;
   Location Where; ///< invalid when no store directive was given
 };
@@ -278,12 +288,13 @@ struct ClockModel {
   std::string Name;     ///< as time(...) and SYMCR_TIME name it; in the schema
   std::string Function; ///< as written, "AP_HAL::millis" (no leading ::)
   Location Where;       ///< of the first directive naming it
-  /// The first TU that declares the function: its wrapper defines the reading thunk
-  /// `symcr_gen_clock_<index>`, which calls CallExpression.
+  /// The first TU that declares the function: its wrapper defines the reading
+  /// thunk `symcr_gen_clock_<index>`, which calls CallExpression.
   int HomeTU = -1;
   std::string CallExpression;
   std::string Symbol; ///< names symcr_gen_clock_<Symbol>: see symbolOf()
-  /// Its function returns an unsigned 64-bit count: the thunk converts it explicitly.
+  /// Its function returns an unsigned 64-bit count: the thunk converts it
+  /// explicitly.
   bool Unsigned64 = false;
 };
 
@@ -292,7 +303,7 @@ struct SourceEdit {
   unsigned Offset = 0; ///< in the source's text
   unsigned Length = 0; ///< replaced characters (0: an insertion)
   std::string Text;
-  unsigned Point = 0;  ///< the PointModel an insertion serves (else unused)
+  unsigned Point = 0; ///< the PointModel an insertion serves (else unused)
   bool IsPoint = false;
 };
 
@@ -349,24 +360,29 @@ struct ProgramModel {
   std::vector<PointModel> Points;
   PointStoreModel PointStore;
   std::vector<PreviousPlanModel> PreviousPlans;
-  /// Vtables (mangled names) of classes with a key function some parsed source defines.
+  /// Vtables (mangled names) of classes with a key function some parsed source
+  /// defines.
   std::set<std::string> EmittedVtables;
-  /// Clocks, in the byte order of their names: a clock's index in the schema is its position.
+  /// Clocks, in the byte order of their names: a clock's index in the schema is
+  /// its position.
   std::vector<ClockModel> Clocks;
-  /// Time members by clock name: where the first one is, for "no such clock" diagnostics.
+  /// Time members by clock name: where the first one is, for "no such clock"
+  /// diagnostics.
   std::map<std::string, Location> ClockUses;
 };
 
-/// The suffix of the names of generated code for the type, root or clock at \p Index: the index
-/// itself when one run generates the whole program, or "<unit>_<index>" when each translation
-/// unit is generated on its own (--unit), so that the wrappers of separately generated units
-/// never define the same name and the schema source of their merged parts can name each one.
+/// The suffix of the names of generated code for the type, root or clock at \p
+/// Index: the index itself when one run generates the whole program, or
+/// "<unit>_<index>" when each translation unit is generated on its own
+/// (--unit), so that the wrappers of separately generated units never define
+/// the same name and the schema source of their merged parts can name each one.
 inline std::string symbolOf(const std::string &Symbol, std::size_t Index) {
   return Symbol.empty() ? std::to_string(Index) : Symbol;
 }
 
 inline bool TypeModel::hasValidate(const ProgramModel &Program) const {
-  return HasValidate && !Spelling.empty() && !Program.TranslationUnits[HomeTU].IsC;
+  return HasValidate && !Spelling.empty() &&
+         !Program.TranslationUnits[HomeTU].IsC;
 }
 
 } // namespace symcr_gen

@@ -1,8 +1,8 @@
 //===- ModelParts.cpp - One translation unit's model, written and merged --===//
 //
-// See ModelParts.h. The part is JSON (LLVM's reader and writer): it is written and read by
-// this tool only, and a reader that finds a field missing or of another kind reports the part
-// as unreadable instead of guessing.
+// See ModelParts.h. The part is JSON (LLVM's reader and writer): it is written
+// and read by this tool only, and a reader that finds a field missing or of
+// another kind reports the part as unreadable instead of guessing.
 //
 //===----------------------------------------------------------------------===//
 #include "ModelParts.h"
@@ -16,7 +16,8 @@ namespace symcr_gen {
 namespace json = llvm::json;
 namespace {
 
-/// Bumped whenever the part's fields change: a part of another format is refused (rebuild).
+/// Bumped whenever the part's fields change: a part of another format is
+/// refused (rebuild).
 constexpr std::int64_t kPartFormat = 1;
 
 json::Array strings(const std::vector<std::string> &List) {
@@ -34,7 +35,8 @@ json::Array indices(const std::vector<std::uint32_t> &List) {
 }
 
 json::Value location(const Location &Where) {
-  return json::Object{{"file", Where.File}, {"line", static_cast<std::int64_t>(Where.Line)},
+  return json::Object{{"file", Where.File},
+                      {"line", static_cast<std::int64_t>(Where.Line)},
                       {"column", static_cast<std::int64_t>(Where.Column)}};
 }
 
@@ -67,41 +69,44 @@ json::Value type(const TypeModel &T, const std::string &Key) {
   json::Array Left;
   for (const TypeModel::LeftMember &L : T.LeftToNewBuild)
     Left.push_back(json::Array{L.Name, L.Why});
-  return json::Object{{"key", Key},
-                      {"name", T.Name},
-                      {"kind", static_cast<std::int64_t>(T.Kind)},
-                      {"flags", static_cast<std::int64_t>(T.Flags)},
-                      {"size", static_cast<std::int64_t>(T.Size)},
-                      {"align", static_cast<std::int64_t>(T.Align)},
-                      {"fields", fields(T.Fields)},
-                      {"enumerators", std::move(Enumerators)},
-                      {"element", static_cast<std::int64_t>(T.Element)},
-                      {"count", static_cast<std::int64_t>(T.Count)},
-                      {"alternatives", indices(T.Alternatives)},
-                      {"container_kind", static_cast<std::int64_t>(T.ContainerKind)},
-                      {"ops", static_cast<std::int64_t>(T.Ops)},
-                      {"needs_lifecycle", T.NeedsLifecycle},
-                      {"spelling", T.Spelling},
-                      {"accessible", T.Accessible},
-                      {"renamed_from", strings(T.RenamedFrom)},
-                      {"has_validate", T.HasValidate},
-                      {"has_migrate", T.HasMigrate},
-                      {"symbol", T.Symbol},
-                      {"vtable_symbol", T.VtableSymbol},
-                      {"vtable_address_point", static_cast<std::int64_t>(T.VtableAddressPoint)},
-                      {"dynamic_types", indices(T.DynamicTypes)},
-                      {"fingerprint", T.Fingerprint},
-                      {"first_seen_in", T.FirstSeenIn},
-                      {"left_to_new_build", std::move(Left)},
-                      {"reference_members", fields(T.ReferenceMembers)}};
+  return json::Object{
+      {"key", Key},
+      {"name", T.Name},
+      {"kind", static_cast<std::int64_t>(T.Kind)},
+      {"flags", static_cast<std::int64_t>(T.Flags)},
+      {"size", static_cast<std::int64_t>(T.Size)},
+      {"align", static_cast<std::int64_t>(T.Align)},
+      {"fields", fields(T.Fields)},
+      {"enumerators", std::move(Enumerators)},
+      {"element", static_cast<std::int64_t>(T.Element)},
+      {"count", static_cast<std::int64_t>(T.Count)},
+      {"alternatives", indices(T.Alternatives)},
+      {"container_kind", static_cast<std::int64_t>(T.ContainerKind)},
+      {"ops", static_cast<std::int64_t>(T.Ops)},
+      {"needs_lifecycle", T.NeedsLifecycle},
+      {"spelling", T.Spelling},
+      {"accessible", T.Accessible},
+      {"renamed_from", strings(T.RenamedFrom)},
+      {"has_validate", T.HasValidate},
+      {"has_migrate", T.HasMigrate},
+      {"symbol", T.Symbol},
+      {"vtable_symbol", T.VtableSymbol},
+      {"vtable_address_point", static_cast<std::int64_t>(T.VtableAddressPoint)},
+      {"dynamic_types", indices(T.DynamicTypes)},
+      {"fingerprint", T.Fingerprint},
+      {"first_seen_in", T.FirstSeenIn},
+      {"left_to_new_build", std::move(Left)},
+      {"reference_members", fields(T.ReferenceMembers)}};
 }
 
-/// Reads what writeModelPart() wrote; any field missing or of another kind fails the read.
+/// Reads what writeModelPart() wrote; any field missing or of another kind
+/// fails the read.
 class PartReader {
 public:
   explicit PartReader(std::string &Error) : Error(Error) {}
 
-  bool program(const json::Value &Value, ProgramModel &P, std::vector<std::string> &Keys) {
+  bool program(const json::Value &Value, ProgramModel &P,
+               std::vector<std::string> &Keys) {
     const json::Object *O = object(Value, "part");
     if (!O)
       return false;
@@ -110,7 +115,8 @@ public:
     if (!integer(*O, "format", Format))
       return false;
     if (Format != kPartFormat)
-      return fail("written by another version of symcr-gen (rebuild the object)");
+      return fail(
+          "written by another version of symcr-gen (rebuild the object)");
     if (!string(*O, "program", P.Name) || !integer(*O, "profile", Profile))
       return false;
     P.Profile = Profile ? RuntimeProfile::Device : RuntimeProfile::Host;
@@ -135,9 +141,10 @@ public:
       const json::Object *R = object(V, "root");
       RootModel M;
       if (!R || !string(*R, "name", M.Name) || !u32(*R, "type", M.Type) ||
-          !u32(*R, "flags", M.Flags) || !strings(*R, "renamed_from", M.RenamedFrom) ||
-          !unsignedValue(*R, "home", M.HomeTU) || !string(*R, "symbol", M.Symbol) ||
-          !where(*R, M.Where))
+          !u32(*R, "flags", M.Flags) ||
+          !strings(*R, "renamed_from", M.RenamedFrom) ||
+          !unsignedValue(*R, "home", M.HomeTU) ||
+          !string(*R, "symbol", M.Symbol) || !where(*R, M.Where))
         return false;
       P.Roots.push_back(std::move(M));
     }
@@ -145,9 +152,11 @@ public:
       const json::Object *C = object(V, "clock");
       ClockModel M;
       std::int64_t Home = 0;
-      if (!C || !string(*C, "name", M.Name) || !string(*C, "function", M.Function) ||
-          !integer(*C, "home", Home) || !string(*C, "call", M.CallExpression) ||
-          !boolean(*C, "unsigned64", M.Unsigned64) || !string(*C, "symbol", M.Symbol))
+      if (!C || !string(*C, "name", M.Name) ||
+          !string(*C, "function", M.Function) || !integer(*C, "home", Home) ||
+          !string(*C, "call", M.CallExpression) ||
+          !boolean(*C, "unsigned64", M.Unsigned64) ||
+          !string(*C, "symbol", M.Symbol))
         return false;
       M.HomeTU = static_cast<int>(Home);
       P.Clocks.push_back(std::move(M));
@@ -156,9 +165,12 @@ public:
       const json::Object *Pt = object(V, "point");
       PointModel M;
       if (!Pt || !boolean(*Pt, "restore", M.Restore) ||
-          !string(*Pt, "function", M.Function) || !boolean(*Pt, "exit", M.AtExit) ||
-          !unsignedValue(*Pt, "every", M.Every) || !boolean(*Pt, "stop", M.StopOnFailure) ||
-          !boolean(*Pt, "strict", M.Strict) || !string(*Pt, "spelling", M.Spelling))
+          !string(*Pt, "function", M.Function) ||
+          !boolean(*Pt, "exit", M.AtExit) ||
+          !unsignedValue(*Pt, "every", M.Every) ||
+          !boolean(*Pt, "stop", M.StopOnFailure) ||
+          !boolean(*Pt, "strict", M.Strict) ||
+          !string(*Pt, "spelling", M.Spelling))
         return false;
       P.Points.push_back(std::move(M));
     }
@@ -166,7 +178,8 @@ public:
     if (!S)
       return fail("no store");
     PointStoreModel &Store = P.PointStore;
-    return string(*S, "path", Store.Path) && unsignedValue(*S, "slots", Store.Slots) &&
+    return string(*S, "path", Store.Path) &&
+           unsignedValue(*S, "slots", Store.Slots) &&
            unsignedValue(*S, "slot_size", Store.SlotSize) &&
            boolean(*S, "fdatasync", Store.Fdatasync) &&
            unsignedValue(*S, "fallback_depth", Store.FallbackDepth) &&
@@ -177,16 +190,21 @@ public:
 private:
   bool type(const json::Object &T, TypeModel &M, std::string &Key) {
     std::int64_t Kind = 0, Ops = 0, ContainerKind = 0;
-    if (!string(T, "key", Key) || !string(T, "name", M.Name) || !integer(T, "kind", Kind) ||
-        !u32(T, "flags", M.Flags) || !u64(T, "size", M.Size) || !u64(T, "align", M.Align) ||
+    if (!string(T, "key", Key) || !string(T, "name", M.Name) ||
+        !integer(T, "kind", Kind) || !u32(T, "flags", M.Flags) ||
+        !u64(T, "size", M.Size) || !u64(T, "align", M.Align) ||
         !fields(T, "fields", M.Fields) || !u32(T, "element", M.Element) ||
-        !u64(T, "count", M.Count) || !indices(T, "alternatives", M.Alternatives) ||
-        !integer(T, "container_kind", ContainerKind) || !integer(T, "ops", Ops) ||
+        !u64(T, "count", M.Count) ||
+        !indices(T, "alternatives", M.Alternatives) ||
+        !integer(T, "container_kind", ContainerKind) ||
+        !integer(T, "ops", Ops) ||
         !boolean(T, "needs_lifecycle", M.NeedsLifecycle) ||
-        !string(T, "spelling", M.Spelling) || !boolean(T, "accessible", M.Accessible) ||
+        !string(T, "spelling", M.Spelling) ||
+        !boolean(T, "accessible", M.Accessible) ||
         !strings(T, "renamed_from", M.RenamedFrom) ||
         !boolean(T, "has_validate", M.HasValidate) ||
-        !boolean(T, "has_migrate", M.HasMigrate) || !string(T, "symbol", M.Symbol) ||
+        !boolean(T, "has_migrate", M.HasMigrate) ||
+        !string(T, "symbol", M.Symbol) ||
         !string(T, "vtable_symbol", M.VtableSymbol) ||
         !unsignedValue(T, "vtable_address_point", M.VtableAddressPoint) ||
         !indices(T, "dynamic_types", M.DynamicTypes) ||
@@ -203,13 +221,16 @@ private:
       return fail("a type without enumerators or left members");
     for (const json::Value &E : *Enumerators) {
       const json::Array *Pair = E.getAsArray();
-      if (!Pair || Pair->size() != 2 || !(*Pair)[0].getAsString() || !(*Pair)[1].getAsInteger())
+      if (!Pair || Pair->size() != 2 || !(*Pair)[0].getAsString() ||
+          !(*Pair)[1].getAsInteger())
         return fail("a malformed enumerator");
-      M.Enumerators.emplace_back((*Pair)[0].getAsString()->str(), *(*Pair)[1].getAsInteger());
+      M.Enumerators.emplace_back((*Pair)[0].getAsString()->str(),
+                                 *(*Pair)[1].getAsInteger());
     }
     for (const json::Value &E : *Left) {
       const json::Array *Pair = E.getAsArray();
-      if (!Pair || Pair->size() != 2 || !(*Pair)[0].getAsString() || !(*Pair)[1].getAsString())
+      if (!Pair || Pair->size() != 2 || !(*Pair)[0].getAsString() ||
+          !(*Pair)[1].getAsString())
         return fail("a malformed left member");
       M.LeftToNewBuild.push_back(
           {(*Pair)[0].getAsString()->str(), (*Pair)[1].getAsString()->str()});
@@ -217,7 +238,8 @@ private:
     return true;
   }
 
-  bool fields(const json::Object &O, const char *Name, std::vector<FieldModel> &Out) {
+  bool fields(const json::Object &O, const char *Name,
+              std::vector<FieldModel> &Out) {
     const json::Array *List = O.getArray(Name);
     if (!List)
       return fail(std::string("no ") + Name);
@@ -225,11 +247,14 @@ private:
       const json::Object *F = object(V, "field");
       FieldModel M;
       if (!F || !string(*F, "name", M.Name) || !u32(*F, "type", M.Type) ||
-          !u64(*F, "offset", M.Offset) || !unsignedValue(*F, "bit_offset", M.BitOffset) ||
-          !unsignedValue(*F, "bit_width", M.BitWidth) || !u32(*F, "flags", M.Flags) ||
-          !strings(*F, "renamed_from", M.RenamedFrom) || !number(*F, "range_min", M.RangeMin) ||
-          !number(*F, "range_max", M.RangeMax) || !string(*F, "clock", M.Clock) ||
-          !integer(*F, "never", M.Never) ||
+          !u64(*F, "offset", M.Offset) ||
+          !unsignedValue(*F, "bit_offset", M.BitOffset) ||
+          !unsignedValue(*F, "bit_width", M.BitWidth) ||
+          !u32(*F, "flags", M.Flags) ||
+          !strings(*F, "renamed_from", M.RenamedFrom) ||
+          !number(*F, "range_min", M.RangeMin) ||
+          !number(*F, "range_max", M.RangeMax) ||
+          !string(*F, "clock", M.Clock) || !integer(*F, "never", M.Never) ||
           !string(*F, "offset_check_member", M.OffsetCheckMember))
         return false;
       Out.push_back(std::move(M));
@@ -239,7 +264,8 @@ private:
 
   bool where(const json::Object &O, Location &Out) {
     const json::Object *W = O.getObject("where");
-    return W && string(*W, "file", Out.File) && unsignedValue(*W, "line", Out.Line) &&
+    return W && string(*W, "file", Out.File) &&
+           unsignedValue(*W, "line", Out.Line) &&
            unsignedValue(*W, "column", Out.Column);
   }
   const json::Object *object(const json::Value &V, const char *What) {
@@ -264,7 +290,8 @@ private:
     Out = S->str();
     return true;
   }
-  bool strings(const json::Object &O, const char *Name, std::vector<std::string> &Out) {
+  bool strings(const json::Object &O, const char *Name,
+               std::vector<std::string> &Out) {
     const json::Array *A = O.getArray(Name);
     if (!A)
       return fail(std::string("no list ") + Name);
@@ -275,7 +302,8 @@ private:
     }
     return true;
   }
-  bool indices(const json::Object &O, const char *Name, std::vector<std::uint32_t> &Out) {
+  bool indices(const json::Object &O, const char *Name,
+               std::vector<std::uint32_t> &Out) {
     const json::Array *A = O.getArray(Name);
     if (!A)
       return fail(std::string("no list ") + Name);
@@ -337,21 +365,25 @@ private:
   std::string &Error;
 };
 
-std::uint32_t remapped(std::uint32_t Index, const std::vector<std::uint32_t> &Map) {
+std::uint32_t remapped(std::uint32_t Index,
+                       const std::vector<std::uint32_t> &Map) {
   return Index == symcr::kNoType || Index >= Map.size() ? Index : Map[Index];
 }
 
-void remapFields(std::vector<FieldModel> &Fields, const std::vector<std::uint32_t> &Map) {
+void remapFields(std::vector<FieldModel> &Fields,
+                 const std::vector<std::uint32_t> &Map) {
   for (FieldModel &F : Fields)
     F.Type = remapped(F.Type, Map);
 }
 
-/// Every type index names a type of the part, every unit index one of its units: the merge and
-/// the emitters index with them.
+/// Every type index names a type of the part, every unit index one of its
+/// units: the merge and the emitters index with them.
 bool indicesInRange(const ProgramModel &Part) {
   const std::size_t Types = Part.Types.size();
   const std::size_t Units = Part.TranslationUnits.size();
-  auto TypeOk = [&](std::uint32_t I) { return I == symcr::kNoType || I < Types; };
+  auto TypeOk = [&](std::uint32_t I) {
+    return I == symcr::kNoType || I < Types;
+  };
   auto FieldsOk = [&](const std::vector<FieldModel> &Fields) {
     return std::all_of(Fields.begin(), Fields.end(),
                        [&](const FieldModel &F) { return TypeOk(F.Type); });
@@ -390,9 +422,10 @@ std::string writeModelPart(const ProgramModel &Program) {
       Keys[Entry.second] = Entry.first;
   json::Array Units, Types, Roots, Clocks, Points;
   for (const TranslationUnitModel &TU : Program.TranslationUnits)
-    Units.push_back(json::Object{{"source", TU.Source},
-                                 {"c", TU.IsC},
-                                 {"deduces_return_types", TU.DeducesReturnTypes}});
+    Units.push_back(
+        json::Object{{"source", TU.Source},
+                     {"c", TU.IsC},
+                     {"deduces_return_types", TU.DeducesReturnTypes}});
   for (std::size_t I = 0; I < Program.Types.size(); ++I)
     Types.push_back(type(Program.Types[I], Keys[I]));
   for (const RootModel &R : Program.Roots)
@@ -428,20 +461,23 @@ std::string writeModelPart(const ProgramModel &Program) {
       {"roots", std::move(Roots)},
       {"clocks", std::move(Clocks)},
       {"points", std::move(Points)},
-      {"store", json::Object{{"path", Store.Path},
-                             {"slots", static_cast<std::int64_t>(Store.Slots)},
-                             {"slot_size", static_cast<std::int64_t>(Store.SlotSize)},
-                             {"fdatasync", Store.Fdatasync},
-                             {"fallback_depth", static_cast<std::int64_t>(Store.FallbackDepth)},
-                             {"confirm_after", static_cast<std::int64_t>(Store.ConfirmAfter)},
-                             {"spelling", Store.Spelling}}}};
+      {"store",
+       json::Object{
+           {"path", Store.Path},
+           {"slots", static_cast<std::int64_t>(Store.Slots)},
+           {"slot_size", static_cast<std::int64_t>(Store.SlotSize)},
+           {"fdatasync", Store.Fdatasync},
+           {"fallback_depth", static_cast<std::int64_t>(Store.FallbackDepth)},
+           {"confirm_after", static_cast<std::int64_t>(Store.ConfirmAfter)},
+           {"spelling", Store.Spelling}}}};
   std::string Text;
   llvm::raw_string_ostream OS(Text);
   OS << json::Value(std::move(Part)) << "\n";
   return OS.str();
 }
 
-bool mergeModelPart(const std::string &File, ProgramModel &Program, Diagnostics &Diags) {
+bool mergeModelPart(const std::string &File, ProgramModel &Program,
+                    Diagnostics &Diags) {
   const Location Where{File, 0, 0};
   auto Buffer = llvm::MemoryBuffer::getFile(File);
   if (!Buffer) {
@@ -450,7 +486,8 @@ bool mergeModelPart(const std::string &File, ProgramModel &Program, Diagnostics 
   }
   llvm::Expected<json::Value> Value = json::parse((*Buffer)->getBuffer());
   if (!Value) {
-    Diags.error(Where, "not a symcr-gen part: " + llvm::toString(Value.takeError()));
+    Diags.error(Where,
+                "not a symcr-gen part: " + llvm::toString(Value.takeError()));
     return false;
   }
   ProgramModel Part;
@@ -465,22 +502,27 @@ bool mergeModelPart(const std::string &File, ProgramModel &Program, Diagnostics 
     return false;
   }
   const bool First = Program.TranslationUnits.empty();
-  if (!First && (Part.Name != Program.Name || Part.Profile != Program.Profile)) {
-    Diags.error(Where, "generated for program '" + Part.Name + "' (profile " +
-                           (Part.Profile == RuntimeProfile::Device ? "device" : "host") +
-                           "), where the other objects are '" + Program.Name + "' (profile " +
-                           (Program.Profile == RuntimeProfile::Device ? "device" : "host") +
-                           "): compile every source of one program with the same options");
+  if (!First &&
+      (Part.Name != Program.Name || Part.Profile != Program.Profile)) {
+    Diags.error(
+        Where,
+        "generated for program '" + Part.Name + "' (profile " +
+            (Part.Profile == RuntimeProfile::Device ? "device" : "host") +
+            "), where the other objects are '" + Program.Name + "' (profile " +
+            (Program.Profile == RuntimeProfile::Device ? "device" : "host") +
+            "): compile every source of one program with the same options");
     return false;
   }
   Program.Name = Part.Name;
   Program.Profile = Part.Profile;
-  const unsigned UnitBase = static_cast<unsigned>(Program.TranslationUnits.size());
+  const unsigned UnitBase =
+      static_cast<unsigned>(Program.TranslationUnits.size());
   Program.TranslationUnits.insert(Program.TranslationUnits.end(),
                                   Part.TranslationUnits.begin(),
                                   Part.TranslationUnits.end());
 
-  // Types: by the key one run merges them by (canonical name, and the shallow view's own key).
+  // Types: by the key one run merges them by (canonical name, and the shallow
+  // view's own key).
   std::vector<std::uint32_t> Map(Part.Types.size());
   std::vector<bool> Fresh(Part.Types.size(), false);
   bool Consistent = true;
@@ -497,10 +539,12 @@ bool mergeModelPart(const std::string &File, ProgramModel &Program, Diagnostics 
     const TypeModel &Known = Program.Types[It->second];
     if (Known.Fingerprint != Part.Types[I].Fingerprint) {
       // Named by both sources; the part's own file is a temporary of the link.
-      Diags.error(Location(), "type '" + Part.Types[I].Name + "' is described differently in '" +
-                             Part.Types[I].FirstSeenIn + "' than in '" + Known.FirstSeenIn +
-                             "': the annotations (pragmas, sidecar) that select its members "
-                             "and the definition must be the same in both");
+      Diags.error(
+          Location(),
+          "type '" + Part.Types[I].Name + "' is described differently in '" +
+              Part.Types[I].FirstSeenIn + "' than in '" + Known.FirstSeenIn +
+              "': the annotations (pragmas, sidecar) that select its members "
+              "and the definition must be the same in both");
       Consistent = false;
     }
   }
@@ -521,8 +565,9 @@ bool mergeModelPart(const std::string &File, ProgramModel &Program, Diagnostics 
       Slot = std::move(T);
       continue;
     }
-    // Every unit's wrapper defines the code of every type it reaches; one unit may create a
-    // type on restore where another only holds it: the type is served from one that creates.
+    // Every unit's wrapper defines the code of every type it reaches; one unit
+    // may create a type on restore where another only holds it: the type is
+    // served from one that creates.
     for (std::uint32_t D : T.DynamicTypes)
       if (std::find(Slot.DynamicTypes.begin(), Slot.DynamicTypes.end(), D) ==
           Slot.DynamicTypes.end())
@@ -540,10 +585,11 @@ bool mergeModelPart(const std::string &File, ProgramModel &Program, Diagnostics 
   for (RootModel &R : Part.Roots) {
     for (const RootModel &Known : Program.Roots)
       if (Known.Name == R.Name) {
-        Diags.error(R.Where, "root '" + R.Name + "' is defined in '" +
-                                 Program.TranslationUnits[UnitBase + R.HomeTU].Source +
-                                 "' and in '" + Program.TranslationUnits[Known.HomeTU].Source +
-                                 "'");
+        Diags.error(R.Where,
+                    "root '" + R.Name + "' is defined in '" +
+                        Program.TranslationUnits[UnitBase + R.HomeTU].Source +
+                        "' and in '" +
+                        Program.TranslationUnits[Known.HomeTU].Source + "'");
         return false;
       }
     R.Type = remapped(R.Type, Map);
@@ -551,8 +597,9 @@ bool mergeModelPart(const std::string &File, ProgramModel &Program, Diagnostics 
     Program.Roots.push_back(std::move(R));
   }
   for (ClockModel &C : Part.Clocks) {
-    auto Known = std::find_if(Program.Clocks.begin(), Program.Clocks.end(),
-                              [&](const ClockModel &K) { return K.Name == C.Name; });
+    auto Known =
+        std::find_if(Program.Clocks.begin(), Program.Clocks.end(),
+                     [&](const ClockModel &K) { return K.Name == C.Name; });
     if (C.HomeTU >= 0)
       C.HomeTU += static_cast<int>(UnitBase);
     if (Known == Program.Clocks.end())
@@ -560,12 +607,15 @@ bool mergeModelPart(const std::string &File, ProgramModel &Program, Diagnostics 
     else if (Known->HomeTU < 0 && C.HomeTU >= 0)
       *Known = std::move(C);
   }
-  // The clocks' order is their index in the schema: their names' byte order, as one run has.
-  std::sort(Program.Clocks.begin(), Program.Clocks.end(),
-            [](const ClockModel &A, const ClockModel &B) { return A.Name < B.Name; });
+  // The clocks' order is their index in the schema: their names' byte order, as
+  // one run has.
+  std::sort(
+      Program.Clocks.begin(), Program.Clocks.end(),
+      [](const ClockModel &A, const ClockModel &B) { return A.Name < B.Name; });
   for (PointModel &P : Part.Points)
-    if (std::none_of(Program.Points.begin(), Program.Points.end(),
-                     [&](const PointModel &K) { return K.Spelling == P.Spelling; }))
+    if (std::none_of(
+            Program.Points.begin(), Program.Points.end(),
+            [&](const PointModel &K) { return K.Spelling == P.Spelling; }))
       Program.Points.push_back(std::move(P));
   if (Program.PointStore.Spelling.empty())
     Program.PointStore = Part.PointStore;

@@ -16,17 +16,19 @@
 
 namespace symcr_gen {
 
-/// Names the generated code of a one-TU run after \p Unit (symbolOf()), so that the wrappers of
-/// separately generated TUs never define the same symbol. Call after the TU was generated.
+/// Names the generated code of a one-TU run after \p Unit (symbolOf()), so that
+/// the wrappers of separately generated TUs never define the same symbol. Call
+/// after the TU was generated.
 void nameSymbolsForUnit(ProgramModel &Program, const std::string &Unit);
 
 /// The part of a one-TU run: its model as JSON, what merging and emitting need.
 std::string writeModelPart(const ProgramModel &Program);
 
-/// Adds the part in \p File to \p Program. A type described differently than in a part
-/// already merged is an error naming both sources; so is a root defined twice.
-/// Returns false after an error.
-bool mergeModelPart(const std::string &File, ProgramModel &Program, Diagnostics &Diags);
+/// Adds the part in \p File to \p Program. A type described differently than in
+/// a part already merged is an error naming both sources; so is a root defined
+/// twice. Returns false after an error.
+bool mergeModelPart(const std::string &File, ProgramModel &Program,
+                    Diagnostics &Diags);
 
 } // namespace symcr_gen
 

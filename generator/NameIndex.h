@@ -1,4 +1,5 @@
-//===- NameIndex.h - A TU's declarations by source name ---------------------===//
+//===- NameIndex.h - A TU's declarations by source name
+//---------------------===//
 //
 // Internal to the schema builder.
 //
@@ -97,7 +98,8 @@ public:
       } else if (const auto *R = clang::dyn_cast<clang::RecordDecl>(DC)) {
         if (R->getIdentifier())
           Parts.push_back(R->getName().str());
-        else if (const clang::TypedefNameDecl *T = R->getTypedefNameForAnonDecl())
+        else if (const clang::TypedefNameDecl *T =
+                     R->getTypedefNameForAnonDecl())
           Parts.push_back(T->getName().str());
       } else if (const auto *F = clang::dyn_cast<clang::FunctionDecl>(DC)) {
         Parts.push_back(F->getNameAsString());

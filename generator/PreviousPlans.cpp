@@ -63,12 +63,13 @@ bool planPreviousSchemas(ProgramModel &Program,
       // The device executes a compiled form of the same plan: what it cannot
       // carry out is refused here, by member path, rather than on the device.
       std::string Error;
-      if (!symcr::detail::device_plan_image_for(Previous.schema(),
-                                                Previous.hash(), Tables.schema(),
-                                                OwnHash, Plan.Image, Error)) {
+      if (!symcr::detail::device_plan_image_for(
+              Previous.schema(), Previous.hash(), Tables.schema(), OwnHash,
+              Plan.Image, Error)) {
         Diags.error(Location(), "--previous-schema '" + File +
                                     "': the device profile cannot restore "
-                                    "its checkpoints: " + Error);
+                                    "its checkpoints: " +
+                                    Error);
         return false;
       }
     }

@@ -1,4 +1,5 @@
-//===- ProgramPoints.cpp - checkpoint_at / restore_at points ---------------===//
+//===- ProgramPoints.cpp - checkpoint_at / restore_at points
+//---------------===//
 
 #include "ProgramPoints.h"
 #include "EmitSupport.h"
@@ -136,23 +137,24 @@ void ProgramPoints::addDirective(const Directive &D) {
       // (saves go on while a restore waits for its confirmation).
       Store.FallbackDepth = kDefaultFallbackDepth;
       if (Store.Slots != 0)
-        Store.FallbackDepth = std::min(
-            Store.FallbackDepth, Store.Slots > kFallbackSpareSlots
-                                     ? Store.Slots - kFallbackSpareSlots
-                                     : 0u);
+        Store.FallbackDepth = std::min(Store.FallbackDepth,
+                                       Store.Slots > kFallbackSpareSlots
+                                           ? Store.Slots - kFallbackSpareSlots
+                                           : 0u);
       Store.FallbackDefault = true;
     }
     if (Store.ConfirmAfter != 0 && Store.FallbackDepth == 0) {
-      Diags.error(D.Where,
-                  DepthGiven
-                      ? "confirm_after=N confirms the restores of the crash-loop "
-                        "fallback, which fallback_depth=0 turns off"
-                      : "confirm_after=N confirms the restores of the crash-loop "
-                        "fallback, for which slots=" +
-                            std::to_string(Store.Slots) +
-                            " leaves no room: give fallback_depth=N (the "
-                            "store keeps N + 2 slots' worth until the "
-                            "confirmation) or more slots");
+      Diags.error(
+          D.Where,
+          DepthGiven
+              ? "confirm_after=N confirms the restores of the crash-loop "
+                "fallback, which fallback_depth=0 turns off"
+              : "confirm_after=N confirms the restores of the crash-loop "
+                "fallback, for which slots=" +
+                    std::to_string(Store.Slots) +
+                    " leaves no room: give fallback_depth=N (the "
+                    "store keeps N + 2 slots' worth until the "
+                    "confirmation) or more slots");
       return;
     }
     // A restore proves itself over this many checkpoints unless told otherwise.
@@ -166,9 +168,10 @@ void ProgramPoints::addDirective(const Directive &D) {
                Current.Fdatasync != Store.Fdatasync ||
                Current.FallbackDepth != Store.FallbackDepth ||
                Current.ConfirmAfter != Store.ConfirmAfter) {
-      Diags.error(D.Where, "a second, different store directive: every point of "
-                           "a program uses one store, given at " +
-                               locationKey(Current.Where));
+      Diags.error(D.Where,
+                  "a second, different store directive: every point of "
+                  "a program uses one store, given at " +
+                      locationKey(Current.Where));
     }
     return;
   }
@@ -191,7 +194,8 @@ void ProgramPoints::addDirective(const Directive &D) {
   const DirectiveArgument &Where = D.Arguments[1];
   if (Where.Text != "entry" && Where.Text != "exit") {
     Diags.error(Where.Where, "expected 'entry' or 'exit' after the function "
-                             "name, got '" + Where.Text + "'");
+                             "name, got '" +
+                                 Where.Text + "'");
     return;
   }
   P.AtExit = Where.Text == "exit";
@@ -260,8 +264,9 @@ void ProgramPoints::addTranslationUnit(
       if (!FD->doesThisDeclarationHaveABody())
         continue;
       if (FD->isDependentContext() || FD->isTemplateInstantiation()) {
-        Diags.error(P.Where, "'" + P.Function + "' is a template: points are "
-                             "inserted in functions only (defined at " +
+        Diags.error(P.Where, "'" + P.Function +
+                                 "' is a template: points are "
+                                 "inserted in functions only (defined at " +
                                  Describe(FD->getLocation()) + ")");
         Refused[I] = true;
         continue;
@@ -277,8 +282,7 @@ void ProgramPoints::addTranslationUnit(
       SourceLocation Brace = Body->getLBracLoc();
       if (Brace.isMacroID()) {
         Diags.error(P.Where, "the body of '" + P.Function +
-                                 "' comes from a macro (" +
-                                 Describe(Brace) +
+                                 "' comes from a macro (" + Describe(Brace) +
                                  "): a point cannot be inserted there");
         Refused[I] = true;
         continue;
@@ -313,10 +317,11 @@ void ProgramPoints::addTranslationUnit(
 
 void ProgramPoints::finish(bool CheckUnmatched) {
   if (!Program.Points.empty() && !Program.PointStore.Where.valid())
-    Diags.error(Program.Points.front().Where,
-                "program points need a store: add a directive such as "
-                "'store(\"state.store\", slots=4)' (the SYMCR_STORE environment "
-                "variable may replace its path at run time)");
+    Diags.error(
+        Program.Points.front().Where,
+        "program points need a store: add a directive such as "
+        "'store(\"state.store\", slots=4)' (the SYMCR_STORE environment "
+        "variable may replace its path at run time)");
   if (!CheckUnmatched)
     return;
   for (unsigned I = 0; I < Program.Points.size(); ++I) {
@@ -378,7 +383,8 @@ std::string emitPointedCopy(const ProgramModel &Program, unsigned TUIndex) {
        << quoted(FileName + ":" + std::to_string(Line) + ": " +
                  describePoint(P))
        << ", " << (P.Restore ? "SYMCR_POINT_RESTORE" : "SYMCR_POINT_CHECKPOINT")
-       << ", " << (P.StopOnFailure ? "SYMCR_POINT_STOP" : "SYMCR_POINT_CONTINUE")
+       << ", "
+       << (P.StopOnFailure ? "SYMCR_POINT_STOP" : "SYMCR_POINT_CONTINUE")
        << ", " << (P.Strict ? 1 : 0) << ", " << P.Every
        << "u, &symcr_program_point_store, 0};\n";
   }

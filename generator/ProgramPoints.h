@@ -1,4 +1,5 @@
-//===- ProgramPoints.h - checkpoint_at / restore_at points -----------------===//
+//===- ProgramPoints.h - checkpoint_at / restore_at points
+//-----------------===//
 //
 // The program points of the directives: functions at whose entry or exit the
 // program checkpoints into, or restores from, the store of the store(...)

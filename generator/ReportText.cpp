@@ -17,23 +17,27 @@
 namespace symcr_gen {
 
 /// Whether an object of type \p T is, or has as a base, a \p Class object.
-static bool isA(const ProgramModel &Program, std::uint32_t T, std::uint32_t Class, int Depth) {
+static bool isA(const ProgramModel &Program, std::uint32_t T,
+                std::uint32_t Class, int Depth) {
   if (T == Class)
     return true;
   if (Depth > 64 || T >= Program.Types.size())
     return false;
   const TypeModel &Type = Program.Types[T];
-  for (const std::vector<FieldModel> *List : {&Type.Fields, &Type.ReferenceMembers})
+  for (const std::vector<FieldModel> *List :
+       {&Type.Fields, &Type.ReferenceMembers})
     for (const FieldModel &F : *List)
-      if ((F.Flags & symcr::kFieldBase) && isA(Program, F.Type, Class, Depth + 1))
+      if ((F.Flags & symcr::kFieldBase) &&
+          isA(Program, F.Type, Class, Depth + 1))
         return true;
   return false;
 }
 
-/// The members and elements of the roots (selected or reference members) that are \p Class
-/// objects, by path ("vehicle.mode_auto", "vehicle.rtl_modes[]").
-static void collectPointees(const ProgramModel &Program, std::uint32_t T, std::uint32_t Class,
-                            const std::string &Path, int Depth, std::vector<std::string> &Out) {
+/// The members and elements of the roots (selected or reference members) that
+/// are \p Class objects, by path ("vehicle.mode_auto", "vehicle.rtl_modes[]").
+static void collectPointees(const ProgramModel &Program, std::uint32_t T,
+                            std::uint32_t Class, const std::string &Path,
+                            int Depth, std::vector<std::string> &Out) {
   if (Depth > 64 || T >= Program.Types.size())
     return;
   const TypeModel &Type = Program.Types[T];
@@ -41,10 +45,12 @@ static void collectPointees(const ProgramModel &Program, std::uint32_t T, std::u
     if (isA(Program, Type.Element, Class, 0))
       Out.push_back(Path + "[]");
     else
-      collectPointees(Program, Type.Element, Class, Path + "[]", Depth + 1, Out);
+      collectPointees(Program, Type.Element, Class, Path + "[]", Depth + 1,
+                      Out);
     return;
   }
-  for (const std::vector<FieldModel> *List : {&Type.Fields, &Type.ReferenceMembers})
+  for (const std::vector<FieldModel> *List :
+       {&Type.Fields, &Type.ReferenceMembers})
     for (const FieldModel &F : *List) {
       if (F.Flags & symcr::kFieldBase)
         continue;
@@ -56,9 +62,11 @@ static void collectPointees(const ProgramModel &Program, std::uint32_t T, std::u
     }
 }
 
-/// What the pointer type \p T may point at: the state's objects of its class, by path, and
-/// unless it never owns a heap object, the classes of the heap objects it may own.
-static void writePointees(std::ostream &OS, const ProgramModel &Program, std::uint32_t T) {
+/// What the pointer type \p T may point at: the state's objects of its class,
+/// by path, and unless it never owns a heap object, the classes of the heap
+/// objects it may own.
+static void writePointees(std::ostream &OS, const ProgramModel &Program,
+                          std::uint32_t T) {
   const TypeModel &Pointer = Program.Types[T];
   std::vector<std::string> Paths;
   for (const RootModel &Root : Program.Roots) {
@@ -87,12 +95,15 @@ static void writePointees(std::ostream &OS, const ProgramModel &Program, std::ui
   OS << "\n";
 }
 
-/// A restored state flag of a class that leaves members out may say that state is there
-/// (started, initialised, a mode) which the restore did not bring back: the new process then
-/// acts on state it lacks, as a restored "estimator started" with estimator cores that were never
-/// created. One warning per such flag, naming what its class leaves out.
-static void writeStateFlagWarnings(std::ostream &OS, const ProgramModel &Program) {
-  std::set<std::string> Warned; // a class walked for a shallow root and a deep one
+/// A restored state flag of a class that leaves members out may say that state
+/// is there (started, initialised, a mode) which the restore did not bring
+/// back: the new process then acts on state it lacks, as a restored "estimator
+/// started" with estimator cores that were never created. One warning per such
+/// flag, naming what its class leaves out.
+static void writeStateFlagWarnings(std::ostream &OS,
+                                   const ProgramModel &Program) {
+  std::set<std::string>
+      Warned; // a class walked for a shallow root and a deep one
   std::ostringstream Lines;
   for (const TypeModel &Type : Program.Types) {
     if (Type.Skipped.empty())
@@ -115,7 +126,8 @@ static void writeStateFlagWarnings(std::ostream &OS, const ProgramModel &Program
   if (Warned.empty())
     return;
   OS << "\nstate flags that may describe state not restored (" << Warned.size()
-     << "; restores_alone(Type::member) or SYMCR_RESTORES_ALONE declares that a flag "
+     << "; restores_alone(Type::member) or SYMCR_RESTORES_ALONE declares that "
+        "a flag "
         "describes no such state):\n"
      << Lines.str();
 }
@@ -139,7 +151,8 @@ std::string renderReport(const ProgramModel &Program) {
         continue;
       Order.push_back(T);
       const TypeModel &Type = Program.Types[T];
-      for (auto It = Type.ReferenceMembers.rbegin(); It != Type.ReferenceMembers.rend(); ++It)
+      for (auto It = Type.ReferenceMembers.rbegin();
+           It != Type.ReferenceMembers.rend(); ++It)
         Pending.push_back(It->Type);
       for (auto It = Type.Fields.rbegin(); It != Type.Fields.rend(); ++It)
         Pending.push_back(It->Type);
@@ -189,12 +202,14 @@ std::string renderReport(const ProgramModel &Program) {
         }
         if (F.Flags & symcr::kFieldClockTime)
           OS << " (time of clock " << F.Clock
-             << (F.Never ? ", never " + std::to_string(F.Never) : std::string()) << ")";
+             << (F.Never ? ", never " + std::to_string(F.Never) : std::string())
+             << ")";
         OS << "\n";
       }
       for (const FieldModel &F : Type.ReferenceMembers)
-        OS << "    reference only " << (F.Flags & symcr::kFieldBase ? "base " : "")
-           << F.Name << ": " << Program.Types[F.Type].Name << " @" << F.Offset << "\n";
+        OS << "    reference only "
+           << (F.Flags & symcr::kFieldBase ? "base " : "") << F.Name << ": "
+           << Program.Types[F.Type].Name << " @" << F.Offset << "\n";
       for (const TypeModel::LeftMember &S : Type.Skipped)
         OS << "    skipped " << S.Name << ": " << S.Why << "\n";
       if (Type.Kind == symcr::Kind::Pointer && Type.Element != symcr::kNoType &&
@@ -212,18 +227,21 @@ std::string renderReport(const ProgramModel &Program) {
           OS << "    refused on the heap: " << Not << "\n";
       }
     }
-    // A heading of their own: what the new build re-creates, which needs no skip line.
+    // A heading of their own: what the new build re-creates, which needs no
+    // skip line.
     if (LeftCount) {
       OS << "  left to the new build (never restored, no annotation needed):\n";
       for (std::uint32_t T : Order)
-        for (const TypeModel::LeftMember &Left : Program.Types[T].LeftToNewBuild)
-          OS << "    " << Program.Types[T].Name << "::" << Left.Name << ": " << Left.Why
-             << "\n";
+        for (const TypeModel::LeftMember &Left :
+             Program.Types[T].LeftToNewBuild)
+          OS << "    " << Program.Types[T].Name << "::" << Left.Name << ": "
+             << Left.Why << "\n";
     }
   }
   writeStateFlagWarnings(OS, Program);
   if (!Program.Clocks.empty()) {
-    OS << "\nclocks (each checkpoint records their readings; a restore in another process "
+    OS << "\nclocks (each checkpoint records their readings; a restore in "
+          "another process "
           "moves their times by their advance):\n";
     for (const ClockModel &Clock : Program.Clocks)
       OS << "  " << Clock.Name << ": read by " << Clock.CallExpression << "\n";

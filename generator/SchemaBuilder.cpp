@@ -343,7 +343,8 @@ void SchemaBuilder::addTranslationUnit(
       case DirectiveKind::Renamed: {
         if (D.Kind == DirectiveKind::Renamed && I == 1)
           continue; // the old name
-        if ((D.Kind == DirectiveKind::Range || D.Kind == DirectiveKind::Time) && I >= 1)
+        if ((D.Kind == DirectiveKind::Range || D.Kind == DirectiveKind::Time) &&
+            I >= 1)
           continue; // the bounds; the clock and never value
         const std::string &Text = A.Text;
         std::vector<std::string> Keys;
@@ -390,13 +391,13 @@ void SchemaBuilder::addTranslationUnit(
               "unknown " +
               std::string(D.Kind == DirectiveKind::Skip ? "type" : "member") +
               " '" + Text + "' in symcr " +
-              (D.Kind == DirectiveKind::Skip      ? "skip"
-               : D.Kind == DirectiveKind::Include ? "include"
-               : D.Kind == DirectiveKind::NotOwner ? "not_owner"
+              (D.Kind == DirectiveKind::Skip            ? "skip"
+               : D.Kind == DirectiveKind::Include       ? "include"
+               : D.Kind == DirectiveKind::NotOwner      ? "not_owner"
                : D.Kind == DirectiveKind::RestoresAlone ? "restores_alone"
-               : D.Kind == DirectiveKind::Range   ? "range"
-               : D.Kind == DirectiveKind::Time    ? "time"
-                                                  : "renamed") +
+               : D.Kind == DirectiveKind::Range         ? "range"
+               : D.Kind == DirectiveKind::Time          ? "time"
+                                                        : "renamed") +
               " directive");
           break;
         }
@@ -635,7 +636,8 @@ void SchemaBuilder::addTranslationUnit(
       }
       Program.Roots.push_back(std::move(Root));
       RootTypes.push_back(TypeIndex);
-      // A shallow root's unselected members and a root's skipped ones can still be pointed at.
+      // A shallow root's unselected members and a root's skipped ones can still
+      // be pointed at.
       ClassRoots.emplace_back(Name, Type, TypeIndex);
     }
   }
@@ -643,7 +645,8 @@ void SchemaBuilder::addTranslationUnit(
 }
 
 void SchemaBuilder::dropClassesWithoutVtable() {
-  // Code that creates such a class names its vtable, which the link would not find.
+  // Code that creates such a class names its vtable, which the link would not
+  // find.
   for (std::uint32_t Index = 0; Index < Program.Types.size(); ++Index) {
     TypeModel &Type = Program.Types[Index];
     if (Type.VtableSymbol.empty() || Type.VtableKeyFunction.empty() ||
@@ -651,12 +654,15 @@ void SchemaBuilder::dropClassesWithoutVtable() {
       continue;
     Type.NeedsLifecycle = false;
     Type.VtableSymbol.clear();
-    std::string Why = Type.Name + ": its vtable is not in this build (its key function '" +
-                      Type.VtableKeyFunction + "' is defined in no source symcr-gen "
-                      "parsed: compiled out, or in a library source not given with "
-                      "--library-source)";
+    std::string Why =
+        Type.Name + ": its vtable is not in this build (its key function '" +
+        Type.VtableKeyFunction +
+        "' is defined in no source symcr-gen "
+        "parsed: compiled out, or in a library source not given with "
+        "--library-source)";
     for (TypeModel &Base : Program.Types) {
-      auto It = std::find(Base.DynamicTypes.begin(), Base.DynamicTypes.end(), Index);
+      auto It =
+          std::find(Base.DynamicTypes.begin(), Base.DynamicTypes.end(), Index);
       if (It == Base.DynamicTypes.end())
         continue;
       Base.DynamicTypes.erase(It);
@@ -679,13 +685,17 @@ std::set<std::string> SchemaBuilder::typesInState() const {
     const TypeModel &Type = Program.Types[Index];
     for (const FieldModel &Field : Type.Fields)
       Pending.push_back(Field.Type);
-    Pending.insert(Pending.end(), Type.Alternatives.begin(), Type.Alternatives.end());
+    Pending.insert(Pending.end(), Type.Alternatives.begin(),
+                   Type.Alternatives.end());
     if (Type.Element == symcr::kNoType)
       continue;
-    // A polymorphic pointee is in the state only as the heap objects restore creates.
+    // A polymorphic pointee is in the state only as the heap objects restore
+    // creates.
     const TypeModel &Element = Program.Types[Type.Element];
-    if (Type.Kind == symcr::Kind::Pointer && (Element.Flags & symcr::kTypePolymorphic))
-      Pending.insert(Pending.end(), Element.DynamicTypes.begin(), Element.DynamicTypes.end());
+    if (Type.Kind == symcr::Kind::Pointer &&
+        (Element.Flags & symcr::kTypePolymorphic))
+      Pending.insert(Pending.end(), Element.DynamicTypes.begin(),
+                     Element.DynamicTypes.end());
     else
       Pending.push_back(Type.Element);
   }
@@ -704,14 +714,17 @@ void SchemaBuilder::finish(bool CheckUnmatched) {
       continue;
     if (Type.Ops != OpsKind::None || Type.hasLifecycle() ||
         Type.hasValidate(Program) || Type.HasMigrate)
-      Diags.error(Location(),
-                  "type '" + Type.Name + "' is private or protected, and the code "
-                  "generated for it must name it, which C++11 cannot do from "
-                  "outside its class: compile '" + Home.Source +
-                  "' as C++14 or later, or skip the members that reach it");
+      Diags.error(
+          Location(),
+          "type '" + Type.Name +
+              "' is private or protected, and the code "
+              "generated for it must name it, which C++11 cannot do from "
+              "outside its class: compile '" +
+              Home.Source +
+              "' as C++14 or later, or skip the members that reach it");
   }
-  // Recorded in the schema (and its file) so that a plan without the program's code knows
-  // which heap objects the build can rebuild.
+  // Recorded in the schema (and its file) so that a plan without the program's
+  // code knows which heap objects the build can rebuild.
   for (TypeModel &Type : Program.Types) {
     if (Type.hasLifecycle())
       Type.Flags |= symcr::kTypeCreatable;
@@ -729,31 +742,41 @@ void SchemaBuilder::finish(bool CheckUnmatched) {
       Reasons += (Reasons.empty() ? " (" : "; ") + Reason;
     Reasons = Reasons.empty() ? " (every class derived from it is abstract)"
                               : Reasons + ")";
-    // A pointer can still refer to an object the state holds; when the state holds none of
-    // its class, every save with the pointer set would be refused.
+    // A pointer can still refer to an object the state holds; when the state
+    // holds none of its class, every save with the pointer set would be
+    // refused.
     if (InState.count(Type.Name) || Program.Profile != RuntimeProfile::Host) {
-      Diags.note(Location(),
-                 "'" + Type.DynamicTypesReachedBy + "' points to polymorphic class '" +
-                     Type.Name + "': it is saved as a reference to the member or "
-                     "element of the state it points at; no class derived from it "
-                     "can be created by restore" + Reasons +
-                     ", so saving refuses a heap object it points to");
+      Diags.note(
+          Location(),
+          "'" + Type.DynamicTypesReachedBy + "' points to polymorphic class '" +
+              Type.Name +
+              "': it is saved as a reference to the member or "
+              "element of the state it points at; no class derived from it "
+              "can be created by restore" +
+              Reasons + ", so saving refuses a heap object it points to");
       continue;
     }
     const std::string &Skip = Type.DynamicTypesSkipHint;
-    // A root that is such a pointer has no member to skip: it is left out of the checkpoint.
-    std::string LeaveOut =
-        Skip.empty() ? "Leave it out of the checkpoint (the new build keeps its own value)"
-                     : "Skip it (the new build keeps its own value): '#pragma symcr skip(" +
-                           Skip + ")' or 'skip(" + Skip + ")' in the annotation file";
-    Diags.error(Type.DynamicTypesReachedAt,
-                "'" + Type.DynamicTypesReachedBy + "' points to polymorphic class '" +
-                    Type.Name + "', which no object of the state is, and restore "
-                    "can create no class derived from it" + Reasons +
-                    ": every checkpoint taken while it is set would be refused. " +
-                    LeaveOut + "; or give '" + Type.Name + "' or a class derived from "
-                    "it a public default constructor, so that restore can create its "
-                    "heap object");
+    // A root that is such a pointer has no member to skip: it is left out of
+    // the checkpoint.
+    std::string LeaveOut = Skip.empty() ? "Leave it out of the checkpoint (the "
+                                          "new build keeps its own value)"
+                                        : "Skip it (the new build keeps its "
+                                          "own value): '#pragma symcr skip(" +
+                                              Skip + ")' or 'skip(" + Skip +
+                                              ")' in the annotation file";
+    Diags.error(
+        Type.DynamicTypesReachedAt,
+        "'" + Type.DynamicTypesReachedBy + "' points to polymorphic class '" +
+            Type.Name +
+            "', which no object of the state is, and restore "
+            "can create no class derived from it" +
+            Reasons +
+            ": every checkpoint taken while it is set would be refused. " +
+            LeaveOut + "; or give '" + Type.Name +
+            "' or a class derived from "
+            "it a public default constructor, so that restore can create its "
+            "heap object");
   }
   for (std::size_t I = 0; I < Sidecar.size() && CheckUnmatched; ++I)
     for (std::size_t A = 0; A < Sidecar[I].Arguments.size(); ++A) {

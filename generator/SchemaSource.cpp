@@ -2,8 +2,8 @@
 //
 // The schema source prints the tables of SchemaTables as C++ (the one writer of
 // TypeInfo text), adds the symbols of the generated code (ops tables,
-// lifecycles, hooks, root addresses), and embeds the tables' serialised form and
-// hash so that the program never computes them.
+// lifecycles, hooks, root addresses), and embeds the tables' serialised form
+// and hash so that the program never computes them.
 //
 //===----------------------------------------------------------------------===//
 #include "EmitSupport.h"
@@ -28,7 +28,8 @@ std::string number(double Value) {
 }
 
 std::string integer(std::int64_t Value) {
-  return Value == INT64_MIN ? std::string("INT64_MIN") : std::to_string(Value) + "ll";
+  return Value == INT64_MIN ? std::string("INT64_MIN")
+                            : std::to_string(Value) + "ll";
 }
 
 std::string uintText(std::uint64_t Value) {
@@ -97,11 +98,12 @@ private:
     if (Schema.root_count != 0) {
       OS << "extern \"C\" {\n";
       for (std::uint32_t I = 0; I < Schema.root_count; ++I)
-        OS << "extern void* const symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I)
-           << ";\n";
+        OS << "extern void* const symcr_gen_root_"
+           << symbolOf(Program.Roots[I].Symbol, I) << ";\n";
       OS << "}\n\n";
     }
-    // Each clock's reading thunk is in the wrapper of the source that declares its function.
+    // Each clock's reading thunk is in the wrapper of the source that declares
+    // its function.
     for (std::size_t I = 0; I < Program.Clocks.size(); ++I)
       OS << "extern \"C\" std::int64_t symcr_gen_clock_"
          << symbolOf(Program.Clocks[I].Symbol, I) << "(void);\n";
@@ -125,8 +127,8 @@ private:
       return;
     OS << "const symcr::ClockInfo clocks[] = {\n";
     for (std::size_t I = 0; I < Program.Clocks.size(); ++I)
-      OS << "    {" << nameText(Program.Clocks[I].Name.c_str()) << ", symcr_gen_clock_"
-         << symbolOf(Program.Clocks[I].Symbol, I)
+      OS << "    {" << nameText(Program.Clocks[I].Name.c_str())
+         << ", symcr_gen_clock_" << symbolOf(Program.Clocks[I].Symbol, I)
          << ", " << I << "u},\n";
     OS << "};\n";
   }
@@ -151,8 +153,8 @@ private:
           continue;
         }
         std::string Symbol = "range_" + Index + "_" + std::to_string(F);
-        OS << "const symcr::FieldRange " << Symbol << " = {" << number(Range->min)
-           << ", " << number(Range->max) << "};\n";
+        OS << "const symcr::FieldRange " << Symbol << " = {"
+           << number(Range->min) << ", " << number(Range->max) << "};\n";
         FieldRanges.push_back("&" + Symbol);
       }
       std::vector<std::string> FieldTimes;
@@ -163,8 +165,8 @@ private:
           continue;
         }
         std::string Symbol = "time_" + Index + "_" + std::to_string(F);
-        OS << "const symcr::FieldTime " << Symbol << " = {&clocks[" << Time->clock->index
-           << "], " << integer(Time->never) << "};\n";
+        OS << "const symcr::FieldTime " << Symbol << " = {&clocks["
+           << Time->clock->index << "], " << integer(Time->never) << "};\n";
         FieldTimes.push_back("&" + Symbol);
       }
       OS << "const symcr::FieldInfo fields_" << I << "[] = {\n";
@@ -172,9 +174,8 @@ private:
         const symcr::FieldInfo &Field = T.fields[F];
         OS << "    {" << nameText(Field.name) << ", " << Field.type << "u, "
            << Field.offset << "u, " << Field.bit_offset << ", "
-           << Field.bit_width << ", " << Field.flags << "u, "
-           << FieldRenamed[F] << ", " << FieldRanges[F] << ", " << FieldTimes[F]
-           << "},\n";
+           << Field.bit_width << ", " << Field.flags << "u, " << FieldRenamed[F]
+           << ", " << FieldRanges[F] << ", " << FieldTimes[F] << "},\n";
       }
       OS << "};\n";
     }
@@ -228,12 +229,12 @@ private:
          << T.field_count << "u, "
          << (T.enumerator_count && !Device ? "enumerators_" + Index : "nullptr")
          << ", " << (Device ? 0 : T.enumerator_count) << "u, "
-         << uintText(T.element) << ", "
-         << T.count << "u, "
+         << uintText(T.element) << ", " << T.count << "u, "
          << (T.alternative_count ? "alternatives_" + Index : "nullptr") << ", "
          << T.alternative_count << "u, "
          << static_cast<unsigned>(T.container_kind) << ", "
-         << (!emitsOps(Program, Model) ? "nullptr" : "&symcr_gen::ops_" + Symbol)
+         << (!emitsOps(Program, Model) ? "nullptr"
+                                       : "&symcr_gen::ops_" + Symbol)
          << ", "
          << (!emitsLifecycle(Program, Model) ? std::string("nullptr")
              : Program.TranslationUnits[Model.HomeTU].IsC
@@ -241,12 +242,13 @@ private:
                  : "&symcr_gen::lifecycle_" + Symbol)
          << ", "
          << (Model.hasValidate(Program) ? "&symcr_gen::validate_" + Symbol
-                                         : std::string("nullptr"))
+                                        : std::string("nullptr"))
          << ", " << TypeRenamed[I] << ", "
          << (hasMigrate(Program, Model) ? "&symcr_gen::migrate_" + Symbol
                                         : std::string("nullptr"))
          << ", " << TypeLeft[I] << ", "
-         << (T.reference_member_count ? "reference_members_" + Index : "nullptr")
+         << (T.reference_member_count ? "reference_members_" + Index
+                                      : "nullptr")
          << ", " << T.reference_member_count << "u},  // " << Index << "\n";
     }
     OS << "};\n";
@@ -282,8 +284,8 @@ private:
     OS << "const symcr::PlannedSchema planned_schemas[] = {\n";
     for (std::size_t I = 0; I < Program.PreviousPlans.size(); ++I)
       OS << "    {" << hashText(Program.PreviousPlans[I].WriterHash)
-         << ", plan_image_" << I << ", " << Program.PreviousPlans[I].Image.size()
-         << "u},\n";
+         << ", plan_image_" << I << ", "
+         << Program.PreviousPlans[I].Image.size() << "u},\n";
     OS << "};\n";
   }
 
@@ -295,8 +297,7 @@ private:
     OS << "\nextern \"C\" const symcr::PlannedSchema* "
           "symcr_program_plans(std::uint32_t* count) {\n"
           "  *count = "
-       << Program.PreviousPlans.size()
-       << "u;\n  return planned_schemas;\n}\n";
+       << Program.PreviousPlans.size() << "u;\n  return planned_schemas;\n}\n";
     // The device profile links its cross-version executor only into a
     // firmware that has plans: this reference takes it in.
     if (Device)
@@ -328,16 +329,14 @@ private:
       for (std::uint32_t I = 0; I < Schema.root_count; ++I) {
         const symcr::RootInfo &R = Schema.roots[I];
         OS << "      {" << nameText(R.name) << ", " << R.type
-           << "u, symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I) << ", "
-           << R.flags << "u, "
-           << RootRenamed[I] << "},\n";
+           << "u, symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I)
+           << ", " << R.flags << "u, " << RootRenamed[I] << "},\n";
       }
       OS << "  };\n";
     }
     OS << "  static const symcr::Schema schema{"
-       << (Schema.type_count ? "types" : "nullptr") << ", "
-       << Schema.type_count << "u, "
-       << (Schema.root_count ? "roots" : "nullptr") << ", "
+       << (Schema.type_count ? "types" : "nullptr") << ", " << Schema.type_count
+       << "u, " << (Schema.root_count ? "roots" : "nullptr") << ", "
        << Schema.root_count << "u, "
        << (Schema.program ? quoted(Schema.program) : std::string("nullptr"))
        << "};\n  return &schema;\n}\n\n"

@@ -11,8 +11,9 @@ namespace symcr_gen {
 
 SchemaTables::SchemaTables(const ProgramModel &Program) {
   for (const ClockModel &Clock : Program.Clocks)
-    Clocks.push_back(symcr::ClockInfo{Clock.Name.c_str(), nullptr,
-                                      static_cast<std::uint32_t>(Clocks.size())});
+    Clocks.push_back(
+        symcr::ClockInfo{Clock.Name.c_str(), nullptr,
+                         static_cast<std::uint32_t>(Clocks.size())});
   Types.resize(Program.Types.size());
   for (std::size_t I = 0; I < Program.Types.size(); ++I) {
     const TypeModel &T = Program.Types[I];
@@ -46,11 +47,9 @@ SchemaTables::SchemaTables(const ProgramModel &Program) {
     }
     if (!T.Enumerators.empty()) {
       EnumeratorTables.emplace_back();
-      std::vector<symcr::EnumeratorInfo> &Enumerators =
-          EnumeratorTables.back();
+      std::vector<symcr::EnumeratorInfo> &Enumerators = EnumeratorTables.back();
       for (const auto &E : T.Enumerators)
-        Enumerators.push_back(
-            symcr::EnumeratorInfo{E.first.c_str(), E.second});
+        Enumerators.push_back(symcr::EnumeratorInfo{E.first.c_str(), E.second});
       Info.enumerators = Enumerators.data();
       Info.enumerator_count = static_cast<std::uint32_t>(Enumerators.size());
     }
@@ -104,7 +103,8 @@ const symcr::FieldTime *SchemaTables::time(const FieldModel &Field) {
       Times.push_back(symcr::FieldTime{&Clock, Field.Never});
       return &Times.back();
     }
-  return nullptr; // an undeclared clock: diagnosed (checkClocks), nothing is written
+  return nullptr; // an undeclared clock: diagnosed (checkClocks), nothing is
+                  // written
 }
 
 /// A nullptr-terminated list of \p Names, or nullptr when there are none
@@ -132,6 +132,5 @@ const char *const *SchemaTables::nameList(const Items &List, NameOf Name) {
   Names.push_back(nullptr);
   return Names.data();
 }
-
 
 } // namespace symcr_gen

@@ -1,4 +1,5 @@
-//===- StdTypes.cpp - The standard library types symcr knows ----------------===//
+//===- StdTypes.cpp - The standard library types symcr knows
+//----------------===//
 //
 // See TypeWalker.h.
 //

@@ -73,8 +73,9 @@ static llvm::cl::opt<std::string> SchemaFile(
     llvm::cl::value_desc("file"), llvm::cl::cat(Category));
 static llvm::cl::opt<std::string> ProgramName(
     "program",
-    llvm::cl::desc("The program's name, written into its checkpoints: a restore refuses a "
-                   "checkpoint of another program (default: none, accepted by any)"),
+    llvm::cl::desc(
+        "The program's name, written into its checkpoints: a restore refuses a "
+        "checkpoint of another program (default: none, accepted by any)"),
     llvm::cl::value_desc("name"), llvm::cl::cat(Category));
 static llvm::cl::list<std::string> PreviousSchemas(
     "previous-schema",
@@ -122,17 +123,21 @@ static llvm::cl::opt<std::string> ShownNotes(
     llvm::cl::value_desc("file"), llvm::cl::cat(Category));
 static llvm::cl::opt<std::string> Unit(
     "unit",
-    llvm::cl::desc("Generate the one source given as a unit of a program linked later from "
-                   "parts (--part-file, --link-part): its generated code is named after "
-                   "<name>, which must differ between the program's units"),
+    llvm::cl::desc(
+        "Generate the one source given as a unit of a program linked later "
+        "from "
+        "parts (--part-file, --link-part): its generated code is named after "
+        "<name>, which must differ between the program's units"),
     llvm::cl::value_desc("name"), llvm::cl::cat(Category));
-static llvm::cl::opt<std::string> PartFile(
-    "part-file",
-    llvm::cl::desc("With --unit: write the unit's part of the program's schema to this file"),
-    llvm::cl::value_desc("file"), llvm::cl::cat(Category));
+static llvm::cl::opt<std::string>
+    PartFile("part-file",
+             llvm::cl::desc("With --unit: write the unit's part of the "
+                            "program's schema to this file"),
+             llvm::cl::value_desc("file"), llvm::cl::cat(Category));
 static llvm::cl::list<std::string> LinkParts(
     "link-part",
-    llvm::cl::desc("Parse no source: merge the parts of the program's units (repeatable) and "
+    llvm::cl::desc("Parse no source: merge the parts of the program's units "
+                   "(repeatable) and "
                    "write its schema source (--out-dir) and schema file"),
     llvm::cl::value_desc("file"), llvm::cl::cat(Category));
 static llvm::cl::opt<bool>
@@ -260,11 +265,10 @@ class IncludeRecorder : public PPCallbacks {
 public:
   IncludeRecorder(const SourceManager &SM, std::vector<ResolvedInclude> &Out)
       : SM(SM), Out(Out) {}
-  void InclusionDirective(SourceLocation HashLoc, const Token &,
-                          StringRef, bool IsAngled,
-                          CharSourceRange FilenameRange, const FileEntry *File,
-                          StringRef, StringRef, const Module *,
-                          SrcMgr::CharacteristicKind) override {
+  void InclusionDirective(SourceLocation HashLoc, const Token &, StringRef,
+                          bool IsAngled, CharSourceRange FilenameRange,
+                          const FileEntry *File, StringRef, StringRef,
+                          const Module *, SrcMgr::CharacteristicKind) override {
     if (IsAngled || !File || FilenameRange.getBegin().isMacroID() ||
         !SM.isWrittenInMainFile(HashLoc))
       return;
@@ -272,11 +276,11 @@ public:
     unsigned End = SM.getFileOffset(FilenameRange.getEnd());
     if (End <= Begin)
       return;
-    Out.push_back({Begin, End - Begin,
-                   File->tryGetRealPathName().empty()
-                       ? absoluteInCommandDirectory(SM.getFileManager(),
-                                                    File->getName())
-                       : absolute(File->tryGetRealPathName().str())});
+    Out.push_back(
+        {Begin, End - Begin,
+         File->tryGetRealPathName().empty()
+             ? absoluteInCommandDirectory(SM.getFileManager(), File->getName())
+             : absolute(File->tryGetRealPathName().str())});
   }
 
 private:
@@ -295,8 +299,8 @@ public:
   bool BeginSourceFileAction(CompilerInstance &CI) override {
     CI.getPreprocessor().AddPragmaHandler(
         createPragmaHandler(Pragmas, Diags).release());
-    CI.getPreprocessor().addPPCallbacks(std::make_unique<IncludeRecorder>(
-        CI.getSourceManager(), Includes));
+    CI.getPreprocessor().addPPCallbacks(
+        std::make_unique<IncludeRecorder>(CI.getSourceManager(), Includes));
     Collector = std::make_shared<DependencyCollector>();
     Collector->attachToPreprocessor(CI.getPreprocessor());
     return true;
@@ -350,27 +354,32 @@ private:
   std::shared_ptr<DependencyCollector> Collector;
 };
 
-/// --link-part: the program's model merged from its units' parts, written as one run over
-/// every source would write it (schema source and schema file; the wrappers exist already).
+/// --link-part: the program's model merged from its units' parts, written as
+/// one run over every source would write it (schema source and schema file; the
+/// wrappers exist already).
 int linkParts(Diagnostics &Diags) {
   ProgramModel Program;
   for (const std::string &File : LinkParts)
     if (!mergeModelPart(File, Program, Diags))
       break;
-  if (!Diags.errorCount() && !ProgramName.empty() && ProgramName != Program.Name)
-    Diags.error(Location(), "the parts are of program '" + Program.Name + "', not '" +
-                                ProgramName + "'");
+  if (!Diags.errorCount() && !ProgramName.empty() &&
+      ProgramName != Program.Name)
+    Diags.error(Location(), "the parts are of program '" + Program.Name +
+                                "', not '" + ProgramName + "'");
   if (!Diags.errorCount())
     planPreviousSchemas(Program, PreviousSchemas, Diags);
   if (Diags.errorCount()) {
     Diags.releaseNotes();
-    llvm::errs() << "symcr-gen: " << Diags.errorCount() << " error(s); nothing generated\n";
+    llvm::errs() << "symcr-gen: " << Diags.errorCount()
+                 << " error(s); nothing generated\n";
     return 1;
   }
   if (Program.Roots.empty())
     Diags.warning(Location(), "no roots in any part: the schema is empty");
   if (!ReportFile.empty() &&
-      !writeFileIfChanged(ReportFile, renderReport(Program) + renderPointsReport(Program), Diags))
+      !writeFileIfChanged(ReportFile,
+                          renderReport(Program) + renderPointsReport(Program),
+                          Diags))
     return 1;
   if (!SchemaFile.empty()) {
     llvm::StringRef Parent = llvm::sys::path::parent_path(SchemaFile);
@@ -381,8 +390,8 @@ int linkParts(Diagnostics &Diags) {
   }
   if (!OutDir.empty()) {
     llvm::sys::fs::create_directories(OutDir);
-    if (!writeFileIfChanged(absolute(OutDir + "/symcr_schema.cpp"), emitSchemaSource(Program),
-                            Diags))
+    if (!writeFileIfChanged(absolute(OutDir + "/symcr_schema.cpp"),
+                            emitSchemaSource(Program), Diags))
       return 1;
   }
   return 0;
@@ -453,8 +462,10 @@ int main(int argc, const char **argv) {
   std::map<std::string, std::string> SourceToWrapper;
   std::vector<std::string> Sources;
   std::vector<std::string> AllSources = Parser->getSourcePathList();
-  AllSources.insert(AllSources.end(), LibrarySources.begin(), LibrarySources.end());
-  for (std::size_t SourceIndex = 0; SourceIndex < AllSources.size(); ++SourceIndex) {
+  AllSources.insert(AllSources.end(), LibrarySources.begin(),
+                    LibrarySources.end());
+  for (std::size_t SourceIndex = 0; SourceIndex < AllSources.size();
+       ++SourceIndex) {
     const std::string &Path = AllSources[SourceIndex];
     TranslationUnitModel TU;
     TU.Source = absolute(Path);
@@ -472,8 +483,9 @@ int main(int argc, const char **argv) {
 
   WrapperAwareDatabase Database(Parser->getCompilations(), SourceToWrapper);
   ProgramPoints Points(Program, Diags, Sidecar);
-  Sidecar.erase(std::remove_if(Sidecar.begin(), Sidecar.end(), isPointDirective),
-                Sidecar.end());
+  Sidecar.erase(
+      std::remove_if(Sidecar.begin(), Sidecar.end(), isPointDirective),
+      Sidecar.end());
   SchemaBuilder Builder(Program, Diags, std::move(Sidecar));
   std::set<std::string> Dependencies(AnnotationFiles.begin(),
                                      AnnotationFiles.end());
@@ -544,9 +556,10 @@ int main(int argc, const char **argv) {
     std::string List;
     for (const std::string &Flag : Dropped)
       List += " " + Flag;
-    llvm::errs() << "symcr-gen: warning: ignored compiler flag(s) Clang does not "
-                    "know:"
-                 << List << "\n";
+    llvm::errs()
+        << "symcr-gen: warning: ignored compiler flag(s) Clang does not "
+           "know:"
+        << List << "\n";
   }
   // A source that could not be parsed defines roots and types nothing else
   // sees: "matches nothing" would then be a false lead.
@@ -571,7 +584,8 @@ int main(int argc, const char **argv) {
 
   if (!Unit.empty())
     nameSymbolsForUnit(Program, Unit);
-  if (!PartFile.empty() && !writeFileIfChanged(PartFile, writeModelPart(Program), Diags))
+  if (!PartFile.empty() &&
+      !writeFileIfChanged(PartFile, writeModelPart(Program), Diags))
     return 1;
   if (Program.Roots.empty() && Unit.empty())
     Diags.warning(Location(),
@@ -600,12 +614,14 @@ int main(int argc, const char **argv) {
       TU.PointedCopy.insert(TU.PointedCopy.size() -
                                 llvm::sys::path::filename(TU.Source).size(),
                             "points_");
-      if (!writeFileIfChanged(TU.PointedCopy, emitPointedCopy(Program, I), Diags))
+      if (!writeFileIfChanged(TU.PointedCopy, emitPointedCopy(Program, I),
+                              Diags))
         return 1;
     }
     // A unit's schema source is written at the link, from every unit's part.
     std::string Schema = absolute(OutDir + "/symcr_schema.cpp");
-    if (Unit.empty() && !writeFileIfChanged(Schema, emitSchemaSource(Program), Diags))
+    if (Unit.empty() &&
+        !writeFileIfChanged(Schema, emitSchemaSource(Program), Diags))
       return 1;
     for (unsigned I = 0; I < Program.TranslationUnits.size(); ++I)
       if (!Program.TranslationUnits[I].LibraryOnly &&

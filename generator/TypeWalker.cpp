@@ -1,4 +1,5 @@
-//===- TypeWalker.cpp - Types reachable from roots, into the model ----------===//
+//===- TypeWalker.cpp - Types reachable from roots, into the model
+//----------===//
 //
 // See TypeWalker.h.
 //
@@ -83,11 +84,11 @@ bool TypeWalker::isSkippedType(const RecordDecl *RD, std::string &Why) {
   return false;
 }
 
-/// Why a member of type \p Type is never restored and left to the new build, or null. A
-/// const member is the new build's constant (writing it would be undefined behaviour, and would
-/// undo a patch that changed it); a reference is bound by the new build's constructor; a
-/// function or member pointer is code of the old build (restoring one would be an arc-injection
-/// vector).
+/// Why a member of type \p Type is never restored and left to the new build, or
+/// null. A const member is the new build's constant (writing it would be
+/// undefined behaviour, and would undo a patch that changed it); a reference is
+/// bound by the new build's constructor; a function or member pointer is code
+/// of the old build (restoring one would be an arc-injection vector).
 const char *TypeWalker::leftToNewBuild(QualType Type) const {
   QualType Canonical = Type.getCanonicalType();
   if (Canonical->isReferenceType())
@@ -156,7 +157,8 @@ void TypeWalker::store(std::uint32_t Index, TypeModel Model,
   }
   Model.HomeTU = Slot.HomeTU;
   Model.NeedsLifecycle |= Slot.NeedsLifecycle;
-  // Attached while the type was still being walked (a pointer inside it to itself).
+  // Attached while the type was still being walked (a pointer inside it to
+  // itself).
   Model.VtableSymbol = std::move(Slot.VtableSymbol);
   Model.VtableAddressPoint = Slot.VtableAddressPoint;
   Model.VtableKeyFunction = std::move(Slot.VtableKeyFunction);
@@ -376,7 +378,8 @@ std::uint32_t TypeWalker::pointer(QualType Type, const PointerType *PT,
   return Index;
 }
 
-std::uint32_t TypeWalker::neverOwningPointer(QualType Type, const WalkContext &C) {
+std::uint32_t TypeWalker::neverOwningPointer(QualType Type,
+                                             const WalkContext &C) {
   Type = Type.getCanonicalType().getUnqualifiedType();
   QualType Pointee = Type->getAs<PointerType>()->getPointeeType();
   if (!checkPointee(Pointee, C, "pointer"))
@@ -389,7 +392,8 @@ std::uint32_t TypeWalker::neverOwningPointer(QualType Type, const WalkContext &C
   Model.Align = Context.getTypeAlignInChars(Type).getQuantity();
   // Its own slot beside the owning pointer of the same name: the flag differs.
   bool Fresh;
-  std::uint32_t Index = reserve(Model.Name + " (never owns)", Model.Name, Fresh);
+  std::uint32_t Index =
+      reserve(Model.Name + " (never owns)", Model.Name, Fresh);
   Model.Element = walk(Pointee, intoPointee(C, Model.Name));
   if (Model.Element == symcr::kNoType)
     return symcr::kNoType;
@@ -413,7 +417,8 @@ std::string TypeWalker::whyNotCreatable(const CXXRecordDecl *Class) {
          : !Constructor || Constructor->isDeleted() ||
                Constructor->getAccess() != AS_public)
     return "no public default constructor";
-  const CXXDestructorDecl *Destructor = S ? S->LookupDestructor(Mutable) : nullptr;
+  const CXXDestructorDecl *Destructor =
+      S ? S->LookupDestructor(Mutable) : nullptr;
   if (S && (!Destructor || Destructor->isDeleted() ||
             Destructor->getAccess() != AS_public))
     return "no public destructor";
@@ -447,11 +452,13 @@ std::uint32_t TypeWalker::tentativeWalk(QualType Type, const WalkContext &C,
 void TypeWalker::findDynamicTypes(const CXXRecordDecl *Base,
                                   std::uint32_t BaseIndex,
                                   const WalkContext &C) {
-  if (!Base || !PolymorphicClasses || !DynamicTypesSought.insert(BaseIndex).second)
+  if (!Base || !PolymorphicClasses ||
+      !DynamicTypesSought.insert(BaseIndex).second)
     return;
   Base = Base->getDefinition();
   if (Program.Types[BaseIndex].DynamicTypesReachedBy.empty()) {
-    Program.Types[BaseIndex].DynamicTypesReachedBy = C.Path.substr(0, C.Path.size() - 2);
+    Program.Types[BaseIndex].DynamicTypesReachedBy =
+        C.Path.substr(0, C.Path.size() - 2);
     Program.Types[BaseIndex].DynamicTypesReachedAt = C.Where;
     Program.Types[BaseIndex].DynamicTypesSkipHint = C.SkipHint;
   }
@@ -461,7 +468,8 @@ void TypeWalker::findDynamicTypes(const CXXRecordDecl *Base,
     if (std::find(List.begin(), List.end(), Entry) == List.end())
       List.push_back(Entry);
   };
-  // Saving recognises a class by its vtable (vtableSymbol: Itanium C++ ABI only).
+  // Saving recognises a class by its vtable (vtableSymbol: Itanium C++ ABI
+  // only).
   auto *VTables = dyn_cast<ItaniumVTableContext>(Context.getVTableContext());
   if (vtableSymbol(Context, Base).empty() || !VTables) {
     NotCreatable(Base->getNameAsString(),
@@ -557,7 +565,8 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
     }
     WalkContext F = C;
     // "sim->lock", not "sim->.lock"
-    F.Path = C.Path + (llvm::StringRef(C.Path).endswith("->") ? "" : ".") + Name;
+    F.Path =
+        C.Path + (llvm::StringRef(C.Path).endswith("->") ? "" : ".") + Name;
     F.Enclosing = C.SkipHint.empty()
                       ? MemberRef()
                       : MemberRef{C.Path, C.SkipHint, Model.Name, C.Where};
@@ -595,9 +604,10 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
       bool Plain = Innermost->isScalarType() && !Innermost->isPointerType() &&
                    !Innermost->isMemberPointerType();
       if (!Included && !Plain) {
-        Model.Skipped.push_back({Name, "not selected for a shallow root "
-                                       "(SYMCR_INCLUDE or '#pragma symcr include(" +
-                                           OwnerName + "::" + Name + ")' selects it)"});
+        Model.Skipped.push_back(
+            {Name, "not selected for a shallow root "
+                   "(SYMCR_INCLUDE or '#pragma symcr include(" +
+                       OwnerName + "::" + Name + ")' selects it)"});
         continue;
       }
     }
@@ -614,28 +624,33 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
     }
     FieldModel Field;
     Field.Name = Name;
-    Field.RestoresAlone =
-        hasAnnotation(FD, "restores_alone") ||
-        Lookup(Select.RestoresAloneFields, Name) != Select.RestoresAloneFields.end();
-    bool NotOwner = hasAnnotation(FD, "not_owner") ||
-                    Lookup(Select.NotOwnerFields, Name) != Select.NotOwnerFields.end();
+    Field.RestoresAlone = hasAnnotation(FD, "restores_alone") ||
+                          Lookup(Select.RestoresAloneFields, Name) !=
+                              Select.RestoresAloneFields.end();
+    bool NotOwner =
+        hasAnnotation(FD, "not_owner") ||
+        Lookup(Select.NotOwnerFields, Name) != Select.NotOwnerFields.end();
     if (NotOwner && !FieldType.getCanonicalType()->isPointerType()) {
-      Sink->error(F.Where, "member '" + F.Path +
-                               "' is declared never to own a heap object "
-                               "(SYMCR_NOT_OWNER, not_owner), but it is not a raw "
-                               "pointer");
+      Sink->error(F.Where,
+                  "member '" + F.Path +
+                      "' is declared never to own a heap object "
+                      "(SYMCR_NOT_OWNER, not_owner), but it is not a raw "
+                      "pointer");
       Ok = false;
       continue;
     }
-    Field.Type = NotOwner ? neverOwningPointer(FieldType, F) : walk(FieldType, F);
+    Field.Type =
+        NotOwner ? neverOwningPointer(FieldType, F) : walk(FieldType, F);
     if (Field.Type == symcr::kNoType) {
       Ok = false;
       continue;
     }
     if (Field.RestoresAlone && !isStateFlag(Program.Types[Field.Type])) {
-      Sink->error(F.Where, "member '" + F.Path +
-                               "' is declared to restore alone (SYMCR_RESTORES_ALONE, "
-                               "restores_alone), but it is not a boolean or enum state flag");
+      Sink->error(
+          F.Where,
+          "member '" + F.Path +
+              "' is declared to restore alone (SYMCR_RESTORES_ALONE, "
+              "restores_alone), but it is not a boolean or enum state flag");
       Ok = false;
       continue;
     }
@@ -701,8 +716,9 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
     }
     const auto TimeDirective = Lookup(Select.FieldTimes, Name);
     if (!fieldTime(FD,
-                   TimeDirective != Select.FieldTimes.end() ? &TimeDirective->second
-                                                            : nullptr,
+                   TimeDirective != Select.FieldTimes.end()
+                       ? &TimeDirective->second
+                       : nullptr,
                    Field, F))
       Ok = false;
     Model.Fields.push_back(Field);
@@ -802,9 +818,11 @@ std::uint32_t TypeWalker::record(QualType Type, const RecordDecl *Decl,
   return Index;
 }
 
-/// The classes (Struct types) the raw pointers reachable from \p RootTypes point to.
-static std::set<std::uint32_t> pointeeClasses(const ProgramModel &Program,
-                                              const std::vector<std::uint32_t> &RootTypes) {
+/// The classes (Struct types) the raw pointers reachable from \p RootTypes
+/// point to.
+static std::set<std::uint32_t>
+pointeeClasses(const ProgramModel &Program,
+               const std::vector<std::uint32_t> &RootTypes) {
   std::set<std::uint32_t> Seen, Pointees;
   std::vector<std::uint32_t> Pending(RootTypes.begin(), RootTypes.end());
   while (!Pending.empty()) {
@@ -821,7 +839,8 @@ static std::set<std::uint32_t> pointeeClasses(const ProgramModel &Program,
       Pending.push_back(D);
     if (Model.Element != symcr::kNoType)
       Pending.push_back(Model.Element);
-    if (Model.Kind == symcr::Kind::Pointer && Model.Element < Program.Types.size() &&
+    if (Model.Kind == symcr::Kind::Pointer &&
+        Model.Element < Program.Types.size() &&
         Program.Types[Model.Element].Kind == symcr::Kind::Struct)
       Pointees.insert(Model.Element);
   }
@@ -829,7 +848,8 @@ static std::set<std::uint32_t> pointeeClasses(const ProgramModel &Program,
 }
 
 void TypeWalker::addReferenceMembers(
-    const std::vector<std::tuple<std::string, QualType, std::uint32_t>> &ClassRoots,
+    const std::vector<std::tuple<std::string, QualType, std::uint32_t>>
+        &ClassRoots,
     const std::vector<std::uint32_t> &RootTypes) {
   if (ClassRoots.empty())
     return;
@@ -840,8 +860,10 @@ void TypeWalker::addReferenceMembers(
     const std::string &Name = std::get<0>(Root);
     std::uint32_t Index = std::get<2>(Root);
     const RecordDecl *Decl = std::get<1>(Root)->getAsRecordDecl();
-    const RecordDecl *RD = Decl ? completeDefinition(Decl, SourceLocation()) : nullptr;
-    if (!RD || RD->isUnion() || Program.Types[Index].Kind != symcr::Kind::Struct)
+    const RecordDecl *RD =
+        Decl ? completeDefinition(Decl, SourceLocation()) : nullptr;
+    if (!RD || RD->isUnion() ||
+        Program.Types[Index].Kind != symcr::Kind::Struct)
       continue;
     const ASTRecordLayout &Layout = Context.getASTRecordLayout(RD);
     std::vector<std::string> Keys = recordKeys(RD);
@@ -881,9 +903,10 @@ void TypeWalker::addReferenceMembers(
   }
 }
 
-std::uint32_t TypeWalker::referenceView(QualType Type, const std::set<std::uint32_t> &Pointees,
-                                        const std::string &Root, const WalkContext &C,
-                                        int Depth) {
+std::uint32_t TypeWalker::referenceView(QualType Type,
+                                        const std::set<std::uint32_t> &Pointees,
+                                        const std::string &Root,
+                                        const WalkContext &C, int Depth) {
   Type = Type.getCanonicalType().getUnqualifiedType();
   if (Depth > 64)
     return symcr::kNoType;
@@ -891,14 +914,16 @@ std::uint32_t TypeWalker::referenceView(QualType Type, const std::set<std::uint3
   if (Done != Views.end())
     return Done->second;
   std::uint32_t Result = symcr::kNoType;
-  // "ModeLoiter (references of vehicle)": a view is its root's, so that two roots selecting
-  // differently never describe one type two ways.
+  // "ModeLoiter (references of vehicle)": a view is its root's, so that two
+  // roots selecting differently never describe one type two ways.
   const std::string Suffix = " (references of " + Root + ")";
   if (const auto *AT = Context.getAsConstantArrayType(Type)) {
-    std::uint32_t Element = referenceView(AT->getElementType(), Pointees, Root, C, Depth + 1);
+    std::uint32_t Element =
+        referenceView(AT->getElementType(), Pointees, Root, C, Depth + 1);
     if (Element == symcr::kNoType)
       return symcr::kNoType;
-    if (Pointees.count(Element) && !(Program.Types[Element].Flags & symcr::kTypeShallow)) {
+    if (Pointees.count(Element) &&
+        !(Program.Types[Element].Flags & symcr::kTypeShallow)) {
       Result = walk(Type, C); // an array of a pointee class: described in full
     } else {
       TypeModel Model;
@@ -921,7 +946,8 @@ std::uint32_t TypeWalker::referenceView(QualType Type, const std::set<std::uint3
     llvm::StringRef StdName;
     const auto *CRD = dyn_cast_or_null<CXXRecordDecl>(RD);
     if (!RD || RD->isUnion() || RD->isInvalidDecl() || RD->isDependentType() ||
-        isStdTemplate(RD, StdName) || (CRD && (CRD->isLambda() || CRD->getNumVBases() > 0)))
+        isStdTemplate(RD, StdName) ||
+        (CRD && (CRD->isLambda() || CRD->getNumVBases() > 0)))
       return symcr::kNoType;
     const ASTRecordLayout &Layout = Context.getASTRecordLayout(RD);
     TypeModel Model = describe(Type, C);
@@ -932,7 +958,8 @@ std::uint32_t TypeWalker::referenceView(QualType Type, const std::set<std::uint3
         const CXXRecordDecl *BaseRD = Base.getType()->getAsCXXRecordDecl();
         if (!BaseRD)
           continue;
-        std::uint32_t BaseType = referenceView(Base.getType(), Pointees, Root, C, Depth + 1);
+        std::uint32_t BaseType =
+            referenceView(Base.getType(), Pointees, Root, C, Depth + 1);
         if (BaseType == symcr::kNoType)
           continue;
         FieldModel Field;
@@ -949,7 +976,8 @@ std::uint32_t TypeWalker::referenceView(QualType Type, const std::set<std::uint3
         continue;
       WalkContext F = C;
       F.Path = C.Path + "." + Member;
-      std::uint32_t MemberType = referenceView(FD->getType(), Pointees, Root, F, Depth + 1);
+      std::uint32_t MemberType =
+          referenceView(FD->getType(), Pointees, Root, F, Depth + 1);
       if (MemberType == symcr::kNoType)
         continue;
       FieldModel Field;

@@ -1,4 +1,5 @@
-//===- TypeWalker.h - Types reachable from roots, into the model ------------===//
+//===- TypeWalker.h - Types reachable from roots, into the model
+//------------===//
 //
 // Internal to the schema builder. The walker's work is split by job:
 //   TypeWalker.cpp      the walk: scalars, enums, arrays, pointers, records and
@@ -43,7 +44,8 @@ struct Selections {
   std::set<std::pair<std::string, std::string>> IncludedFields;
   /// not_owner(Type::field): pointers declared never to own a heap object.
   std::set<std::pair<std::string, std::string>> NotOwnerFields;
-  /// restores_alone(Type::field): state flags that describe only restored state.
+  /// restores_alone(Type::field): state flags that describe only restored
+  /// state.
   std::set<std::pair<std::string, std::string>> RestoresAloneFields;
   /// range(Type::field, lo, hi) directives.
   std::map<std::pair<std::string, std::string>, std::pair<double, double>>
@@ -71,7 +73,8 @@ struct WalkContext {
   std::string SkipHint;      ///< "AP_AHRS::backend", for the fix in diagnostics
   std::string AnonymousName; ///< name for an unnamed record held by this field
   bool Shallow = false;
-  /// The member whose value holds the current one (empty at a root's top level).
+  /// The member whose value holds the current one (empty at a root's top
+  /// level).
   MemberRef Enclosing;
   /// Where the walk left the selected object for another one through a pointer:
   /// the member to skip for everything unrestorable beyond (empty until then).
@@ -86,7 +89,8 @@ public:
              const Selections &Select)
       : Context(Context), S(S), TUIndex(TUIndex), Program(Program),
         Sink(&Diags), Select(Select) {
-    Policy = std::make_unique<clang::PrintingPolicy>(Context.getPrintingPolicy());
+    Policy =
+        std::make_unique<clang::PrintingPolicy>(Context.getPrintingPolicy());
     Policy->SuppressUnwrittenScope = true;
     Policy->SuppressTagKeyword = Context.getLangOpts().CPlusPlus;
     Policy->FullyQualifiedName = true;
@@ -102,13 +106,15 @@ public:
     return recordName(RD, WalkContext());
   }
 
-  /// After every root of the TU is walked: lists, in each root's class, the members whose
-  /// values are not saved (a shallow root's unselected members, skipped members) at or inside
-  /// which a pointer of the TU's state may point (kTypeReferenceMembers), so that such a pointer
-  /// is saved as a reference by path. \p ClassRoots: each root's name, declared type and type
-  /// index (roots not of class type are passed over); \p RootTypes: every root's type index.
+  /// After every root of the TU is walked: lists, in each root's class, the
+  /// members whose values are not saved (a shallow root's unselected members,
+  /// skipped members) at or inside which a pointer of the TU's state may point
+  /// (kTypeReferenceMembers), so that such a pointer is saved as a reference by
+  /// path. \p ClassRoots: each root's name, declared type and type index (roots
+  /// not of class type are passed over); \p RootTypes: every root's type index.
   void addReferenceMembers(
-      const std::vector<std::tuple<std::string, clang::QualType, std::uint32_t>> &ClassRoots,
+      const std::vector<std::tuple<std::string, clang::QualType, std::uint32_t>>
+          &ClassRoots,
       const std::vector<std::uint32_t> &RootTypes);
 
   /// The TU's class definitions with virtual functions (NameIndex).
@@ -131,21 +137,23 @@ private:
                       const WalkContext &C);
   std::uint32_t pointer(clang::QualType Type, const clang::PointerType *PT,
                         const WalkContext &C);
-  /// A raw pointer declared never to own a heap object (kTypeNeverOwns): its pointee is
-  /// walked, but no heap lifecycle or dynamic type is sought for it.
+  /// A raw pointer declared never to own a heap object (kTypeNeverOwns): its
+  /// pointee is walked, but no heap lifecycle or dynamic type is sought for it.
   std::uint32_t neverOwningPointer(clang::QualType Type, const WalkContext &C);
   std::uint32_t synthesizedPair(clang::QualType Key, clang::QualType Value,
                                 const WalkContext &C);
-  bool fillFields(const clang::RecordDecl *RD, TypeModel &Model, const WalkContext &C);
-  /// Marks \p Field a time of a clock when its member, a directive or a typedef in its
-  /// type says so (Clocks.cpp); false after a diagnostic.
-  bool fieldTime(const clang::FieldDecl *FD, const TimeSpec *Directive, FieldModel &Field,
-                 const WalkContext &F);
-  bool checkPointee(clang::QualType Pointee, const WalkContext &C, const char *Holder);
+  bool fillFields(const clang::RecordDecl *RD, TypeModel &Model,
+                  const WalkContext &C);
+  /// Marks \p Field a time of a clock when its member, a directive or a typedef
+  /// in its type says so (Clocks.cpp); false after a diagnostic.
+  bool fieldTime(const clang::FieldDecl *FD, const TimeSpec *Directive,
+                 FieldModel &Field, const WalkContext &F);
+  bool checkPointee(clang::QualType Pointee, const WalkContext &C,
+                    const char *Holder);
   /// Finds the classes (\p Base or derived from it) a heap object behind a
   /// pointer to \p Base may be saved as, and walks each into the schema.
-  void findDynamicTypes(const clang::CXXRecordDecl *Base, std::uint32_t BaseIndex,
-                        const WalkContext &C);
+  void findDynamicTypes(const clang::CXXRecordDecl *Base,
+                        std::uint32_t BaseIndex, const WalkContext &C);
   /// Why restore cannot create \p Class as a heap object; empty if it can.
   std::string whyNotCreatable(const clang::CXXRecordDecl *Class);
   /// Walks \p Type, or leaves the program model as it was and says why not.
@@ -161,29 +169,34 @@ private:
   const char *leftToNewBuild(clang::QualType Type) const;
   std::string canonicalName(clang::QualType Type, const WalkContext &C);
   std::string recordName(const clang::RecordDecl *RD, const WalkContext &C);
-  std::string templateArgumentsName(const clang::ClassTemplateSpecializationDecl *Spec,
-                                    const WalkContext &C);
+  std::string
+  templateArgumentsName(const clang::ClassTemplateSpecializationDecl *Spec,
+                        const WalkContext &C);
   bool isSkippedType(const clang::RecordDecl *RD, std::string &Why);
   std::vector<std::string> recordKeys(const clang::RecordDecl *RD);
 
   /// The definition of \p RD, instantiating a class template specialization
   /// the TU only named (never asks for the layout of anything dependent).
   const clang::RecordDecl *completeDefinition(const clang::RecordDecl *RD,
-                                       clang::SourceLocation Where);
+                                              clang::SourceLocation Where);
 
   clang::ASTContext &Context;
   clang::Sema *S;
   unsigned TUIndex;
   ProgramModel &Program;
-  /// Where diagnostics go: the program's, or a quiet one during a tentative walk.
+  /// Where diagnostics go: the program's, or a quiet one during a tentative
+  /// walk.
   Diagnostics *Sink;
   const Selections &Select;
   std::unique_ptr<clang::PrintingPolicy> Policy;
-  /// The type a reference member of \p Type is: the type itself when it is a class some
-  /// pointer points to (\p Pointees), else a view (kTypeShallow) holding only the members on
-  /// the way to such a class; kNoType when it holds none.
-  std::uint32_t referenceView(clang::QualType Type, const std::set<std::uint32_t> &Pointees,
-                              const std::string &Root, const WalkContext &C, int Depth);
+  /// The type a reference member of \p Type is: the type itself when it is a
+  /// class some pointer points to (\p Pointees), else a view (kTypeShallow)
+  /// holding only the members on the way to such a class; kNoType when it holds
+  /// none.
+  std::uint32_t referenceView(clang::QualType Type,
+                              const std::set<std::uint32_t> &Pointees,
+                              const std::string &Root, const WalkContext &C,
+                              int Depth);
   /// Views already made, by canonical Type* and root.
   std::map<std::pair<const clang::Type *, std::string>, std::uint32_t> Views;
 

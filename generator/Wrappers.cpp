@@ -59,15 +59,18 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
       Clocks.push_back(I);
   if (Home.empty() && Roots.empty() && Clocks.empty())
     return OS.str();
-  // A clock's reading as the runtime takes it: an unsigned 64-bit count converted without a
-  // value change a warning could flag, anything narrower implicitly.
+  // A clock's reading as the runtime takes it: an unsigned 64-bit count
+  // converted without a value change a warning could flag, anything narrower
+  // implicitly.
   auto ClockThunks = [&](const char *Int64, const char *Uint64, bool C) {
     for (std::size_t I : Clocks) {
       const ClockModel &Clock = Program.Clocks[I];
       const std::string Name = "symcr_gen_clock_" + symbolOf(Clock.Symbol, I);
-      OS << Int64 << " " << Name << "(void);\n" << Int64 << " " << Name << "(void) {\n";
+      OS << Int64 << " " << Name << "(void);\n"
+         << Int64 << " " << Name << "(void) {\n";
       if (Clock.Unsigned64)
-        OS << "  const " << Uint64 << " reading = " << Clock.CallExpression << ";\n  return "
+        OS << "  const " << Uint64 << " reading = " << Clock.CallExpression
+           << ";\n  return "
            << (C ? std::string("(") + Int64 + ")reading"
                  : std::string("static_cast<") + Int64 + ">(reading)")
            << ";\n";
@@ -79,8 +82,8 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
 
   if (TU.IsC) {
     OS << "#include <stddef.h>\n#include <stdlib.h>\n\n";
-    // The lifecycle's type is the runtime's own (symcr::Lifecycle in C++), from the header
-    // both languages include.
+    // The lifecycle's type is the runtime's own (symcr::Lifecycle in C++), from
+    // the header both languages include.
     bool LifecycleDeclared = false;
     for (std::uint32_t I : Home) {
       const TypeModel &T = Program.Types[I];
@@ -94,15 +97,15 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
          << "(void) { return calloc(1, sizeof(" << T.Spelling << ")); }\n"
          << "static void symcr_gen_destroy_" << S
          << "(void* object) { free(object); }\n"
-         << "extern const struct symcr_lifecycle symcr_gen_c_lifecycle_"
-         << S << ";\n"
+         << "extern const struct symcr_lifecycle symcr_gen_c_lifecycle_" << S
+         << ";\n"
          << "const struct symcr_lifecycle symcr_gen_c_lifecycle_" << S
          << " = {symcr_gen_create_" << S << ", symcr_gen_destroy_" << S
          << ", NULL};\n";
     }
     for (std::uint32_t I : Home) {
       const TypeModel &T = Program.Types[I];
-    const std::string S = symbolOf(T.Symbol, I);
+      const std::string S = symbolOf(T.Symbol, I);
       if (T.Spelling.empty())
         continue;
       OS << "_Static_assert(sizeof(" << T.Spelling << ") == " << T.Size
@@ -118,9 +121,10 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
     }
     // Declared first, as in C++: -Wmissing-variable-declarations.
     for (std::uint32_t I : Roots)
-      OS << "extern void* const symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I)
-         << ";\n"
-         << "void* const symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I) << " = "
+      OS << "extern void* const symcr_gen_root_"
+         << symbolOf(Program.Roots[I].Symbol, I) << ";\n"
+         << "void* const symcr_gen_root_"
+         << symbolOf(Program.Roots[I].Symbol, I) << " = "
          << Program.Roots[I].AddressExpression << ";\n";
     if (!Clocks.empty())
       OS << "#include <stdint.h>\n";
@@ -235,9 +239,10 @@ std::string emitWrapper(const ProgramModel &Program, unsigned TUIndex) {
   if (!Roots.empty()) {
     OS << "extern \"C\" {\n";
     for (std::uint32_t I : Roots)
-      OS << "extern void* const symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I)
-         << ";\n"
-         << "void* const symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I) << " = "
+      OS << "extern void* const symcr_gen_root_"
+         << symbolOf(Program.Roots[I].Symbol, I) << ";\n"
+         << "void* const symcr_gen_root_"
+         << symbolOf(Program.Roots[I].Symbol, I) << " = "
          << Program.Roots[I].AddressExpression << ";\n";
     OS << "}\n";
   }

@@ -45,8 +45,8 @@ class AddressTable {
   }
 
   // The value slot for the key, inserting `initial` when absent (`inserted` tells which).
-  std::uint32_t& find_or_insert(std::uintptr_t address, std::uint32_t type,
-                                std::uint32_t initial, bool& inserted) {
+  std::uint32_t& find_or_insert(std::uintptr_t address, std::uint32_t type, std::uint32_t initial,
+                                bool& inserted) {
     if ((used_.size() + 1) * 2 > slots_.size()) grow();
     const std::size_t mask = slots_.size() - 1;
     for (std::size_t i = hash(address, type) & mask;; i = (i + 1) & mask) {
@@ -72,8 +72,8 @@ class AddressTable {
   };
 
   static std::size_t hash(std::uintptr_t address, std::uint32_t type) {
-    std::uint64_t x = (static_cast<std::uint64_t>(address) ^ (std::uint64_t{type} << 47)) *
-                      0x9E3779B97F4A7C15ull;
+    std::uint64_t x =
+        (static_cast<std::uint64_t>(address) ^ (std::uint64_t{type} << 47)) * 0x9E3779B97F4A7C15ull;
     return static_cast<std::size_t>(x ^ (x >> 32));
   }
 

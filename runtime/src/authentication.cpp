@@ -87,8 +87,8 @@ void sign_record(const KeyRing& keys, std::uint8_t* record, std::size_t size,
   std::memcpy(record + format::kRecordMacOffset, mac, sizeof mac);
 }
 
-Status check_authentication(const KeyRing* keys, const std::uint8_t* record,
-                            const RecordView& view, const RecordBinding& binding) {
+Status check_authentication(const KeyRing* keys, const std::uint8_t* record, const RecordView& view,
+                            const RecordBinding& binding) {
   if (keys == nullptr) return Status();
   const RecordHeader& header = view.header;
   if ((header.flags & format::kRecordAuthenticated) == 0) {

@@ -62,8 +62,8 @@ void sign_record(const KeyRing& keys, std::uint8_t* record, std::size_t size,
 // Whether a record parse_record accepted may be restored by a program holding `keys`: without
 // keys (null), any; with keys, only an authenticated one whose MAC verifies with the key its
 // header names, for `binding` (Error::Unauthenticated otherwise, saying which it is).
-Status check_authentication(const KeyRing* keys, const std::uint8_t* record,
-                            const RecordView& view, const RecordBinding& binding);
+Status check_authentication(const KeyRing* keys, const std::uint8_t* record, const RecordView& view,
+                            const RecordBinding& binding);
 
 // check_authentication for a standalone checkpoint (a file or a buffer): bound to no store and
 // to the SHA-256 of its inline schema.

@@ -80,10 +80,9 @@ int symcr_checkpoint(const char* path) { return symcr_checkpoint_with(nullptr, p
 int symcr_checkpoint_with(const symcr_schema* schema, const char* path, int fdatasync) {
   if (path == nullptr) return record_c_error(symcr::Status(symcr::Error::Io, "no path given"));
   symcr::CheckpointOptions options;
-  options.durability =
-      fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
+  options.durability = fdatasync != 0 ? symcr::Durability::Fdatasync : symcr::Durability::PageCache;
   return record_c_error(schema != nullptr ? symcr::checkpoint(*schema, path, options)
-                                  : symcr::checkpoint(path, options));
+                                          : symcr::checkpoint(path, options));
 }
 
 int symcr_restore(const char* path, int flags, symcr_report** report) {
@@ -94,7 +93,8 @@ int symcr_restore_with(const symcr_schema* schema, const char* path, int flags,
                        symcr_report** report) {
   symcr::Report result;
   if (path == nullptr) {
-    symcr::detail::ReportAccess::set_status(result, symcr::Status(symcr::Error::Io, "no path given"));
+    symcr::detail::ReportAccess::set_status(result,
+                                            symcr::Status(symcr::Error::Io, "no path given"));
   } else {
     result = schema != nullptr ? symcr::restore(*schema, path, restore_options(flags))
                                : symcr::restore(path, restore_options(flags));
@@ -102,17 +102,14 @@ int symcr_restore_with(const symcr_schema* schema, const char* path, int flags,
   return hand_over(std::move(result), report);
 }
 
-int symcr_report_ok(const symcr_report* report) {
-  return report != nullptr && report->report.ok();
-}
+int symcr_report_ok(const symcr_report* report) { return report != nullptr && report->report.ok(); }
 
 int symcr_report_lossless(const symcr_report* report) {
   return report != nullptr && report->report.lossless();
 }
 
 int symcr_report_error(const symcr_report* report) {
-  return report != nullptr ? static_cast<int>(report->report.status().error())
-                           : SYMCR_ERROR_IO;
+  return report != nullptr ? static_cast<int>(report->report.status().error()) : SYMCR_ERROR_IO;
 }
 
 uint64_t symcr_report_sequence(const symcr_report* report) {
@@ -120,8 +117,7 @@ uint64_t symcr_report_sequence(const symcr_report* report) {
 }
 
 size_t symcr_report_count(const symcr_report* report, int decision) {
-  if (report == nullptr || decision < 0 ||
-      decision > static_cast<int>(symcr::Decision::Rebased)) {
+  if (report == nullptr || decision < 0 || decision > static_cast<int>(symcr::Decision::Rebased)) {
     return 0;
   }
   return report->report.count(static_cast<symcr::Decision>(decision));
@@ -201,7 +197,8 @@ int symcr_store_open(const char* path, const symcr_schema* schema,
     store_options.allow_unrecorded_restore = options->allow_unrecorded_restore != 0;
     store_options.counter_path = options->counter_path;
   }
-  const symcr_freshness_counter* counter = options != nullptr ? options->freshness_counter : nullptr;
+  const symcr_freshness_counter* counter =
+      options != nullptr ? options->freshness_counter : nullptr;
   if (counter != nullptr && (counter->read == nullptr || counter->advance == nullptr)) {
     return record_c_error(symcr::Status(
         symcr::Error::Unsupported, "symcr_store_open: a freshness counter needs read and advance"));
@@ -216,9 +213,9 @@ int symcr_store_open(const char* path, const symcr_schema* schema,
     }
     store_options.freshness_counter = handle->counter.get();
   }
-  const symcr::Status status =
-      schema != nullptr ? symcr::Store::open(path, *schema, store_options, handle->store)
-                        : symcr::Store::open(path, store_options, handle->store);
+  const symcr::Status status = schema != nullptr
+                                   ? symcr::Store::open(path, *schema, store_options, handle->store)
+                                   : symcr::Store::open(path, store_options, handle->store);
   if (!status.ok()) {
     delete handle;
     return record_c_error(status);

@@ -59,11 +59,12 @@ void Restorer::decide_clock_deltas(const ClockReadings& readings) {
       continue;
     }
     const std::int64_t now = clocks[c]->read();
-    clock_deltas_[c] =
-        static_cast<std::int64_t>(static_cast<std::uint64_t>(now) - static_cast<std::uint64_t>(saved));
+    clock_deltas_[c] = static_cast<std::int64_t>(static_cast<std::uint64_t>(now) -
+                                                 static_cast<std::uint64_t>(saved));
     rebasing_ = true;
     std::snprintf(detail, sizeof detail,
-                  "read %" PRId64 " at the checkpoint and %" PRId64 " now: its times moved by %" PRId64,
+                  "read %" PRId64 " at the checkpoint and %" PRId64
+                  " now: its times moved by %" PRId64,
                   saved, now, clock_deltas_[c]);
     ReportAccess::add(report_, path, Decision::Rebased, detail, false);
   }

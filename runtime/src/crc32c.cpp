@@ -166,8 +166,7 @@ __attribute__((target("sse4.2"))) inline std::uint64_t load_word(const std::uint
 // when kCopy (each word stored as it was loaded and checksummed). No __restrict: with it GCC
 // splits the loop back into a copy followed by a checksum of the copy.
 template <bool kCopy>
-__attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c,
-                                                             std::uint8_t* d,
+__attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c, std::uint8_t* d,
                                                              const std::uint8_t* p,
                                                              std::size_t block,
                                                              const ShiftTable& t) {
@@ -176,8 +175,7 @@ __attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c,
   // Unrolled: the loop's own increment, compare and branch were a third of its instructions.
 #pragma GCC unroll 4
   for (; p < end; p += 8, d += kCopy ? 8 : 0) {
-    const std::uint64_t w0 = load_word(p), w1 = load_word(p + block),
-                        w2 = load_word(p + 2 * block);
+    const std::uint64_t w0 = load_word(p), w1 = load_word(p + block), w2 = load_word(p + 2 * block);
     if (kCopy) {
       std::memcpy(d, &w0, 8);
       std::memcpy(d + block, &w1, 8);
@@ -193,8 +191,7 @@ __attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c,
 
 // crc32c_extend_hardware, and with kCopy crc32c_copy_hardware: the bytes of `p` copied to `d`.
 template <bool kCopy>
-__attribute__((target("sse4.2"))) std::uint32_t extend_hardware(std::uint32_t crc,
-                                                                std::uint8_t* d,
+__attribute__((target("sse4.2"))) std::uint32_t extend_hardware(std::uint32_t crc, std::uint8_t* d,
                                                                 const std::uint8_t* p,
                                                                 std::size_t size) {
   std::uint32_t c = ~crc;

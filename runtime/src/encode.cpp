@@ -204,8 +204,8 @@ class Encoder {
       out_.resize(start_);
       return Status();
     }
-    if (!exact_ && (overlap_suspected_ ||
-                    (track_regions_ && !s_.heap.empty() && heap_objects_overlap()))) {
+    if (!exact_ &&
+        (overlap_suspected_ || (track_regions_ && !s_.heap.empty() && heap_objects_overlap()))) {
       overlap_suspected_ = true;
       out_.resize(start_);
       return Status();
@@ -398,7 +398,6 @@ class Encoder {
   }
 
  private:
-
   // ---- values --------------------------------------------------------------------------
   void encode(std::uint32_t type_index, const std::uint8_t* p) {
     const std::uint32_t first_run = facts_.flat_first[type_index];
@@ -699,9 +698,9 @@ class Encoder {
     const void* target = *reinterpret_cast<const void* const*>(slot);
     if (!target) return;
     bool inserted = false;
-    const std::uint32_t entry = s_.memo.find_or_insert(reinterpret_cast<std::uintptr_t>(target),
-                                                       types_[pointer_type].element, kNoRegion,
-                                                       inserted);
+    const std::uint32_t entry =
+        s_.memo.find_or_insert(reinterpret_cast<std::uintptr_t>(target),
+                               types_[pointer_type].element, kNoRegion, inserted);
     if (entry == kOutside || entry >= s_.references.size()) return;
     PointerTarget& reference = s_.references[entry];
     if (reference.never_owner_type != kNoType) return;
@@ -765,8 +764,15 @@ class Encoder {
       // A heap object made earlier for a pointer to this object's first member: this object
       // encloses it.
       const Region& found = s_.regions[region];
-      const Region target{reference.address, reference.address + size_of(reference.type),
-                          reference.type, RegionKind::Object, 0, 0, 0, 0, 0};
+      const Region target{reference.address,
+                          reference.address + size_of(reference.type),
+                          reference.type,
+                          RegionKind::Object,
+                          0,
+                          0,
+                          0,
+                          0,
+                          0};
       if (found.end < target.end) fold(target, /*heap_object=*/true, found);
     }
     s_.references[i].region = region;
@@ -1156,11 +1162,11 @@ class Encoder {
   bool memory_refreshed_ = false;
   bool exact_ = false;  // heap objects indexed too (the second pass)
   bool overlap_suspected_ = false;
-  bool refold_ = false;                     // an enclosure was learned: the pass runs again
+  bool refold_ = false;          // an enclosure was learned: the pass runs again
   std::uint32_t fused_crc_ = 0;  // CRC-32C of out_ from start_ to fused_to_ (put_fused)
   std::size_t fused_to_ = 0;
-  bool fused_ = false;        // a large copy was checksummed as it was made
-  bool fused_valid_ = true;   // and nothing before fused_to_ was written again since
+  bool fused_ = false;                       // a large copy was checksummed as it was made
+  bool fused_valid_ = true;                  // and nothing before fused_to_ was written again since
   std::uint32_t encoding_heap_ = kNoRegion;  // region of the heap object being encoded
   std::uint32_t container_ordinal_ = 0;
   int depth_ = 0;
@@ -1184,8 +1190,7 @@ std::size_t encode_scratch_bytes() {
   return s.memo.capacity_bytes() + s.buckets.capacity_bytes() + capacity_bytes(s.chain) +
          capacity_bytes(s.regions) + capacity_bytes(s.large_regions) +
          capacity_bytes(s.references) + capacity_bytes(s.heap) + capacity_bytes(s.steps) +
-         capacity_bytes(s.spans) + capacity_bytes(s.spans_scratch) +
-         capacity_bytes(s.enclosures);
+         capacity_bytes(s.spans) + capacity_bytes(s.spans_scratch) + capacity_bytes(s.enclosures);
 }
 
 Status encode_payload_at(const Schema& schema, std::vector<std::uint8_t>& out, std::size_t at,

@@ -111,19 +111,22 @@ void remove_stale_temp_files(const char* path) {
     std::size_t base_length;
     long own_pid;
   } listing{directory, base, std::strlen(base), file_system().process_id()};
-  file_system().list_directory(directory, [](void* context, const char* name) {
-    const Listing& l = *static_cast<const Listing*>(context);
-    const long pid = temp_file_pid(name, l.base, l.base_length);
-    // Our own pid: another thread of this process may be writing that file right now.
-    if (pid <= 0 || pid == l.own_pid || file_system().process_exists(pid)) return;
-    char temp[PATH_MAX];
-    const int n = std::snprintf(temp, sizeof temp, "%s/%s", l.directory, name);
-    if (n <= 0 || static_cast<std::size_t>(n) >= sizeof temp) return;
-    struct stat info {};
-    if (file_system().lstat(temp, &info) != 0) return;
-    if (!S_ISREG(info.st_mode) || info.st_uid != ::geteuid()) return;
-    file_system().unlink(temp);
-  }, &listing);
+  file_system().list_directory(
+      directory,
+      [](void* context, const char* name) {
+        const Listing& l = *static_cast<const Listing*>(context);
+        const long pid = temp_file_pid(name, l.base, l.base_length);
+        // Our own pid: another thread of this process may be writing that file right now.
+        if (pid <= 0 || pid == l.own_pid || file_system().process_exists(pid)) return;
+        char temp[PATH_MAX];
+        const int n = std::snprintf(temp, sizeof temp, "%s/%s", l.directory, name);
+        if (n <= 0 || static_cast<std::size_t>(n) >= sizeof temp) return;
+        struct stat info {};
+        if (file_system().lstat(temp, &info) != 0) return;
+        if (!S_ISREG(info.st_mode) || info.st_uid != ::geteuid()) return;
+        file_system().unlink(temp);
+      },
+      &listing);
 }
 
 Status pwrite_all(int fd, const void* data, std::size_t size, off_t offset, const char* path) {
@@ -147,7 +150,8 @@ Status pread_full(int fd, void* data, std::size_t size, off_t offset, std::size_
   auto* p = static_cast<std::uint8_t*>(data);
   got = 0;
   while (got < size) {
-    const ssize_t n = file_system().pread(fd, p + got, size - got, offset + static_cast<off_t>(got));
+    const ssize_t n =
+        file_system().pread(fd, p + got, size - got, offset + static_cast<off_t>(got));
     if (n < 0) {
       if (errno == EINTR) continue;
       return io_error("cannot read", path, errno);
@@ -167,8 +171,10 @@ Status open_regular_file(const char* path, FdGuard& fd, struct stat& info) {
   fd.reset(open_retrying(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK));
   if (fd.get() < 0) {
     if (errno == ELOOP) {
-      return Status(Error::Io, "cannot open %s: it is a symbolic link, which symcr does not "
-                    "follow", path);
+      return Status(Error::Io,
+                    "cannot open %s: it is a symbolic link, which symcr does not "
+                    "follow",
+                    path);
     }
     return io_error("cannot open", path, errno);
   }
@@ -179,8 +185,7 @@ Status open_regular_file(const char* path, FdGuard& fd, struct stat& info) {
 
 }  // namespace
 
-Status read_regular_file(const char* path, std::uint64_t max_size,
-                         std::vector<std::uint8_t>& out) {
+Status read_regular_file(const char* path, std::uint64_t max_size, std::vector<std::uint8_t>& out) {
   FdGuard fd(-1);
   struct stat info {};
   Status opened = open_regular_file(path, fd, info);
@@ -213,8 +218,7 @@ Status read_regular_file(const char* path, std::uint64_t max_size,
   return Status();
 }
 
-Status read_record_file(const char* path, std::vector<std::uint8_t>& out,
-                        std::uint64_t& trailing) {
+Status read_record_file(const char* path, std::vector<std::uint8_t>& out, std::uint64_t& trailing) {
   trailing = 0;
   FdGuard fd(-1);
   struct stat info {};
@@ -244,21 +248,20 @@ Status read_record_file(const char* path, std::vector<std::uint8_t>& out,
   // never grows the read past the record, whatever is appended meanwhile.
   out.resize(static_cast<std::size_t>(file_size));
   std::size_t rest = 0;
-  status = pread_full(fd.get(), out.data() + got, out.size() - got, static_cast<off_t>(got), rest,
-                      path);
+  status =
+      pread_full(fd.get(), out.data() + got, out.size() - got, static_cast<off_t>(got), rest, path);
   if (!status.ok()) return status;
   out.resize(got + rest);
   return Status();
 }
 
 bool temp_path_for(const char* path, unsigned attempt, char* out, std::size_t out_size) {
-  const int n = std::snprintf(out, out_size, "%s.tmp.%ld.%u", path,
-                              file_system().process_id(), attempt);
+  const int n =
+      std::snprintf(out, out_size, "%s.tmp.%ld.%u", path, file_system().process_id(), attempt);
   return n > 0 && static_cast<std::size_t>(n) < out_size;
 }
 
-Status create_temp_file(const char* path, int access, char* temp, std::size_t temp_size,
-                        int& fd) {
+Status create_temp_file(const char* path, int access, char* temp, std::size_t temp_size, int& fd) {
   constexpr unsigned kAttempts = 100;
   fd = -1;
   for (unsigned attempt = 0; attempt < kAttempts && fd < 0; ++attempt) {
@@ -318,7 +321,8 @@ Status sync_parent_directory(const char* path) {
   }
   FdGuard fd(open_retrying(directory, O_RDONLY | O_DIRECTORY | O_CLOEXEC));
   if (fd.get() < 0) return io_error("cannot open directory", directory, errno);
-  if (file_system().fsync(fd.get()) != 0) return io_error("cannot fsync directory", directory, errno);
+  if (file_system().fsync(fd.get()) != 0)
+    return io_error("cannot fsync directory", directory, errno);
   return Status();
 }
 

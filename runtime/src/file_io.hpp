@@ -25,8 +25,7 @@ Status pread_full(int fd, void* data, std::size_t size, off_t offset, std::size_
 // Reads a whole regular file into `out` (capacity reused). Refuses a symlink as the final
 // path component (O_NOFOLLOW) and anything but a regular file (FIFOs, devices), and a file
 // larger than `max_size` (Error::TooLarge) before allocating for it.
-Status read_regular_file(const char* path, std::uint64_t max_size,
-                         std::vector<std::uint8_t>& out);
+Status read_regular_file(const char* path, std::uint64_t max_size, std::vector<std::uint8_t>& out);
 
 // Reads the record at the start of regular file `path` into `out` (same refusals as
 // read_regular_file), its header first: only the bytes that header gives the record are read,
@@ -43,8 +42,7 @@ bool temp_path_for(const char* path, unsigned attempt, char* out, std::size_t ou
 // Creates "<path>.tmp.<pid>.<n>" for the first free n, exclusively (O_CREAT|O_EXCL|O_NOFOLLOW,
 // mode 0600, `access` being O_WRONLY or O_RDWR): its name goes into `temp`, its descriptor
 // into `fd`. An existing file or symlink of that name is never reused or followed.
-Status create_temp_file(const char* path, int access, char* temp, std::size_t temp_size,
-                        int& fd);
+Status create_temp_file(const char* path, int access, char* temp, std::size_t temp_size, int& fd);
 
 // Replaces `path` with `data` atomically: writes a new temp file in the same directory,
 // created exclusively (O_CREAT|O_EXCL|O_NOFOLLOW, mode 0600; an existing temp name is never

@@ -34,8 +34,7 @@ class FileSystem {
   virtual int rename(const char* from, const char* to) = 0;
   virtual int unlink(const char* path) = 0;
   // Calls `visit` with each entry's name in `directory`; false when it cannot be listed.
-  virtual bool list_directory(const char* directory,
-                              void (*visit)(void* context, const char* name),
+  virtual bool list_directory(const char* directory, void (*visit)(void* context, const char* name),
                               void* context) = 0;
   // The calling process's id and whether a process `pid` still exists: whose temp files are
   // stale.

@@ -37,8 +37,8 @@ bool fill_random(std::uint8_t* out, std::size_t size) {
   const int fd = ::open("/dev/urandom", O_RDONLY | O_CLOEXEC);
   if (fd < 0) return false;
   std::size_t read_bytes = 0;
-  const bool ok = pread_full(fd, out, size, 0, read_bytes, "/dev/urandom").ok() &&
-                  read_bytes == size;
+  const bool ok =
+      pread_full(fd, out, size, 0, read_bytes, "/dev/urandom").ok() && read_bytes == size;
   ::close(fd);
   return ok;
 }

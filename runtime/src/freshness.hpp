@@ -22,7 +22,8 @@ namespace symcr::detail {
 inline constexpr std::uint64_t kStoreIdOffset = 400;
 inline constexpr std::size_t kStoreIdCopySize = 8 + kStoreIdSize + 4;
 inline constexpr std::uint64_t kStoreIdSecondCopy = 432;
-inline constexpr std::size_t kStoreIdBlockSize = kStoreIdSecondCopy + kStoreIdCopySize - kStoreIdOffset;
+inline constexpr std::size_t kStoreIdBlockSize =
+    kStoreIdSecondCopy + kStoreIdCopySize - kStoreIdOffset;
 inline constexpr std::size_t kStoreHeaderPageRead = kStoreIdOffset + kStoreIdBlockSize;
 
 // Draws a new identity (getrandom, else /dev/urandom, else time and process id mixed).
@@ -85,8 +86,7 @@ class FileFreshnessCounter final : public FreshnessCounter {
 // Decodes a counter file's bytes (at most 256) for `store_id` with `keys`: the higher value of
 // the copies that verify. Corrupt or Unauthenticated, saying why, when none does.
 Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
-                           const std::uint8_t* store_id, const KeyRing& keys,
-                           std::uint64_t& value);
+                           const std::uint8_t* store_id, const KeyRing& keys, std::uint64_t& value);
 inline constexpr std::size_t kCounterFileSize = 256;
 
 }  // namespace symcr::detail

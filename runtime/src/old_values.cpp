@@ -84,8 +84,8 @@ bool find_field(const Schema& writer, const detail::WireSizes& sizes, std::uint3
         return true;
       }
       if (pass == 1 && (member.flags & kFieldBase) &&
-          find_field(writer, sizes, member.type, bytes + used, length, field, depth + 1,
-                     out_type, out_bytes, out_size)) {
+          find_field(writer, sizes, member.type, bytes + used, length, field, depth + 1, out_type,
+                     out_bytes, out_size)) {
         return true;
       }
       used += length;
@@ -207,8 +207,8 @@ bool OldValues::get(const char* field, std::string& out) const {
   const TypeInfo& info = writer_->types[span.type];
   if (info.element >= writer_->type_count) return false;
   const TypeInfo& character = writer_->types[info.element];
-  const bool bytewise = (character.kind == Kind::Int || character.kind == Kind::UInt) &&
-                        character.size == 1;
+  const bool bytewise =
+      (character.kind == Kind::Int || character.kind == Kind::UInt) && character.size == 1;
   if (!bytewise) return false;
   if (info.kind == Kind::String) {
     // the walk checked the length against the bytes when the field was located.
@@ -233,8 +233,7 @@ bool OldValues::enumerator(const char* field, const char*& name) const {
     return false;
   }
   const TypeInfo& info = writer_->types[span.type];
-  const std::int64_t value =
-      in.tag == Number::Tag::Signed ? in.s : static_cast<std::int64_t>(in.u);
+  const std::int64_t value = in.tag == Number::Tag::Signed ? in.s : static_cast<std::int64_t>(in.u);
   for (std::uint32_t e = 0; e < info.enumerator_count; ++e) {
     if (info.enumerators[e].value == value && info.enumerators[e].name) {
       name = info.enumerators[e].name;

@@ -82,7 +82,8 @@ __attribute__((cold)) std::vector<std::uint32_t> value_levels(const Schema& writ
   std::uint32_t culprit = kNoType;
   if (by_value_levels(writer, levels, culprit) != ByValueNesting::Ok) {
     // Only a schema that was not parsed (a program's own) gets here: its values are refused.
-    for (std::uint32_t& level : levels) level = std::min<std::uint32_t>(level, kMaxValueNesting + 1);
+    for (std::uint32_t& level : levels)
+      level = std::min<std::uint32_t>(level, kMaxValueNesting + 1);
   }
   return levels;
 }
@@ -224,9 +225,9 @@ bool PayloadReader::finish() {
   return fail("%zu bytes after the payload's references", in_.remaining());
 }
 
-// A step into a struct is a field index (then a reference member's: format.md §2), into an array an element index, into an optional or
-// unique_ptr 0 (its value), into a variant an alternative index, into a string a character
-// index (bounded by the string's length once restored).
+// A step into a struct is a field index (then a reference member's: format.md §2), into an array an
+// element index, into an optional or unique_ptr 0 (its value), into a variant an alternative index,
+// into a string a character index (bounded by the string's length once restored).
 bool PayloadReader::step_into(std::uint32_t i, std::uint32_t& type, std::uint32_t step) {
   const TypeInfo& t = writer_.types[type];
   switch (t.kind) {

@@ -39,7 +39,7 @@ constexpr std::uint64_t kMaxEmptyElements = std::uint64_t{1} << 20;
 struct WireSizes {
   static constexpr std::uint64_t kVariable = ~std::uint64_t{0};
   std::vector<std::uint64_t> least;
-  std::vector<std::uint64_t> fixed;  // kVariable when value-dependent
+  std::vector<std::uint64_t> fixed;   // kVariable when value-dependent
   std::vector<std::uint32_t> levels;  // by_value_levels
   std::uint32_t clock_count = 0;      // schema_clocks(writer).size(): readings that end a payload
 };
@@ -334,7 +334,8 @@ bool walk_value(PayloadReader& in, std::uint32_t type_index, int depth, Sink& si
       bool present = false;
       if (!in.presence(type, present)) return false;
       const int pointee_depth = in.element_depth(depth, type.element);
-      return !present || (in.nest(pointee_depth) && walk_value(in, type.element, pointee_depth, sink));
+      return !present ||
+             (in.nest(pointee_depth) && walk_value(in, type.element, pointee_depth, sink));
     }
     case Kind::Variant: {
       std::uint32_t index = 0;

@@ -151,8 +151,7 @@ bool Planner::build_copy(PlanNode& n) {
 bool Planner::segment_field(const FieldPlan& field) {
   const PlanNode* child = field.node;
   return field.reader_field != kNoType && !field.has_range && !field.bit_width && child &&
-         child->copy_only && !child->validated && !child->migrates &&
-         !field.time;
+         child->copy_only && !child->validated && !child->migrates && !field.time;
 }
 
 // Splits a struct that is not copy-only into segments; none when no field could be copied

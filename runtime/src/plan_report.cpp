@@ -298,7 +298,8 @@ void Planner::expand(const PlanNode* n, const std::string& path) {
             // Not a value the rules refuse: a time no clock of this build can place. The new
             // build's own value (its "never") stands, as for a member the old build lacked.
             decision = Decision::Kept;
-            detail = clock + ", of which the checkpoint holds no reading: this build's value is kept";
+            detail =
+                clock + ", of which the checkpoint holds no reading: this build's value is kept";
             own_lossy = true;
           } else if (decision == Decision::Restored || decision == Decision::Converted) {
             decision = Decision::Rebased;

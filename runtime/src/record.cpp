@@ -119,10 +119,9 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   }
   // A large payload's CRC was computed as it was copied: only the header and schema are read.
   const std::uint32_t checksum =
-      payload_crc.known
-          ? crc32c_combine(record_checksum(out.data(), header_size + schema_size),
-                           payload_crc.value, payload_size)
-          : record_checksum(out.data(), out.size());
+      payload_crc.known ? crc32c_combine(record_checksum(out.data(), header_size + schema_size),
+                                         payload_crc.value, payload_size)
+                        : record_checksum(out.data(), out.size());
   format::store32(out.data() + format::kRecordChecksumOffset, checksum);
   return Status();
 }
@@ -285,8 +284,8 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size, con
   }
   auto writer = std::make_shared<ParsedSchema>();
   // parse_record checked that the inline bytes hash to the header's hash.
-  status = parse_schema(record.schema, record.header.schema_size, *writer,
-                        &record.header.schema_hash);
+  status =
+      parse_schema(record.schema, record.header.schema_size, *writer, &record.header.schema_hash);
   if (!status.ok()) {
     ReportAccess::set_status(report, status);
     return report;

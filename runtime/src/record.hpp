@@ -62,9 +62,9 @@ Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t seq
 // build's, laid out for this machine's memory (the payload never depends on the layout), and
 // whose times of clocks hold the converted checkpoint's timebase: `clock_readings`, if given,
 // end the payload (encode_payload_at).
-Status encode_record_as(const Schema& schema, const SchemaBlob& identity,
-                        bool inline_schema, std::uint64_t sequence,
-                        std::vector<std::uint8_t>& out, const RecordSigning* signing = nullptr,
+Status encode_record_as(const Schema& schema, const SchemaBlob& identity, bool inline_schema,
+                        std::uint64_t sequence, std::vector<std::uint8_t>& out,
+                        const RecordSigning* signing = nullptr,
                         const ClockReadings* clock_readings = nullptr);
 
 // Names `signing`'s key and journal freshness in an authenticated record's header, makes its

@@ -200,8 +200,9 @@ __attribute__((cold)) std::string Report::to_text() const {
   }
   for (const SkippedCheckpoint& skipped : skipped_) {
     char slot[64];
-    std::snprintf(slot, sizeof slot, "skipped slot %" PRIu32 " (sequence %" PRIu64 "): ",
-                  skipped.slot, skipped.sequence);
+    std::snprintf(slot, sizeof slot,
+                  "skipped slot %" PRIu32 " (sequence %" PRIu64 "): ", skipped.slot,
+                  skipped.sequence);
     out += slot;
     out += skipped.reason;
     out += '\n';

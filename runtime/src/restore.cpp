@@ -48,8 +48,8 @@ Status Restorer::check() {
   Traversal<CheckPass> walk(*this, pass);
   PayloadReader& in = walk.reader();
   ClockReadings readings;
-  if (!walk.objects() || !decode_references(in) || !in.clock_readings(readings) ||
-      !in.finish() || !check_slots()) {
+  if (!walk.objects() || !decode_references(in) || !in.clock_readings(readings) || !in.finish() ||
+      !check_slots()) {
     return error_;
   }
   decide_clock_deltas(readings);
@@ -69,9 +69,9 @@ std::size_t Restorer::scratch_bytes() const {
 
 std::size_t RestoreTables::bytes() const {
   std::size_t total =
-      bytes_of(frames) + bytes_of(rejection_counts) + bytes_of(handed_counts) +
-      bytes_of(verdicts) + bytes_of(part_verdicts) + bytes_of(slots) + bytes_of(containers) +
-      bytes_of(heap) + bytes_of(refs) + bytes_of(steps) + bytes_of(mapped) + bytes_of(claimed) +
+      bytes_of(frames) + bytes_of(rejection_counts) + bytes_of(handed_counts) + bytes_of(verdicts) +
+      bytes_of(part_verdicts) + bytes_of(slots) + bytes_of(containers) + bytes_of(heap) +
+      bytes_of(refs) + bytes_of(steps) + bytes_of(mapped) + bytes_of(claimed) +
       materialisable.capacity() / 8 + bytes_of(element_needed) + bytes_of(heap_live) +
       bytes_of(holders) + bytes_of(applied_slots) + bytes_of(element_slots) +
       bytes_of(element_addresses) + bytes_of(string_scratch) + bytes_of(clock_deltas);
@@ -205,8 +205,8 @@ bool restore_same_build(const Schema& schema, std::uint64_t hash, const std::uin
   if (!entry.first_same_build_restore() || !entry.device_holdable()) return false;
   thread_local std::vector<std::uint8_t> scratch;
   scratch.resize(device::scratch_size(schema));
-  if (device::detail::restore_held_payload(schema, payload, size, scratch.data(),
-                                           scratch.size()) != device::Result::Ok) {
+  if (device::detail::restore_held_payload(schema, payload, size, scratch.data(), scratch.size()) !=
+      device::Result::Ok) {
     return false;
   }
   ReportAccess::set_source(report, std::make_shared<SameBuildReport>(schema, hash));

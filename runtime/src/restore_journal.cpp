@@ -233,8 +233,7 @@ RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size,
       copies_blank = copies_blank && page[offset + i] == 0;
     }
   }
-  if (!found && copies_blank &&
-      kLegacyRestoreJournalOffset + kLegacyRestoreJournalSize <= size) {
+  if (!found && copies_blank && kLegacyRestoreJournalOffset + kLegacyRestoreJournalSize <= size) {
     decode_legacy(page + kLegacyRestoreJournalOffset, current);
     if (verify && !current.empty()) {
       if (distrust != nullptr) *distrust = "it is an earlier version's, which carries no MAC";

@@ -23,7 +23,8 @@ struct KeyRing;
 inline constexpr std::uint64_t kRestoreJournalOffsets[2] = {128, 256};
 inline constexpr std::size_t kRestoreJournalSize = 76;
 inline constexpr std::size_t kRestoreJournalSealSize = 48;
-inline constexpr std::size_t kRestoreJournalCopySize = kRestoreJournalSize + kRestoreJournalSealSize;
+inline constexpr std::size_t kRestoreJournalCopySize =
+    kRestoreJournalSize + kRestoreJournalSealSize;
 // Where the header page's journal bytes end.
 inline constexpr std::size_t kRestoreJournalEnd = 256 + kRestoreJournalCopySize;
 // The single journal of stores written by earlier versions (48 bytes at 64), read when

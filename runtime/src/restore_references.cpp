@@ -105,9 +105,9 @@ void Restorer::decide_materialisation() {
     const bool can_create =
         type.lifecycle != nullptr || (dry_run_ && (type.flags & kTypeCreatable) != 0);
     // A claimed object keeps this build's values where a validator refused the checkpoint's.
-    creatable[h] = claimed_[h] || (!heap_[h].refused && heap_[h].owner == 0 && can_create) ||
-                   (!heap_[h].refused && heap_[h].owner == 1 &&
-                    plan_.shared_types[node->reader] != kNoType);
+    creatable[h] =
+        claimed_[h] || (!heap_[h].refused && heap_[h].owner == 0 && can_create) ||
+        (!heap_[h].refused && heap_[h].owner == 1 && plan_.shared_types[node->reader] != kNoType);
   }
   // Every heap object was discovered from a root when saved: if every root, heap object and
   // pointer slot is restorable, all of them are reached and the walk below can be skipped.
@@ -211,8 +211,8 @@ void Restorer::map_by_names(RefRecord& ref, std::uint32_t writer, std::uint32_t 
       const FieldInfo* member = step_member(wt, step);
       std::uint32_t member_offset = 0;
       if (!member || !reader_member(rt, *member, member_offset, reader)) {
-        ref.why = std::string("target member ") + (member ? member->name : "?") + " of " +
-                  wt.name + " not in this build";
+        ref.why = std::string("target member ") + (member ? member->name : "?") + " of " + wt.name +
+                  " not in this build";
         return;
       }
       writer = member->type;
@@ -226,8 +226,7 @@ void Restorer::map_by_names(RefRecord& ref, std::uint32_t writer, std::uint32_t 
       writer = wt.element;
       reader = rt.element;
     } else {
-      ref.why = std::string("target lies inside a ") + wt.name +
-                " whose value is not checkpointed";
+      ref.why = std::string("target lies inside a ") + wt.name + " whose value is not checkpointed";
       return;
     }
     mapped_.push_back({MappedStep::Kind::Offset, holder, offset});

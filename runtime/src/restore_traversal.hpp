@@ -235,8 +235,7 @@ class ExplainPass : public PassDefaults {
   static constexpr bool kJudges = false;
   static constexpr bool kWrites = false;
   // `wanted`: slot ordinal -> its path, filled in for the ordinals it holds.
-  explicit ExplainPass(std::unordered_map<std::uint32_t, std::string>& wanted)
-      : wanted_(wanted) {}
+  explicit ExplainPass(std::unordered_map<std::uint32_t, std::string>& wanted) : wanted_(wanted) {}
 
   void pointer(const PlanNode*, bool, std::uint32_t, std::uint8_t*, std::uint32_t ordinal,
                std::uint32_t, std::uint32_t, const std::vector<PathFrame>& frames) {

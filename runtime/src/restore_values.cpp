@@ -57,8 +57,9 @@ std::string Restorer::counter_path(std::uint32_t counter) const {
 bool CheckPass::heap_object(std::uint32_t h, std::uint32_t type, std::uint8_t owner,
                             std::uint8_t*& dst) {
   if (!r_.plan_.heap_nodes[type]) {
-    return r_.corrupt("heap object %u of type %s, which no pointer points to", h,
-                      r_.writer_.types[type].name)
+    return r_
+        .corrupt("heap object %u of type %s, which no pointer points to", h,
+                 r_.writer_.types[type].name)
         .ok();
   }
   r_.heap_.push_back(HeapRecord{type, owner, r_.plan_.heap_nodes[type], false});
@@ -70,11 +71,11 @@ bool CheckPass::heap_object(std::uint32_t h, std::uint32_t type, std::uint8_t ow
 bool CheckPass::container(const PlanNode* n, std::uint32_t count, std::uint32_t,
                           std::uint32_t object, std::vector<void*>*&) {
   if (n->action == Action::Container && !r_.allocation_justified(count, n->reader)) {
-    return r_.corrupt("container of %u elements would need %" PRIu64
-                      " bytes in this build, more than the checkpoint can justify",
-                      count,
-                      std::uint64_t{count} *
-                          r_.reader_.types[r_.reader_.types[n->reader].element].size)
+    return r_
+        .corrupt("container of %u elements would need %" PRIu64
+                 " bytes in this build, more than the checkpoint can justify",
+                 count,
+                 std::uint64_t{count} * r_.reader_.types[r_.reader_.types[n->reader].element].size)
         .ok();
   }
   r_.containers_.push_back(ContainerRecord{count, n->element, object});

@@ -27,7 +27,8 @@ namespace symcr::detail::restoring {
 inline std::uint64_t bit_field_raw(const CopyBits& bits, const std::uint8_t* wire) {
   const std::uint8_t* at = wire + bits.wire;
   switch (bits.size) {
-    case 1: return at[0];
+    case 1:
+      return at[0];
     case 2: {
       std::uint16_t raw;
       std::memcpy(&raw, at, sizeof raw);
@@ -321,8 +322,7 @@ class Restorer {
 
   // Maps a reference's writer steps onto reader steps by name (via the plan), never offsets.
   void map_reference(RefRecord& ref);
-  void map_by_names(RefRecord& ref, std::uint32_t writer, std::uint32_t reader,
-                    std::uint16_t from);
+  void map_by_names(RefRecord& ref, std::uint32_t writer, std::uint32_t reader, std::uint16_t from);
 
   // Decides every pointer slot; the concrete paths of the few reported ones are rendered by a
   // third walk (ExplainPass) rather than remembered for every pointer of a large graph.
@@ -353,7 +353,7 @@ class Restorer {
   const bool dry_run_;
   RestoreTablesLease lease_;
 
-  std::vector<PathFrame>& frames_;  // every traversal's path, one at a time
+  std::vector<PathFrame>& frames_;                // every traversal's path, one at a time
   std::vector<std::uint32_t>& rejection_counts_;  // per counter, sized by entry_count
   // A copy of a copy-only value failed its checks (Traversal::copy): pass 2 checks again.
   bool copy_refused_ = false;

@@ -53,9 +53,12 @@ bool integer_fits(const Number& in, unsigned bytes, bool to_signed, Number& out)
 
 long double Number::as_long_double() const {
   switch (tag) {
-    case Tag::Signed: return static_cast<long double>(s);
-    case Tag::Unsigned: return static_cast<long double>(u);
-    case Tag::Floating: return f;
+    case Tag::Signed:
+      return static_cast<long double>(s);
+    case Tag::Unsigned:
+      return static_cast<long double>(u);
+    case Tag::Floating:
+      return f;
   }
   return 0;
 }
@@ -129,8 +132,9 @@ bool convert_number(const Schema& schema, const TypeInfo& type, const Number& in
           return refuse(in, "out of range of", type.name, why, why_size);
         }
       }
-      out.f = type.size == 4 ? static_cast<float>(value)
-              : type.size == 8 ? static_cast<double>(value) : value;
+      out.f = type.size == 4   ? static_cast<float>(value)
+              : type.size == 8 ? static_cast<double>(value)
+                               : value;
       return true;
     }
     // Integer to floating: only values that survive the round trip exactly.
@@ -170,8 +174,8 @@ bool convert_number(const Schema& schema, const TypeInfo& type, const Number& in
     }
   }
   if (type.kind == Kind::Bool) {
-    const bool zero_or_one = integer.tag == Number::Tag::Signed ? (integer.s == 0 || integer.s == 1)
-                                                               : integer.u <= 1;
+    const bool zero_or_one =
+        integer.tag == Number::Tag::Signed ? (integer.s == 0 || integer.s == 1) : integer.u <= 1;
     if (!zero_or_one) {
       return refuse(in, "is not a bool", nullptr, why, why_size);
     }
@@ -183,7 +187,8 @@ bool convert_number(const Schema& schema, const TypeInfo& type, const Number& in
     return refuse(in, "out of range of", type.name, why, why_size);
   }
   if (type.kind == Kind::Enum) {
-    const std::int64_t value = out.tag == Number::Tag::Signed ? out.s : static_cast<std::int64_t>(out.u);
+    const std::int64_t value =
+        out.tag == Number::Tag::Signed ? out.s : static_cast<std::int64_t>(out.u);
     for (std::uint32_t e = 0; e < type.enumerator_count; ++e) {
       if (type.enumerators[e].value == value) return true;
     }
@@ -195,14 +200,17 @@ bool convert_number(const Schema& schema, const TypeInfo& type, const Number& in
 bool fits_bits(const Number& value, unsigned width, bool is_signed) {
   if (width >= 64) return true;
   if (is_signed) {
-    const std::int64_t v = value.tag == Number::Tag::Signed ? value.s : static_cast<std::int64_t>(value.u);
-    if (value.tag == Number::Tag::Unsigned && value.u > static_cast<std::uint64_t>(INT64_MAX)) return false;
+    const std::int64_t v =
+        value.tag == Number::Tag::Signed ? value.s : static_cast<std::int64_t>(value.u);
+    if (value.tag == Number::Tag::Unsigned && value.u > static_cast<std::uint64_t>(INT64_MAX))
+      return false;
     const std::int64_t low = -(std::int64_t{1} << (width - 1));
     const std::int64_t high = (std::int64_t{1} << (width - 1)) - 1;
     return v >= low && v <= high;
   }
   if (value.tag == Number::Tag::Signed && value.s < 0) return false;
-  const std::uint64_t v = value.tag == Number::Tag::Signed ? static_cast<std::uint64_t>(value.s) : value.u;
+  const std::uint64_t v =
+      value.tag == Number::Tag::Signed ? static_cast<std::uint64_t>(value.s) : value.u;
   return v <= (std::uint64_t{1} << width) - 1;
 }
 
@@ -243,9 +251,15 @@ void store_bits(std::uint8_t* unit, unsigned bit_offset, unsigned width, const N
 
 void format_number(const Number& value, char* buffer, std::size_t size) {
   switch (value.tag) {
-    case Number::Tag::Signed: std::snprintf(buffer, size, "%" PRId64, value.s); return;
-    case Number::Tag::Unsigned: std::snprintf(buffer, size, "%" PRIu64, value.u); return;
-    case Number::Tag::Floating: std::snprintf(buffer, size, "%.17Lg", value.f); return;
+    case Number::Tag::Signed:
+      std::snprintf(buffer, size, "%" PRId64, value.s);
+      return;
+    case Number::Tag::Unsigned:
+      std::snprintf(buffer, size, "%" PRIu64, value.u);
+      return;
+    case Number::Tag::Floating:
+      std::snprintf(buffer, size, "%.17Lg", value.f);
+      return;
   }
 }
 

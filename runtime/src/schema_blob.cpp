@@ -148,8 +148,7 @@ constexpr std::size_t kMaxFlatRuns = 64;  // beyond this a type is cheaper to wa
 
 // Appends the runs of `type` placed at `base` to `runs`; false if it is not plain.
 __attribute__((cold)) bool flat_runs_of(const Schema& schema, std::uint32_t type_index,
-                                        std::uint32_t base, std::vector<FlatRun>& runs,
-                                        int depth) {
+                                        std::uint32_t base, std::vector<FlatRun>& runs, int depth) {
   if (depth > 64 || type_index >= schema.type_count) return false;
   const TypeInfo& type = schema.types[type_index];
   auto append = [&runs](std::uint32_t offset, std::uint32_t length) {
@@ -172,7 +171,8 @@ __attribute__((cold)) bool flat_runs_of(const Schema& schema, std::uint32_t type
     case Kind::Struct:
       for (std::uint32_t f = 0; f < type.field_count; ++f) {
         const FieldInfo& field = type.fields[f];
-        if (field.bit_width || !flat_runs_of(schema, field.type, base + field.offset, runs, depth + 1)) {
+        if (field.bit_width ||
+            !flat_runs_of(schema, field.type, base + field.offset, runs, depth + 1)) {
           return false;
         }
       }
@@ -255,21 +255,36 @@ __attribute__((cold)) SchemaFacts compute_schema_facts(const Schema& schema) {
 
 const char* kind_name(Kind kind) {
   switch (kind) {
-    case Kind::Bool: return "bool";
-    case Kind::Int: return "int";
-    case Kind::UInt: return "uint";
-    case Kind::Float: return "float";
-    case Kind::Enum: return "enum";
-    case Kind::Struct: return "struct";
-    case Kind::Union: return "union";
-    case Kind::Array: return "array";
-    case Kind::String: return "string";
-    case Kind::Container: return "container";
-    case Kind::Optional: return "optional";
-    case Kind::Variant: return "variant";
-    case Kind::Pointer: return "pointer";
-    case Kind::UniquePtr: return "unique_ptr";
-    case Kind::SharedPtr: return "shared_ptr";
+    case Kind::Bool:
+      return "bool";
+    case Kind::Int:
+      return "int";
+    case Kind::UInt:
+      return "uint";
+    case Kind::Float:
+      return "float";
+    case Kind::Enum:
+      return "enum";
+    case Kind::Struct:
+      return "struct";
+    case Kind::Union:
+      return "union";
+    case Kind::Array:
+      return "array";
+    case Kind::String:
+      return "string";
+    case Kind::Container:
+      return "container";
+    case Kind::Optional:
+      return "optional";
+    case Kind::Variant:
+      return "variant";
+    case Kind::Pointer:
+      return "pointer";
+    case Kind::UniquePtr:
+      return "unique_ptr";
+    case Kind::SharedPtr:
+      return "shared_ptr";
   }
   return "unknown";
 }

@@ -31,7 +31,7 @@ struct SchemaFacts {
   std::vector<std::uint32_t> flat_count;
   std::vector<std::uint32_t> flat_wire_size;
   std::vector<FlatRun> flat_runs;
-  std::vector<bool> has_pointer_fields;  // per type: a Struct with raw Pointer fields
+  std::vector<bool> has_pointer_fields;       // per type: a Struct with raw Pointer fields
   std::vector<std::uint32_t> nesting_levels;  // per type: WireSizes::levels
   // kTypeDynamicType classes by their vtable: how saving learns a heap object's dynamic type.
   struct DynamicType {
@@ -59,8 +59,8 @@ struct SchemaCacheEntry {
   bool device_holdable() const {
     std::call_once(device_checked, [this] {
       // Times of clocks are rebased value by value, which that decoder leaves to the device.
-      device_holdable_ = device::check_schema(*schema) == device::Result::Ok &&
-                         schema_clocks(*schema).empty();
+      device_holdable_ =
+          device::check_schema(*schema) == device::Result::Ok && schema_clocks(*schema).empty();
     });
     return device_holdable_;
   }

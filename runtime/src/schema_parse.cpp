@@ -380,8 +380,10 @@ class Parser {
     for (std::size_t f = 0; f < s_.fields.size(); ++f) {
       s_.fields[f].name = base + field_fixups_[f].name;
       s_.fields[f].renamed_from = aliases_at(field_fixups_[f].aliases);
-      if (s_.fields[f].flags & kFieldHasRange) s_.fields[f].range = &s_.ranges[field_fixups_[f].range];
-      if (s_.fields[f].flags & kFieldClockTime) s_.fields[f].time = &s_.times[field_fixups_[f].time];
+      if (s_.fields[f].flags & kFieldHasRange)
+        s_.fields[f].range = &s_.ranges[field_fixups_[f].range];
+      if (s_.fields[f].flags & kFieldClockTime)
+        s_.fields[f].time = &s_.times[field_fixups_[f].time];
     }
     number_clocks(base);
     for (std::size_t e = 0; e < s_.enumerators.size(); ++e) {
@@ -428,9 +430,9 @@ class Parser {
       s_.clocks.push_back(ClockInfo{distinct[c], nullptr, static_cast<std::uint32_t>(c)});
     }
     for (std::size_t t = 0; t < s_.times.size(); ++t) {
-      const auto found = std::lower_bound(
-          distinct.begin(), distinct.end(), names[t],
-          [](const char* a, const char* b) { return std::strcmp(a, b) < 0; });
+      const auto found =
+          std::lower_bound(distinct.begin(), distinct.end(), names[t],
+                           [](const char* a, const char* b) { return std::strcmp(a, b) < 0; });
       s_.times[t].clock = &s_.clocks[static_cast<std::size_t>(found - distinct.begin())];
     }
   }

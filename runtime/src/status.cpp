@@ -31,35 +31,58 @@ const Status& set_corrupt_payload(Status& error, const char* format, va_list arg
 
 const char* error_name(Error error) {
   switch (error) {
-    case Error::None: return "None";
-    case Error::NoSchema: return "NoSchema";
-    case Error::Io: return "Io";
-    case Error::NotACheckpoint: return "NotACheckpoint";
-    case Error::FutureVersion: return "FutureVersion";
-    case Error::Truncated: return "Truncated";
-    case Error::Checksum: return "Checksum";
-    case Error::Corrupt: return "Corrupt";
-    case Error::SchemaUnknown: return "SchemaUnknown";
-    case Error::Incompatible: return "Incompatible";
-    case Error::Strict: return "Strict";
-    case Error::Unsupported: return "Unsupported";
-    case Error::NoValidSlot: return "NoValidSlot";
-    case Error::TooLarge: return "TooLarge";
-    case Error::Unauthenticated: return "Unauthenticated";
-    case Error::StoreFull: return "StoreFull";
-    case Error::RolledBack: return "RolledBack";
+    case Error::None:
+      return "None";
+    case Error::NoSchema:
+      return "NoSchema";
+    case Error::Io:
+      return "Io";
+    case Error::NotACheckpoint:
+      return "NotACheckpoint";
+    case Error::FutureVersion:
+      return "FutureVersion";
+    case Error::Truncated:
+      return "Truncated";
+    case Error::Checksum:
+      return "Checksum";
+    case Error::Corrupt:
+      return "Corrupt";
+    case Error::SchemaUnknown:
+      return "SchemaUnknown";
+    case Error::Incompatible:
+      return "Incompatible";
+    case Error::Strict:
+      return "Strict";
+    case Error::Unsupported:
+      return "Unsupported";
+    case Error::NoValidSlot:
+      return "NoValidSlot";
+    case Error::TooLarge:
+      return "TooLarge";
+    case Error::Unauthenticated:
+      return "Unauthenticated";
+    case Error::StoreFull:
+      return "StoreFull";
+    case Error::RolledBack:
+      return "RolledBack";
   }
   return "Unknown";
 }
 
 const char* decision_name(Decision decision) {
   switch (decision) {
-    case Decision::Restored: return "restored";
-    case Decision::Kept: return "kept";
-    case Decision::Dropped: return "dropped";
-    case Decision::Converted: return "converted";
-    case Decision::Rejected: return "rejected";
-    case Decision::Rebased: return "rebased";
+    case Decision::Restored:
+      return "restored";
+    case Decision::Kept:
+      return "kept";
+    case Decision::Dropped:
+      return "dropped";
+    case Decision::Converted:
+      return "converted";
+    case Decision::Rejected:
+      return "rejected";
+    case Decision::Rebased:
+      return "rebased";
   }
   return "unknown";
 }

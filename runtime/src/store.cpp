@@ -82,8 +82,8 @@ struct Store::Impl {
   // system cannot be written. Every failure closes `out` (and removes a file it created).
   static Status open(const char* path, const Schema& schema, const StoreOptions& options,
                      bool writable, Store& out);
-  static Status open_descriptor(const char* path, const Schema& schema,
-                                const StoreOptions& options, bool writable, Store& out);
+  static Status open_descriptor(const char* path, const Schema& schema, const StoreOptions& options,
+                                bool writable, Store& out);
 
   struct Slot {
     StoreSlotState state = StoreSlotState::Empty;
@@ -234,9 +234,10 @@ struct Store::Impl {
       }
     }
     if (journal.freshness < saved_under) {
-      distrust_journal("it is older than the journal the newest checkpoint was saved under (an "
-                       "older copy put back)",
-                       saved_under);
+      distrust_journal(
+          "it is older than the journal the newest checkpoint was saved under (an "
+          "older copy put back)",
+          saved_under);
     }
   }
 
@@ -268,8 +269,8 @@ struct Store::Impl {
     for (const std::uint64_t copy : detail::kRestoreJournalOffsets) {
       detail::encode_restore_journal(journal, bytes + (copy - kFirst), &seal);
     }
-    Status status = detail::pwrite_all(fd, bytes, sizeof bytes, static_cast<off_t>(kFirst),
-                                       path.c_str());
+    Status status =
+        detail::pwrite_all(fd, bytes, sizeof bytes, static_cast<off_t>(kFirst), path.c_str());
     if (status.ok() && durability == Durability::Fdatasync &&
         detail::file_system().fdatasync(fd) != 0) {
       status = detail::io_error("cannot fdatasync", path.c_str(), errno);
@@ -447,9 +448,8 @@ struct Store::Impl {
     // (unless keys are set: its MAC cannot be checked without its schema).
     const bool intact = read.state == StoreSlotState::Valid ||
                         (!keys && read.state == StoreSlotState::UnknownSchema);
-    slot.sequence = intact && slot.state != StoreSlotState::Unauthenticated
-                        ? view.header.sequence
-                        : 0;
+    slot.sequence =
+        intact && slot.state != StoreSlotState::Unauthenticated ? view.header.sequence : 0;
     return Status();
   }
 
@@ -568,8 +568,8 @@ struct Store::Impl {
   }
 
   // Adds the journal the file holds to `copies`, both of them (encoded into `buffer`,
-  // kRestoreJournalCopySize bytes, sealed with keys set): the crash-loop fallback's memory, and the sequences it names,
-  // move with the store.
+  // kRestoreJournalCopySize bytes, sealed with keys set): the crash-loop fallback's memory, and the
+  // sequences it names, move with the store.
   void add_journal_copy(std::vector<Copy>& copies, std::uint8_t* buffer) const {
     if (recorded.empty() && recorded.freshness == 0) return;
     const detail::JournalSeal seal = journal_seal();
@@ -895,8 +895,7 @@ Status open_store_file(const char* path, bool writable, OpenedStoreFile& out) {
                  : detail::io_error("cannot lock", path, errno);
   } else {
     struct stat named {};
-    if (files.lstat(path, &named) == 0 && is_same_file(named, out.info) &&
-        out.info.st_nlink > 0) {
+    if (files.lstat(path, &named) == 0 && is_same_file(named, out.info) && out.info.st_nlink > 0) {
       out.fd = fd;
       return Status();
     }
@@ -1114,8 +1113,8 @@ Status Store::save() {
   // With keys, the header is laid out for a MAC made once the slot is chosen.
   detail::RecordSigning deferred;
   deferred.keys = impl.keys.get();
-  Status status = detail::encode_record(*schema_, /*inline_schema=*/false, sequence, impl.record,
-                                        &deferred);
+  Status status =
+      detail::encode_record(*schema_, /*inline_schema=*/false, sequence, impl.record, &deferred);
   if (!status.ok()) return status;
   if (impl.geometry_pending) {
     status = impl.apply_requested_geometry(fd_, *schema_);
@@ -1206,7 +1205,8 @@ Report Store::restore_latest(const RestoreOptions& options) {
       impl.scanned_with != impl.keys.get()) {
     status = impl.scan_slots(fd_);
   }
-  if (status.ok() && (!impl.read_only_reason.empty() || (impl.journal_read_with != impl.keys.get() && !impl.unconfirmed_is_ours))) {
+  if (status.ok() && (!impl.read_only_reason.empty() ||
+                      (impl.journal_read_with != impl.keys.get() && !impl.unconfirmed_is_ours))) {
     status = impl.read_journal(fd_);
     if (status.ok()) impl.distrust_stale_journal();
   }
@@ -1330,10 +1330,10 @@ Report Store::restore_latest(const RestoreOptions& options) {
       }
       if (report.ok() && impl.fallback_depth > 0 && !recording) {
         detail::ReportAccess::warn(
-            report, "the crash-loop fallback is disarmed for this restore: " +
-                        impl.read_only_reason +
-                        "; if the restored state crashes the program, the next start restores "
-                        "it again");
+            report,
+            "the crash-loop fallback is disarmed for this restore: " + impl.read_only_reason +
+                "; if the restored state crashes the program, the next start restores "
+                "it again");
       }
       if (!journal_distrust.empty()) detail::ReportAccess::warn(report, journal_distrust);
       impl.list_unrestorable_slots(skipped);

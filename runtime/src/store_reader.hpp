@@ -20,9 +20,9 @@ namespace symcr::detail {
 
 struct StoreSlot {
   StoreSlotState state = StoreSlotState::Empty;
-  Status problem;          // why the slot is not Valid
-  RecordHeader header;     // Valid and UnknownSchema: the record's header
-  int area = -1;           // Valid: the schema area its record references
+  Status problem;       // why the slot is not Valid
+  RecordHeader header;  // Valid and UnknownSchema: the record's header
+  int area = -1;        // Valid: the schema area its record references
 };
 
 class StoreReader {

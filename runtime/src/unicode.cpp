@@ -67,8 +67,7 @@ bool decode(const std::uint8_t* units, std::uint32_t length, unsigned width, std
   return code_point >= minimum && code_point <= 0x10FFFF && !is_surrogate(code_point);
 }
 
-void encode(std::uint32_t c, unsigned width, std::vector<std::uint8_t>& out,
-            std::uint32_t& count) {
+void encode(std::uint32_t c, unsigned width, std::vector<std::uint8_t>& out, std::uint32_t& count) {
   if (width == 4) {
     append_unit(out, c, 4);
     ++count;
@@ -109,8 +108,8 @@ const char* encoding_name(unsigned width) {
 }
 
 bool transcode_string(const std::uint8_t* units, std::uint32_t length, unsigned from_width,
-                      unsigned to_width, std::vector<std::uint8_t>& out,
-                      std::uint32_t& out_length, char* why, std::size_t why_size) {
+                      unsigned to_width, std::vector<std::uint8_t>& out, std::uint32_t& out_length,
+                      char* why, std::size_t why_size) {
   out.clear();
   out_length = 0;
   if ((from_width != 1 && from_width != 2 && from_width != 4) ||

@@ -16,8 +16,8 @@ namespace symcr::detail {
 // receives the number of code units written. False, with the reason in `why`, when the input
 // is not valid UTF-8/16/32 (a stray byte, an unpaired surrogate, a code point past U+10FFFF).
 bool transcode_string(const std::uint8_t* units, std::uint32_t length, unsigned from_width,
-                      unsigned to_width, std::vector<std::uint8_t>& out,
-                      std::uint32_t& out_length, char* why, std::size_t why_size);
+                      unsigned to_width, std::vector<std::uint8_t>& out, std::uint32_t& out_length,
+                      char* why, std::size_t why_size);
 
 // "UTF-8", "UTF-16" or "UTF-32" for characters of 1, 2 or 4 bytes.
 const char* encoding_name(unsigned width);

@@ -166,9 +166,7 @@ class Walker {
       auto on_step = [&](std::uint32_t step) {
         const TypeInfo& t = writer_.types[type];
         const FieldInfo* member = t.kind == Kind::Struct ? step_member(t, step) : nullptr;
-        type = member                    ? member->type
-               : t.kind == Kind::Variant ? t.alternatives[step]
-                                         : t.element;
+        type = member ? member->type : t.kind == Kind::Variant ? t.alternatives[step] : t.element;
         if (member) {
           text += '.';
           text += member->name;

@@ -115,7 +115,7 @@ bool follow_path(const Schema& schema, std::uint32_t root, const std::uint32_t* 
         return false;
       }
       const FieldInfo& field = steps[i] < current.field_count ? current.fields[steps[i]]
-                                                                : current.reference_members[member];
+                                                              : current.reference_members[member];
       if (field.bit_width != 0) return false;  // no address to point at
       at += field.offset;
       t = field.type;

@@ -38,9 +38,8 @@ const PlannedSchema* plan_for_writer(const Build& build, std::uint64_t writer_ha
     __attribute__((weak));
 // restore_held_payload() for a payload of the plan's writer: each value through the plan.
 Result restore_planned_payload(const Schema& reader, const PlannedSchema& planned,
-                               const std::uint8_t* payload, std::size_t size,
-                               std::uint8_t* scratch, std::size_t scratch_capacity)
-    __attribute__((weak));
+                               const std::uint8_t* payload, std::size_t size, std::uint8_t* scratch,
+                               std::size_t scratch_capacity) __attribute__((weak));
 // The clocks the schema's time fields name (kFieldClockTime): their count (one more than the
 // greatest ClockInfo::index), and the clock of an index (null when no field names it). A
 // payload of a schema with clocks ends with an epoch and one reading per clock (format §3).

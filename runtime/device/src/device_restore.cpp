@@ -250,8 +250,8 @@ class Restorer {
 // record's sequence in `*sequence`.
 // `*planned`: the plan of the record's previous build, or null for this build's own record.
 Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t size,
-                    std::size_t* payload_offset, std::size_t* payload_size,
-                    std::uint64_t* sequence, const PlannedSchema** planned) {
+                    std::size_t* payload_offset, std::size_t* payload_size, std::uint64_t* sequence,
+                    const PlannedSchema** planned) {
   format::RecordHeader h;
   const format::HeaderFault fault = format::decode_record_header(bytes, size, &h);
   if (fault == format::HeaderFault::FutureVersion) return Result::FutureVersion;

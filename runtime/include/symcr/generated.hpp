@@ -23,15 +23,15 @@ class OldValues;  // <symcr/old_values.hpp>: a migration hook's view of the chec
 
 // The kind of a type. The numeric values are part of the checkpoint format.
 enum class Kind : std::uint8_t {
-  Bool = 1,      // bool; 1 byte on the wire (0 or 1)
-  Int = 2,       // signed integer of `size` bytes (char, short, int, long, long long, wchar_t...)
-  UInt = 3,      // unsigned integer of `size` bytes (incl. char8/16/32_t, unsigned char)
-  Float = 4,     // IEEE binary32 (size 4), binary64 (8), x87 extended long double (16)
-  Enum = 5,      // scoped or not; `element` is the underlying Int/UInt type; has enumerators
-  Struct = 6,    // class/struct/pair/tuple; `fields` (bases first, flagged kFieldBase)
-  Union = 7,     // raw bytes of `size` (the largest member), as in the paper
-  Array = 8,     // fixed array or std::array: `count` elements of `element`
-  String = 9,    // std::basic_string; `element` is the character type; ops: StringOps
+  Bool = 1,        // bool; 1 byte on the wire (0 or 1)
+  Int = 2,         // signed integer of `size` bytes (char, short, int, long, long long, wchar_t...)
+  UInt = 3,        // unsigned integer of `size` bytes (incl. char8/16/32_t, unsigned char)
+  Float = 4,       // IEEE binary32 (size 4), binary64 (8), x87 extended long double (16)
+  Enum = 5,        // scoped or not; `element` is the underlying Int/UInt type; has enumerators
+  Struct = 6,      // class/struct/pair/tuple; `fields` (bases first, flagged kFieldBase)
+  Union = 7,       // raw bytes of `size` (the largest member), as in the paper
+  Array = 8,       // fixed array or std::array: `count` elements of `element`
+  String = 9,      // std::basic_string; `element` is the character type; ops: StringOps
   Container = 10,  // vector/deque/list/set/map/...: elements of `element`; ops: ContainerOps
   Optional = 11,   // std::optional<element>; ops: OptionalOps
   Variant = 12,    // std::variant<alternatives...>; ops: VariantOps
@@ -43,32 +43,42 @@ enum class Kind : std::uint8_t {
 // Which standard container a Kind::Container type is. Informational (names, CLI); restore
 // treats any container as "its contents" (docs/resolution.md).
 enum class ContainerKind : std::uint8_t {
-  Vector = 1, Deque, List, ForwardList, Set, MultiSet, UnorderedSet, UnorderedMultiSet,
-  Map, MultiMap, UnorderedMap, UnorderedMultiMap,
+  Vector = 1,
+  Deque,
+  List,
+  ForwardList,
+  Set,
+  MultiSet,
+  UnorderedSet,
+  UnorderedMultiSet,
+  Map,
+  MultiMap,
+  UnorderedMap,
+  UnorderedMultiMap,
 };
 
 constexpr std::uint32_t kNoType = 0xFFFFFFFFu;
 
 // TypeInfo::flags
 enum : std::uint32_t {
-  kTypeScopedEnum = 1u << 0,  // enum class
-  kTypeShallow = 1u << 1,     // a shallow root's restricted view of its class (§3)
-  kTypeMigrated = 1u << 2,    // the build has a symcr_migrate hook for the type; recorded in
-                              // schema files so that `symcr plan` reports the migration
-  kTypeCreatable = 1u << 3,   // the build has a Lifecycle for the type (restore can create it
-                              // on the heap); recorded in schema files so that `symcr plan`
-                              // foresees heap objects rebuilt through raw pointers
-  kTypeValidated = 1u << 4,   // the build has a symcr_validate for the type; recorded in schema
-                              // files so that `symcr plan` says it cannot foresee the verdict
-  kTypePolymorphic = 1u << 5, // a class with virtual functions (not final): a raw pointer to it
-                              // targets a checkpointed object (a member, an element) or a heap
-                              // object of one of the build's kTypeDynamicType classes
-  kTypeLeavesMembers = 1u << 6, // left_to_new_build lists members this build never restores
-                                // (const, reference, function and member pointers): a
-                                // checkpoint's value for one of them is not lost but left
-  kTypeDynamicType = 1u << 7,   // a class restore can create as the dynamic type of a heap
-                                // object behind a pointer to one of its polymorphic bases: its
-                                // Lifecycle names its vtable, by which saving recognises it
+  kTypeScopedEnum = 1u << 0,     // enum class
+  kTypeShallow = 1u << 1,        // a shallow root's restricted view of its class (§3)
+  kTypeMigrated = 1u << 2,       // the build has a symcr_migrate hook for the type; recorded in
+                                 // schema files so that `symcr plan` reports the migration
+  kTypeCreatable = 1u << 3,      // the build has a Lifecycle for the type (restore can create it
+                                 // on the heap); recorded in schema files so that `symcr plan`
+                                 // foresees heap objects rebuilt through raw pointers
+  kTypeValidated = 1u << 4,      // the build has a symcr_validate for the type; recorded in schema
+                                 // files so that `symcr plan` says it cannot foresee the verdict
+  kTypePolymorphic = 1u << 5,    // a class with virtual functions (not final): a raw pointer to it
+                                 // targets a checkpointed object (a member, an element) or a heap
+                                 // object of one of the build's kTypeDynamicType classes
+  kTypeLeavesMembers = 1u << 6,  // left_to_new_build lists members this build never restores
+                                 // (const, reference, function and member pointers): a
+                                 // checkpoint's value for one of them is not lost but left
+  kTypeDynamicType = 1u << 7,    // a class restore can create as the dynamic type of a heap
+                                 // object behind a pointer to one of its polymorphic bases: its
+                                 // Lifecycle names its vtable, by which saving recognises it
   kTypeReferenceMembers = 1u << 8,  // reference_members lists members a pointer may target
                                     // although their values are not saved (format.md §2)
   kTypeNeverOwns = 1u << 9,  // a Pointer declared never to own a heap object (SYMCR_NOT_OWNER):
@@ -88,8 +98,8 @@ enum : std::uint32_t {
 };
 
 struct EnumeratorInfo {
-  const char* name;     // unqualified enumerator name, e.g. "AUTO"
-  std::int64_t value;   // its value (unsigned 64-bit enumerators are stored bit-cast)
+  const char* name;    // unqualified enumerator name, e.g. "AUTO"
+  std::int64_t value;  // its value (unsigned 64-bit enumerators are stored bit-cast)
 };
 
 // SYMCR_RANGE's inclusive bounds on a member's value. Apart from FieldInfo: few members have one.
@@ -102,9 +112,9 @@ struct FieldRange {
 // restore in another process moves the clock's times by its advance since the checkpoint.
 // Clocks are numbered in the byte order of their names (docs/format.md §3).
 struct ClockInfo {
-  const char* name;          // null in the device profile's tables
-  std::int64_t (*read)();    // the program's reading function; null in a schema without code
-  std::uint32_t index;       // this clock's number among the schema's clocks
+  const char* name;        // null in the device profile's tables
+  std::int64_t (*read)();  // the program's reading function; null in a schema without code
+  std::uint32_t index;     // this clock's number among the schema's clocks
 };
 
 // A member that holds a time of `clock` (kFieldClockTime). `never` (0 unless annotated) means
@@ -115,16 +125,16 @@ struct FieldTime {
 };
 
 struct FieldInfo {
-  const char* name;                  // source name of the member (or base type name)
-  std::uint32_t type;                // index into Schema::types
-  std::uint32_t offset;              // byte offset in the enclosing object; for a bit-field,
-                                     // the offset of the storage unit it lives in
-  std::uint16_t bit_offset;          // bit-field: first bit within the unit (LSB = 0)
-  std::uint16_t bit_width;           // bit-field width in bits; 0 = not a bit-field
-  std::uint32_t flags;               // kField*
-  const char* const* renamed_from;   // nullptr-terminated list of old names, or nullptr
-  const FieldRange* range;           // with kFieldHasRange: the bounds on the value; else null
-  const FieldTime* time;             // with kFieldClockTime: the clock of its times; else null
+  const char* name;                 // source name of the member (or base type name)
+  std::uint32_t type;               // index into Schema::types
+  std::uint32_t offset;             // byte offset in the enclosing object; for a bit-field,
+                                    // the offset of the storage unit it lives in
+  std::uint16_t bit_offset;         // bit-field: first bit within the unit (LSB = 0)
+  std::uint16_t bit_width;          // bit-field width in bits; 0 = not a bit-field
+  std::uint32_t flags;              // kField*
+  const char* const* renamed_from;  // nullptr-terminated list of old names, or nullptr
+  const FieldRange* range;          // with kFieldHasRange: the bounds on the value; else null
+  const FieldTime* time;            // with kFieldClockTime: the clock of its times; else null
 };
 
 // Per-kind operations: the only code the runtime cannot derive from offsets. Implemented as
@@ -134,7 +144,7 @@ struct FieldInfo {
 typedef ::symcr_lifecycle Lifecycle;
 
 struct StringOps {
-  std::size_t (*size)(const void* s);                    // in characters
+  std::size_t (*size)(const void* s);  // in characters
   const void* (*data)(const void* s);
   void (*assign)(void* s, const void* chars, std::size_t n);
 };
@@ -142,12 +152,11 @@ struct StringOps {
 struct ContainerOps {
   std::size_t (*size)(const void* c);
   // Save: calls visit(context, element) for each element in iteration order.
-  void (*for_each)(const void* c, void (*visit)(void* context, const void* element),
-                   void* context);
+  void (*for_each)(const void* c, void (*visit)(void* context, const void* element), void* context);
   // Element i in iteration order (O(i) for node containers); nullptr if out of range.
   void* (*element_at)(void* c, std::size_t i);
   void (*clear)(void* c);
-  void (*reserve)(void* c, std::size_t n);               // no-op where meaningless
+  void (*reserve)(void* c, std::size_t n);  // no-op where meaningless
   // Sequences: append a value-initialised element and return it (stable until the next
   // append only for vectors, which is why restore reserves first). nullptr for associative.
   void* (*append)(void* c);
@@ -165,20 +174,20 @@ struct ContainerOps {
 };
 
 struct OptionalOps {
-  const void* (*get)(const void* o);    // nullptr when empty
-  void* (*emplace)(void* o);            // engage with a value-initialised value; returns it
+  const void* (*get)(const void* o);  // nullptr when empty
+  void* (*emplace)(void* o);          // engage with a value-initialised value; returns it
   void (*reset)(void* o);
 };
 
 struct VariantOps {
-  std::uint32_t (*index)(const void* v);                 // kNoType when valueless
-  const void* (*get)(const void* v);                     // the active alternative
-  void* (*emplace)(void* v, std::uint32_t index);        // value-initialise alternative
+  std::uint32_t (*index)(const void* v);           // kNoType when valueless
+  const void* (*get)(const void* v);               // the active alternative
+  void* (*emplace)(void* v, std::uint32_t index);  // value-initialise alternative
 };
 
 struct UniquePtrOps {
   const void* (*get)(const void* p);
-  void* (*make)(void* p);               // p.reset(new T()); returns the pointee
+  void* (*make)(void* p);  // p.reset(new T()); returns the pointee
   void (*reset)(void* p);
 };
 
@@ -186,33 +195,33 @@ struct SharedPtrOps {
   const void* (*get)(const void* p);
   // A runtime-owned std::shared_ptr<T> holding a new value-initialised T; returns the holder.
   void* (*make_holder)();
-  void* (*holder_get)(void* holder);                     // the T inside a holder
+  void* (*holder_get)(void* holder);                        // the T inside a holder
   void (*assign_from_holder)(void* p, const void* holder);  // p = *holder
   void (*destroy_holder)(void* holder);
   void (*reset)(void* p);
 };
 
 struct TypeInfo {
-  const char* name;                  // canonical name: "Copter", "AP_Int8<int8_t>", "int32",
-                                     // "std::vector<Waypoint>" (see docs/format.md §names)
+  const char* name;  // canonical name: "Copter", "AP_Int8<int8_t>", "int32",
+                     // "std::vector<Waypoint>" (see docs/format.md §names)
   Kind kind;
-  std::uint32_t flags;               // kType*
-  std::uint32_t size;                // sizeof(T) in the running build
-  std::uint32_t align;               // alignof(T)
-  const FieldInfo* fields;           // Struct, Union (Union may list its members; unused)
+  std::uint32_t flags;      // kType*
+  std::uint32_t size;       // sizeof(T) in the running build
+  std::uint32_t align;      // alignof(T)
+  const FieldInfo* fields;  // Struct, Union (Union may list its members; unused)
   std::uint32_t field_count;
-  const EnumeratorInfo* enumerators; // Enum
+  const EnumeratorInfo* enumerators;  // Enum
   std::uint32_t enumerator_count;
-  std::uint32_t element;             // Enum: underlying; Array/Container/Optional/pointers:
-                                     // element/pointee; String: character type; else kNoType
-  std::uint64_t count;               // Array length
-  const std::uint32_t* alternatives; // Variant
+  std::uint32_t element;              // Enum: underlying; Array/Container/Optional/pointers:
+                                      // element/pointee; String: character type; else kNoType
+  std::uint64_t count;                // Array length
+  const std::uint32_t* alternatives;  // Variant
   std::uint32_t alternative_count;
-  std::uint8_t container_kind;       // Container: a ContainerKind
-  const void* ops;                   // the kind's *Ops table, or nullptr
-  const Lifecycle* lifecycle;        // for pointee/element types that restore must create
+  std::uint8_t container_kind;           // Container: a ContainerKind
+  const void* ops;                       // the kind's *Ops table, or nullptr
+  const Lifecycle* lifecycle;            // for pointee/element types that restore must create
   bool (*validate)(const void* object);  // user's symcr_validate(const T&), or nullptr
-  const char* const* renamed_from;   // SYMCR_RENAMED_FROM on the type; nullptr-terminated
+  const char* const* renamed_from;       // SYMCR_RENAMED_FROM on the type; nullptr-terminated
   // User's symcr_migrate(T&, const OldValues&), or nullptr. Restore calls it on each restored
   // instance whose checkpointed type differs from this one, after the mechanical rules.
   void (*migrate)(void* object, const OldValues& old);
@@ -228,11 +237,11 @@ struct TypeInfo {
 };
 
 struct RootInfo {
-  const char* name;                  // qualified source name: "copter", "ns::state",
-                                     // "Class::member", "function::local"
+  const char* name;  // qualified source name: "copter", "ns::state",
+                     // "Class::member", "function::local"
   std::uint32_t type;
-  void* address;                     // the variable in this process
-  std::uint32_t flags;               // kRoot*
+  void* address;        // the variable in this process
+  std::uint32_t flags;  // kRoot*
   const char* const* renamed_from;
 };
 

@@ -26,7 +26,6 @@
 #include <cstdint>
 #include <string>
 
-
 namespace symcr {
 
 struct Schema;  // <symcr/generated.hpp>

@@ -63,8 +63,7 @@ using void_t = typename make_void<T...>::type;
 template <typename C, typename = void>
 struct has_push_back : std::false_type {};
 template <typename C>
-struct has_push_back<C, void_t<decltype(std::declval<C&>().emplace_back())>>
-    : std::true_type {};
+struct has_push_back<C, void_t<decltype(std::declval<C&>().emplace_back())>> : std::true_type {};
 template <typename C, typename = void>
 struct has_reserve : std::false_type {};
 template <typename C>
@@ -133,7 +132,8 @@ struct container {
     C& self = *static_cast<C*>(c);
     if (i >= size(c)) return nullptr;
     typename C::iterator it = self.begin();
-    std::advance(it, static_cast<typename std::iterator_traits<typename C::iterator>::difference_type>(i));
+    std::advance(
+        it, static_cast<typename std::iterator_traits<typename C::iterator>::difference_type>(i));
     // Associative elements are const (keys); restore only writes through pointers it owns.
     return const_cast<void*>(static_cast<const void*>(&*it));
   }
@@ -249,8 +249,8 @@ struct shared_ptr {
   }
   static void destroy_holder(void* holder) { delete static_cast<P*>(holder); }
   static void reset(void* p) { static_cast<P*>(p)->reset(); }
-  static constexpr SharedPtrOps table{&get,          &make_holder,     &holder_get,
-                                      &assign_from_holder, &destroy_holder, &reset};
+  static constexpr SharedPtrOps table{
+      &get, &make_holder, &holder_get, &assign_from_holder, &destroy_holder, &reset};
 };
 
 // Before C++17 a static constexpr member that is odr-used (its address taken) needs a

@@ -60,19 +60,19 @@ namespace symcr {
 // Errors.
 enum class Error : std::uint8_t {
   None = 0,
-  NoSchema,        // no generated schema linked into the program
-  Io,              // open/read/write/rename failed (message has errno text)
-  NotACheckpoint,  // bad magic
-  FutureVersion,   // written by a newer format version
-  Truncated,       // shorter than its header says
-  Checksum,        // checksum mismatch
-  Corrupt,         // structurally invalid (bad schema, bad lengths, bad references)
-  SchemaUnknown,   // references a schema by hash that is not available
-  Incompatible,    // a root cannot be restored at all (e.g. struct <-> int)
-  Strict,          // strict mode refused a lossy decision
-  Unsupported,     // a state the runtime cannot save (e.g. overlapping heap objects)
-  NoValidSlot,     // store: no slot holds a valid checkpoint
-  TooLarge,        // checkpoint larger than a store slot or a format limit
+  NoSchema,         // no generated schema linked into the program
+  Io,               // open/read/write/rename failed (message has errno text)
+  NotACheckpoint,   // bad magic
+  FutureVersion,    // written by a newer format version
+  Truncated,        // shorter than its header says
+  Checksum,         // checksum mismatch
+  Corrupt,          // structurally invalid (bad schema, bad lengths, bad references)
+  SchemaUnknown,    // references a schema by hash that is not available
+  Incompatible,     // a root cannot be restored at all (e.g. struct <-> int)
+  Strict,           // strict mode refused a lossy decision
+  Unsupported,      // a state the runtime cannot save (e.g. overlapping heap objects)
+  NoValidSlot,      // store: no slot holds a valid checkpoint
+  TooLarge,         // checkpoint larger than a store slot or a format limit
   Unauthenticated,  // keys are set and the checkpoint's MAC is missing or does not verify
   // store: every slot holds a checkpoint the crash-loop fallback needs until confirm()
   StoreFull,

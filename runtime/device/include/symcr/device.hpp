@@ -26,16 +26,16 @@ namespace device {
 
 enum class Result : std::uint8_t {
   Ok = 0,
-  NoSpace,          // the buffer (or scratch) is smaller than record_size() (scratch_size())
-  Unsupported,      // the schema has a type the device profile cannot hold: see check_schema()
-  Truncated,        // fewer bytes than the record says it has
-  Corrupt,          // bad magic, sizes or checksum, or a payload that does not decode
-  FutureVersion,    // written by a newer record format
-  OtherSchema,      // written by a build that is neither this one nor one it has a plan for
-  OtherProgram,     // written by another program
-  Rejected,         // a value outside its SYMCR_RANGE, or refused by its symcr_validate
-  TooManyPointers,  // more distinct pointer targets than kMaxReferences
-  Empty,            // Ring::restore_latest: no slot was ever written
+  NoSpace,            // the buffer (or scratch) is smaller than record_size() (scratch_size())
+  Unsupported,        // the schema has a type the device profile cannot hold: see check_schema()
+  Truncated,          // fewer bytes than the record says it has
+  Corrupt,            // bad magic, sizes or checksum, or a payload that does not decode
+  FutureVersion,      // written by a newer record format
+  OtherSchema,        // written by a build that is neither this one nor one it has a plan for
+  OtherProgram,       // written by another program
+  Rejected,           // a value outside its SYMCR_RANGE, or refused by its symcr_validate
+  TooManyPointers,    // more distinct pointer targets than kMaxReferences
+  Empty,              // Ring::restore_latest: no slot was ever written
   SequenceExhausted,  // Ring::save: the newest record's sequence is the last a ring writes
 };
 

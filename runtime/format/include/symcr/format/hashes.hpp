@@ -17,8 +17,9 @@ constexpr std::uint32_t kCrc32cPolynomial = 0x82F63B78u;
 // 64 bytes of flash, at a speed ample for a device's record of a few kilobytes. The host runtime
 // computes the same CRC faster (runtime/src/crc32c.hpp); tests compare the two. Never inlined:
 // a device calls it from save, restore and the ring, and one copy is the smallest.
-__attribute__((noinline)) inline std::uint32_t crc32c_extend_small(std::uint32_t crc, const std::uint8_t* data,
-                                         std::size_t size) {
+__attribute__((noinline)) inline std::uint32_t crc32c_extend_small(std::uint32_t crc,
+                                                                   const std::uint8_t* data,
+                                                                   std::size_t size) {
   static const std::uint32_t kNibble[16] = {0x00000000u, 0x105EC76Fu, 0x20BD8EDEu, 0x30E349B1u,
                                             0x417B1DBCu, 0x5125DAD3u, 0x61C69362u, 0x7198540Du,
                                             0x82F63B78u, 0x92A8FC17u, 0xA24BB5A6u, 0xB21572C9u,

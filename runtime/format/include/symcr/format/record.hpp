@@ -101,7 +101,8 @@ inline void encode_record_header(const RecordHeader& h, std::uint8_t* out) {
 
 // Whether the first `size` bytes (at most the magic's) are the record magic's. Never inlined: a
 // device's ring and restore both ask.
-__attribute__((noinline)) inline bool starts_like_record(const std::uint8_t* data, std::size_t size) {
+__attribute__((noinline)) inline bool starts_like_record(const std::uint8_t* data,
+                                                         std::size_t size) {
   const std::size_t n = size < kRecordMagicSize ? size : kRecordMagicSize;
   for (std::size_t i = 0; i < n; ++i) {
     if (data[i] != kRecordMagic[i]) return false;
