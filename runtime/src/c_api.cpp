@@ -55,7 +55,26 @@ symcr::RestoreOptions restore_options(int flags) {
   return options;
 }
 
+// A C counter's result as a Status: its error code, or Io for a value that is not one.
+symcr::Status counter_status(int code, const char* operation) {
+  if (code == SYMCR_OK) return symcr::Status();
+  const bool known = std::strcmp(symcr_error_name(code), "Unknown") != 0;
+  return symcr::Status(known ? static_cast<symcr::Error>(code) : symcr::Error::Io,
+                       "the program's freshness counter: %s failed with %s", operation,
+                       known ? symcr_error_name(code) : "an unknown code");
+}
 }  // namespace
+
+symcr::Status symcr::detail::CFreshnessCounter::read(std::uint64_t& value) {
+  std::uint64_t read_value = 0;
+  const symcr::Status status = counter_status(counter_.read(counter_.context, &read_value), "read");
+  if (status.ok()) value = read_value;
+  return status;
+}
+
+symcr::Status symcr::detail::CFreshnessCounter::advance(std::uint64_t value) {
+  return counter_status(counter_.advance(counter_.context, value), "advance");
+}
 
 extern "C" {
 
@@ -157,28 +176,6 @@ void symcr_store_options_init(symcr_store_options* options) {
   options->allow_unrecorded_restore = defaults.allow_unrecorded_restore;
   options->freshness_counter = nullptr;
   options->counter_path = defaults.counter_path;
-}
-
-namespace {
-// A C counter's result as a Status: its error code, or Io for a value that is not one.
-symcr::Status counter_status(int code, const char* operation) {
-  if (code == SYMCR_OK) return symcr::Status();
-  const bool known = std::strcmp(symcr_error_name(code), "Unknown") != 0;
-  return symcr::Status(known ? static_cast<symcr::Error>(code) : symcr::Error::Io,
-                       "the program's freshness counter: %s failed with %s", operation,
-                       known ? symcr_error_name(code) : "an unknown code");
-}
-}  // namespace
-
-symcr::Status symcr::detail::CFreshnessCounter::read(std::uint64_t& value) {
-  std::uint64_t read_value = 0;
-  const symcr::Status status = counter_status(counter_.read(counter_.context, &read_value), "read");
-  if (status.ok()) value = read_value;
-  return status;
-}
-
-symcr::Status symcr::detail::CFreshnessCounter::advance(std::uint64_t value) {
-  return counter_status(counter_.advance(counter_.context, value), "advance");
 }
 
 int symcr_store_open(const char* path, const symcr_schema* schema,
