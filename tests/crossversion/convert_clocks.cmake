@@ -9,13 +9,7 @@
 #   cmake -DV0=<exe> -DV1=<exe> -DCLI=<symcr> -DSCHEMA1=<file> -DDIR=<dir> -P convert_clocks.cmake
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
-function(step)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "${ARGN}\nfailed (${result}):\n${out}${err}")
-  endif()
-  message("${out}${err}")
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/step.cmake)
 step("${V0}" "${DIR}/v0.ckpt")
 step("${CMAKE_COMMAND}" -E env "XV_INITIAL=${DIR}/initial.ckpt" "${V1}" "${DIR}/v0.ckpt")
 step("${CLI}" convert "${DIR}/v0.ckpt" --schema "${SCHEMA1}" --initial "${DIR}/initial.ckpt"

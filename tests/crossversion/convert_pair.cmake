@@ -11,13 +11,7 @@
 # --initial, with CONVERT_ARGS) must fail with exit code 1 or 2, print REFUSE, and write nothing.
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
-function(step)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT result EQUAL 0)
-    message(FATAL_ERROR "${ARGN}\nfailed (${result}):\n${out}${err}")
-  endif()
-  message("${out}${err}")
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/step.cmake)
 step("${V0}" "${DIR}/v0.ckpt")
 if(DEFINED REFUSE)
   execute_process(COMMAND "${CLI}" convert "${DIR}/v0.ckpt" --schema "${SCHEMA1}" ${CONVERT_ARGS}
