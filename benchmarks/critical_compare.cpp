@@ -225,7 +225,8 @@ std::vector<std::uint8_t> v0_checkpoint() {
   return bytes;
 }
 
-// The resolution plan of (V0 schema, V1 schema) is built once and cached (runtime/src/plan.hpp).
+// The resolution plan of (V0 schema, V1 schema) is built once and cached
+// (runtime/src/plan/plan.hpp).
 // Single-file form: the inline V0 schema is parsed on every restore, the plan is not rebuilt.
 void BM_SchemaChangeRestoreCached(benchmark::State& state) {
   const std::vector<std::uint8_t> bytes = v0_checkpoint();

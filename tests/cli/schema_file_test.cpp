@@ -1,4 +1,4 @@
-// Schema files (runtime/src/schema_file.hpp): written from a live schema, read back without it.
+// Schema files (runtime/src/api/schema_file.hpp): written from a live schema, read back without it.
 #include "schema_file.hpp"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// StoreReader (runtime/src/store_reader.hpp): a store's slots as restore_latest() sees them,
+// StoreReader (runtime/src/api/store_reader.hpp): a store's slots as restore_latest() sees them,
 // read without a Schema and without the store's lock.
 #include "store_reader.hpp"
 

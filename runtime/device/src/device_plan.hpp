@@ -1,7 +1,8 @@
 // A device plan image: how the device profile restores a checkpoint of a previous build (the
 // writer) into this one (the reader), resolved by symcr-gen at build time from the host's plan
 // (docs/resolution.md) and executed by the device without a heap or names. Shared by the
-// device's executor (device_plan.cpp) and the host's encoder (runtime/src/device_plan_encode.cpp).
+// device's executor (device_plan.cpp) and the host's encoder
+// (runtime/src/plan/device_plan_encode.cpp).
 //
 // Layout, little-endian:
 //   header (kPlanHeaderSize bytes): magic "SYDP", u16 version, u16 op count, u64 writer hash,

@@ -15,8 +15,8 @@ constexpr std::uint32_t kCrc32cPolynomial = 0x82F63B78u;
 // Extends `crc` (the CRC of the bytes before; 0 for none) by `size` bytes, so that
 // crc32c(a+b) == crc32c_extend(crc32c(a), b). Four bits at a time through a 16-entry table:
 // 64 bytes of flash, at a speed ample for a device's record of a few kilobytes. The host runtime
-// computes the same CRC faster (runtime/src/crc32c.hpp); tests compare the two. Never inlined:
-// a device calls it from save, restore and the ring, and one copy is the smallest.
+// computes the same CRC faster (runtime/src/schema/crc32c.hpp); tests compare the two. Never
+// inlined: a device calls it from save, restore and the ring, and one copy is the smallest.
 __attribute__((noinline)) inline std::uint32_t crc32c_extend_small(std::uint32_t crc,
                                                                    const std::uint8_t* data,
                                                                    std::size_t size) {

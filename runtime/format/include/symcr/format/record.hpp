@@ -1,6 +1,6 @@
 // The record header (docs/format.md §1): its layout, written once, and its codec. Host and
 // device records share it; the fields after the 56 bytes of an authenticated record are here
-// too, its MAC is the host's (runtime/src/authentication.cpp).
+// too, its MAC is the host's (runtime/src/api/authentication.cpp).
 #ifndef SYMCR_FORMAT_RECORD_HPP
 #define SYMCR_FORMAT_RECORD_HPP
 

@@ -1,6 +1,6 @@
 // The store file's fixed layout (docs/format.md §4): its header, the pages and schema areas
 // before the slots, and the bounds of its geometry. The host's Store and StoreReader read and
-// write it (runtime/src/store_layout.*); the restore journal's and identity's places in the
+// write it (runtime/src/api/store_layout.*); the restore journal's and identity's places in the
 // first page are theirs (restore_journal.hpp, freshness.hpp).
 #ifndef SYMCR_FORMAT_STORE_HPP
 #define SYMCR_FORMAT_STORE_HPP

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "parsed_schema.hpp"
-#include "payload_grammar.hpp"
 #include "schema_blob.hpp"
+#include "schema_sizes.hpp"
 #include "symcr/format/hashes.hpp"
 #include "wire.hpp"
 

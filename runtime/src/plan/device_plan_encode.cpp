@@ -5,7 +5,7 @@
 
 #include <cstring>
 
-#include "../device/src/device_plan.hpp"
+#include "device_plan.hpp"
 #include "plan.hpp"
 #include "planner.hpp"
 #include "wire.hpp"

@@ -8,8 +8,8 @@
 #include <mutex>
 #include <vector>
 
-#include "payload_grammar.hpp"
 #include "schema_blob.hpp"
+#include "schema_sizes.hpp"
 #include "symcr/device.hpp"
 #include "symcr/generated.hpp"
 
@@ -39,7 +39,7 @@ struct SchemaFacts {
     std::uint32_t type;
   };
   std::vector<DynamicType> dynamic_types;
-  // The clocks whose readings end every payload (payload_grammar.hpp: schema_clocks).
+  // The clocks whose readings end every payload (schema_sizes.hpp: schema_clocks).
   std::vector<const ClockInfo*> clocks;
 };
 

@@ -3,9 +3,9 @@
 #include <utility>
 
 #include "device_format.hpp"
-#include "payload_grammar.hpp"
 #include "schema_blob.hpp"
 #include "schema_facts.hpp"
+#include "schema_sizes.hpp"
 #include "symcr/format/hashes.hpp"
 #include "wire.hpp"
 
