@@ -197,6 +197,13 @@ int SimulatedFileSystem::lstat(const char* path, struct stat* out) {
     errno = EIO;
     return -1;
   }
+  if (directory_ == path) {  // its one folder
+    std::memset(out, 0, sizeof *out);
+    out->st_dev = 1;
+    out->st_mode = S_IFDIR | 0700;
+    out->st_uid = ::geteuid();
+    return 0;
+  }
   auto found = files_.find(path);
   if (found == files_.end()) {
     errno = ENOENT;
@@ -276,8 +283,8 @@ int SimulatedFileSystem::unlink(const char* path) {
   return crashed_ ? (errno = EIO, -1) : 0;
 }
 
-bool SimulatedFileSystem::list_directory(const char* directory,
-                                         void (*visit)(void*, const char*), void* context) {
+bool SimulatedFileSystem::list_directory(const char* directory, void (*visit)(void*, const char*),
+                                         void* context) {
   if (!alive() || directory_ != directory) return false;
   for (const std::string& name : names()) visit(context, name.c_str());
   return true;

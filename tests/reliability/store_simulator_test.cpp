@@ -734,6 +734,11 @@ TEST_F(StoreFaultTest, AStoreThatCannotRecordARestoreRefusesItUnlessAllowed) {
     EXPECT_NE(std::string(refused.status().message()).find("crash-loop fallback"),
               std::string::npos)
         << refused.status().message();
+    // The way out is named in full, even after the store's reason (a long path would cut it).
+    EXPECT_NE(std::string(refused.status().message())
+                  .find("StoreOptions::allow_unrecorded_restore restores without the fallback"),
+              std::string::npos)
+        << refused.status().message();
     EXPECT_TRUE(state_holds(-1));
   }
   options.allow_unrecorded_restore = true;

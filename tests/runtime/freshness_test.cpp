@@ -5,6 +5,7 @@
 #include "freshness.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cstring>
 #include <string>
@@ -199,8 +200,7 @@ TEST_F(FreshnessTest, AForgedJournalIsReportedAndNeverDisablesRestores) {
   ASSERT_EQ(report.warnings().size(), 1u);
   EXPECT_NE(report.warnings()[0].find("restore journal was not trusted"), std::string::npos)
       << report.warnings()[0];
-  EXPECT_NE(report.warnings()[0].find("carries no MAC"), std::string::npos)
-      << report.warnings()[0];
+  EXPECT_NE(report.warnings()[0].find("carries no MAC"), std::string::npos) << report.warnings()[0];
   // Saves after it number above the real checkpoints, not above the forged journal.
   save_seeds(5, 5);
   symcr::Store store;
@@ -390,6 +390,42 @@ TEST_F(FreshnessTest, ACounterPathAwayFromTheStoreIsUsed) {
   expect_a(2);
 }
 
+// A counter path in a folder that does not exist could never be written: every save would
+// write its record and then fail, and every restore would find no counter and say the store
+// was rolled back. Refused at open instead, naming the folder; the store and its checkpoints
+// untouched.
+TEST_F(FreshnessTest, ACounterPathInAMissingFolderIsRefusedAtOpen) {
+  save_seeds(1, 2);
+  const std::vector<std::uint8_t> before = read_file(path);
+  const std::string missing = dir.file("no-such-folder");
+  const std::string counter = missing + "/copter.fresh";
+  options.counter_path = counter.c_str();
+  symcr::Store store;
+  const symcr::Status opened = symcr::Store::open(path.c_str(), schema_a, options, store);
+  EXPECT_EQ(opened.error(), symcr::Error::Io);
+  EXPECT_NE(std::string(opened.message()).find("its folder " + missing + " does not exist"),
+            std::string::npos)
+      << opened.message();
+  EXPECT_EQ(read_file(path), before);
+  // A file where the folder should be is refused the same way.
+  const std::string file_as_folder = dir.file("fresh.store") + "/copter.fresh";
+  options.counter_path = file_as_folder.c_str();
+  EXPECT_EQ(symcr::Store::open(path.c_str(), schema_a, options, store).error(), symcr::Error::Io);
+  // The last good checkpoint is still there, with its counter beside the store.
+  options.counter_path = "";
+  symcr::Report report = restore();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  expect_a(2);
+  // Once the folder exists, the counter path is used.
+  ASSERT_EQ(mkdir(missing.c_str(), 0700), 0);
+  options.counter_path = counter.c_str();
+  save_seeds(3, 3);
+  EXPECT_EQ(read_file(counter).size(), 200u);
+  report = restore();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  expect_a(3);
+}
+
 // A counter path naming the store itself would let the store overwrite its counter (and an
 // older copy of the store bring its own): refused at open, the store untouched. So is one
 // naming a directory; an empty path means the default, beside the store.
@@ -401,8 +437,9 @@ TEST_F(FreshnessTest, ACounterPathNamingTheStoreOrADirectoryIsRefused) {
     symcr::Store store;
     const symcr::Status opened = symcr::Store::open(path.c_str(), schema_a, options, store);
     EXPECT_EQ(opened.error(), symcr::Error::Unsupported) << counter;
-    EXPECT_NE(std::string(opened.message()).find(counter == path ? "is the store" : "not a regular"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(opened.message()).find(counter == path ? "is the store" : "not a regular"),
+        std::string::npos)
         << opened.message();
   }
   EXPECT_EQ(read_file(path), before);

@@ -18,7 +18,11 @@ TEST(EngineStatus, FormatsAndTruncatesSafely) {
   EXPECT_STREQ(error.message(), "bad field at 42");
   const std::string long_text(1000, 'x');
   symcr::Status truncated(symcr::Error::Io, "%s", long_text.c_str());
-  EXPECT_EQ(std::string(truncated.message()), long_text.substr(0, 239));
+  // Cut at 319 characters, and says so.
+  EXPECT_EQ(std::string(truncated.message()), long_text.substr(0, 316) + "...");
+  // A message that just fits is not marked.
+  const std::string fits(319, 'y');
+  EXPECT_EQ(std::string(symcr::Status(symcr::Error::Io, "%s", fits.c_str()).message()), fits);
 }
 
 TEST(EngineStatus, NamesEveryErrorAndDecision) {

@@ -87,6 +87,8 @@ const char* error_name(Error error);
 // The outcome of an operation that returns no data. Fixed size: no allocation.
 class Status {
  public:
+  // A message longer than this, less one, is cut and ends in "...".
+  static constexpr std::size_t kMessageCapacity = 320;
   Status() = default;
   Status(Error error, const char* format, ...) __attribute__((format(printf, 3, 4)));
   bool ok() const { return error_ == Error::None; }
@@ -95,7 +97,7 @@ class Status {
 
  private:
   Error error_ = Error::None;
-  char message_[240] = {};
+  char message_[kMessageCapacity] = {};
 };
 
 // ---------------------------------------------------------------------------------------------

@@ -30,7 +30,7 @@ static_assert(SYMCR_REBASED == static_cast<int>(symcr::Decision::Rebased),
               "C decisions mirror symcr::Decision");
 
 namespace {
-thread_local char last_error[256];  // a Status message (240) always fits
+thread_local char last_error[symcr::Status::kMessageCapacity];  // a Status message fits
 }  // namespace
 
 int symcr::detail::record_c_error(const symcr::Status& status) {

@@ -159,7 +159,23 @@ Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
 
 Status check_counter_path(const char* counter, const struct stat& store, const char* store_path) {
   struct stat info {};
-  if (file_system().lstat(counter, &info) != 0) return Status();
+  if (file_system().lstat(counter, &info) != 0) {
+    // No counter yet: the first save writes one, so its folder must be there. Refused now rather
+    // than at every save (which would write its record and fail) and every restore (which
+    // would find no counter and roll back).
+    const char* slash = std::strrchr(counter, '/');
+    const std::string folder = slash == nullptr
+                                   ? std::string(".")
+                                   : std::string(counter, slash == counter ? 1 : slash - counter);
+    struct stat folder_info {};
+    if (file_system().lstat(folder.c_str(), &folder_info) != 0 || !S_ISDIR(folder_info.st_mode)) {
+      return Status(Error::Io,
+                    "the freshness counter %s of store %s cannot be written: its folder %s does "
+                    "not exist (create it, or name a file in an existing folder)",
+                    counter, store_path, folder.c_str());
+    }
+    return Status();
+  }
   if (info.st_dev == store.st_dev && info.st_ino == store.st_ino) {
     return Status(Error::Unsupported,
                   "the freshness counter %s is the store %s itself: name another file, where "

@@ -61,7 +61,7 @@ std::uint64_t newest_allowed(const Sequences& sequences, const RestoreJournal& j
 // the store file itself (`store`: its fstat; the counter would be overwritten by the store
 // and vice versa, so rollback would go unnoticed), or an existing entry that is not a regular
 // file (a directory, a device, a symbolic link, which the counter never follows). A path
-// that does not exist yet is fine: the first save creates it.
+// that does not exist yet is fine if its folder does: the first save creates it.
 Status check_counter_path(const char* counter, const struct stat& store, const char* store_path);
 
 class FileFreshnessCounter final : public FreshnessCounter {

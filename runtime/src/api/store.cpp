@@ -1257,9 +1257,9 @@ Report Store::restore_latest(const RestoreOptions& options) {
     if (!impl.allow_unrecorded_restore) {
       detail::ReportAccess::set_status(
           report, Status(Error::Io,
-                         "%s; the crash-loop fallback cannot record a restore in it, so nothing "
-                         "was restored (StoreOptions::allow_unrecorded_restore restores without "
-                         "the fallback)",
+                         "nothing restored: the crash-loop fallback cannot record a restore in a "
+                         "store it cannot write (StoreOptions::allow_unrecorded_restore restores "
+                         "without the fallback): %s",
                          impl.read_only_reason.c_str()));
       return report;
     }

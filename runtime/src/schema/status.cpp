@@ -2,6 +2,7 @@
 // names of errors and decisions used in messages, reports and the CLI.
 #include <cstdarg>
 #include <cstdio>
+#include <cstring>
 
 #include "payload_error.hpp"
 #include "symcr/symcr.hpp"
@@ -12,10 +13,13 @@ __attribute__((cold)) Status::Status(Error error, const char* format, ...) : err
   va_list args;
   va_start(args, format);
   // vsnprintf always NUL-terminates within the buffer and reports, but never writes, the
-  // untruncated length: a long message is cut, never overflows.
+  // untruncated length: a long message is cut, never overflows, and says that it was cut.
   int written = std::vsnprintf(message_, sizeof message_, format, args);
   va_end(args);
   if (written < 0) message_[0] = '\0';
+  if (written >= static_cast<int>(sizeof message_)) {
+    std::memcpy(message_ + sizeof message_ - 4, "...", 4);
+  }
 }
 
 namespace detail {
