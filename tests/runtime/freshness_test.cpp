@@ -35,11 +35,13 @@ class MemoryCounter : public symcr::FreshnessCounter {
   }
   symcr::Status advance(std::uint64_t value) override {
     ++advances;
+    if (failing) return symcr::Status(symcr::Error::Io, "the counter's chip is busy");
     if (value > value_) value_ = value;
     return symcr::Status();
   }
   std::uint64_t value_ = 0;
   int advances = 0;
+  bool failing = false;  // advance() fails and keeps the value
 };
 
 class FreshnessTest : public ::testing::Test {
@@ -124,6 +126,32 @@ TEST_F(FreshnessTest, EachSaveAdvancesTheCounterAndTheNewestRestores) {
   expect_a(5);
   // The default counter is a file beside the store; the user's hook was used instead here.
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"fresh.store"});
+}
+
+// A save whose counter cannot be advanced has still written a whole checkpoint: its error says
+// so, and the checkpoint counts (a counter behind the store is no rollback).
+TEST_F(FreshnessTest, ASaveWhoseCounterFailsSaysItsCheckpointWasSavedAndItRestores) {
+  MemoryCounter counter;
+  options.freshness_counter = &counter;
+  save_seeds(1, 2);
+  counter.failing = true;
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, options, store).ok());
+    fill_a(3);
+    const symcr::Status saved = store.save();
+    EXPECT_EQ(saved.error(), symcr::Error::Io);
+    EXPECT_NE(std::string(saved.message()).find("checkpoint 3 was saved, but"), std::string::npos)
+        << saved.message();
+    EXPECT_NE(std::string(saved.message()).find("the counter's chip is busy"), std::string::npos)
+        << saved.message();
+  }
+  EXPECT_EQ(counter.value_, 2u);
+  counter.failing = false;
+  const symcr::Report report = restore();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 3u);
+  expect_a(3);
 }
 
 TEST_F(FreshnessTest, AnOlderCopyOfTheStoreFileCopiedBackIsRefused) {

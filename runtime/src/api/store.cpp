@@ -1167,7 +1167,14 @@ Status Store::save() {
   // until then, and the slot it is in may be the next save's (slot_to_overwrite): the counter
   // passes it when confirm() writes the journal.
   if (impl.journal.unconfirmed != 0) return Status();
-  return impl.advance_counter(sequence);
+  const Status advanced = impl.advance_counter(sequence);
+  if (!advanced.ok()) {
+    // The checkpoint is whole and counts (a counter behind the store is no rollback): say so,
+    // so that the caller does not take it for lost.
+    return Status(advanced.error(), "checkpoint %llu was saved, but %s",
+                  static_cast<unsigned long long>(sequence), advanced.message());
+  }
+  return Status();
 }
 
 namespace {
