@@ -82,7 +82,8 @@ std::uint32_t first_unheld_at(const Schema& schema, std::uint32_t t, int depth) 
       return type.size == 4 || type.size == 8 ? kNoType : t;
     case Kind::Pointer:  // the pointee is not saved through the pointer: a path names it
       return type.element < schema.type_count ? kNoType : t;
-    case Kind::Array:
+    case Kind::Array:  // more elements than the target's std::size_t counts: not in memory
+      if (compact(schema) == nullptr && schema.types[t].count != type.count) return t;
       return first_unheld_at(schema, type.element, depth + 1);
     case Kind::Struct:
       for (std::uint32_t f = 0; f < type.field_count; ++f) {

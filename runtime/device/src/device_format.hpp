@@ -28,7 +28,7 @@ struct TypeView {
   Kind kind;
   std::uint32_t size;
   std::uint32_t element;       // Enum, Array, Pointer; else kNoType
-  std::uint64_t count;         // Array
+  std::size_t count;           // Array (first_unheld_type() refuses a count beyond std::size_t)
   std::uint32_t field_count;   // Struct: its fields...
   std::uint32_t member_count;  // ...and after them its reference members (a pointer's targets)
   bool (*validate)(const void* object);

@@ -73,7 +73,7 @@ class Restorer {
     const detail::TypeView type = detail::type_at(schema_, t);
     if (type.kind == Kind::Array) {
       const std::size_t stride = detail::type_at(schema_, type.element).size;
-      for (std::uint64_t i = 0; i < type.count; ++i) rebase(type.element, stage + i * stride, time);
+      for (std::size_t i = 0; i < type.count; ++i) rebase(type.element, stage + i * stride, time);
     } else if (type.kind == Kind::Int || type.kind == Kind::UInt) {
       format::rebase_time(stage, type.size, time.never, deltas_[time.clock->index]);
     }
@@ -137,7 +137,7 @@ class Restorer {
         return pointer(type, stage);
       case Kind::Array: {
         const std::size_t stride = detail::type_at(schema_, type.element).size;
-        for (std::uint64_t i = 0; i < type.count; ++i) {
+        for (std::size_t i = 0; i < type.count; ++i) {
           const Result result = value(type.element, stage + i * stride, live + i * stride);
           if (result != Result::Ok) return result;
         }

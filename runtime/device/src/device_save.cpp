@@ -81,7 +81,7 @@ class Saver {
         return pointer(type, p);
       case Kind::Array: {
         const std::size_t stride = detail::type_at(schema_, type.element).size;
-        for (std::uint64_t i = 0; i < type.count && result_ == Result::Ok; ++i) {
+        for (std::size_t i = 0; i < type.count && result_ == Result::Ok; ++i) {
           value(type.element, p + i * stride);
         }
         return;
