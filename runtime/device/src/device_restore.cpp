@@ -37,7 +37,7 @@ class Restorer {
       const RootInfo& root = schema_.roots[r];
       const std::size_t size = detail::root_size(schema_, r);
       std::memcpy(stage, root.address, size);  // what the record does not hold stays as is
-      result = value(root.type, stage, static_cast<std::uint8_t*>(root.address));
+      result = value(root.type, stage, nullptr);
       if (result != Result::Ok) return result;
       stage += detail::stage_size(size);
     }
@@ -68,16 +68,6 @@ class Restorer {
     }
   }
 
-  // The staged time(s) of a time field: an integer, or an array of them.
-  void rebase(std::uint32_t t, std::uint8_t* stage, const FieldTime& time) const {
-    const detail::TypeView type = detail::type_at(schema_, t);
-    if (type.kind == Kind::Array) {
-      const std::size_t stride = detail::type_at(schema_, type.element).size;
-      for (std::size_t i = 0; i < type.count; ++i) rebase(type.element, stage + i * stride, time);
-    } else if (type.kind == Kind::Int || type.kind == Kind::UInt) {
-      format::rebase_time(stage, type.size, time.never, deltas_[time.clock->index]);
-    }
-  }
 
   // Reads the reference at `*at` (advancing it): its target's address in the live roots.
   Result reference_at(std::size_t* at, std::uintptr_t* address, std::uint32_t* type) const {
@@ -123,8 +113,9 @@ class Restorer {
     return bytes;
   }
 
-  // Decodes a value of type `t` into `stage` (the staged copy); `live` is where it will be.
-  Result value(std::uint32_t t, std::uint8_t* stage, std::uint8_t* live) {
+  // Decodes a value of type `t` into `stage` (the staged copy). `time`: the clock of the times
+  // it holds (a time field: an integer, or an array of them), each moved by its clock's advance.
+  Result value(std::uint32_t t, std::uint8_t* stage, const FieldTime* time) {
     const detail::TypeView type = detail::type_at(schema_, t);
     switch (type.kind) {
       case Kind::Bool: {
@@ -138,7 +129,7 @@ class Restorer {
       case Kind::Array: {
         const std::size_t stride = detail::type_at(schema_, type.element).size;
         for (std::size_t i = 0; i < type.count; ++i) {
-          const Result result = value(type.element, stage + i * stride, live + i * stride);
+          const Result result = value(type.element, stage + i * stride, time);
           if (result != Result::Ok) return result;
         }
         return Result::Ok;
@@ -149,11 +140,8 @@ class Restorer {
           const std::uint8_t* wire = payload_ + at_;  // a scalar's value, bit-fields' too
           const Result result = field.bit_width != 0
                                     ? bit_field(field, stage + field.offset)
-                                    : value(field.type, stage + field.offset, live + field.offset);
+                                    : value(field.type, stage + field.offset, field.time);
           if (result != Result::Ok) return result;
-          if (field.time != nullptr && field.bit_width == 0) {
-            rebase(field.type, stage + field.offset, *field.time);
-          }
           if (field.range != nullptr && !in_range(field, wire)) {
             return Result::Rejected;
           }
@@ -163,6 +151,9 @@ class Restorer {
       }
       default:  // Int, UInt, Enum, Float, Union: their bytes
         std::memcpy(stage, take(type.size), type.size);
+        if (time != nullptr && (type.kind == Kind::Int || type.kind == Kind::UInt)) {
+          format::rebase_time(stage, type.size, time->never, deltas_[time->clock->index]);
+        }
         return Result::Ok;
     }
   }
