@@ -285,8 +285,8 @@ private:
                << Field.bit_offset << "u, " << Field.bit_width << "u},\n";
         if ((Field.flags & symcr::kFieldHasRange) && Field.range)
           Ranges << "    {" << FieldCount + F << "u, {"
-                 << number(Field.range->min) << ", "
-                 << number(Field.range->max) << "}},\n";
+                 << number(Field.range->min) << ", " << number(Field.range->max)
+                 << "}},\n";
         if ((Field.flags & symcr::kFieldClockTime) && Field.time &&
             Field.time->clock)
           Times << "    {" << FieldCount + F << "u, {&clocks["
@@ -299,8 +299,7 @@ private:
         Fields << "    {" << T.reference_members[M].offset << "u, "
                << T.reference_members[M].type << "u, 0u, 0u},\n";
       FieldCount += T.field_count + T.reference_member_count;
-      const std::uint64_t Count =
-          IsStruct ? T.reference_member_count : T.count;
+      const std::uint64_t Count = IsStruct ? T.reference_member_count : T.count;
       if (Count > 0xFFFFFFFFu)
         Limit = "an array of more than 2^32 - 1 elements";
       if (T.field_count > 0xFFFF || First > 0xFFFF)
@@ -308,11 +307,12 @@ private:
       if (Validators.size() > 0xFF)
         Limit = "more than 255 types with a symcr_validate";
       Types << "    {" << T.size << "u, " << Count << "u, "
-            << (T.element == symcr::kNoType ? std::string("symcr::kDeviceNoType")
-                                            : std::to_string(T.element) + "u")
-            << ", " << (IsStruct ? First : 0) << "u, " << T.field_count
-            << "u, " << static_cast<unsigned>(T.kind) << "u, " << Validator
-            << "},  // " << I << "\n";
+            << (T.element == symcr::kNoType
+                    ? std::string("symcr::kDeviceNoType")
+                    : std::to_string(T.element) + "u")
+            << ", " << (IsStruct ? First : 0) << "u, " << T.field_count << "u, "
+            << static_cast<unsigned>(T.kind) << "u, " << Validator << "},  // "
+            << I << "\n";
     }
     if (Schema.type_count >= symcr::kDeviceNoType)
       Limit = "more than 65,534 types";
@@ -335,11 +335,11 @@ private:
     DeviceRanges = std::count(RangeRows.begin(), RangeRows.end(), '\n');
     DeviceTimes = std::count(TimeRows.begin(), TimeRows.end(), '\n');
     if (DeviceRanges)
-      OS << "const symcr::DeviceFieldRange device_ranges[] = {\n" << RangeRows
-         << "};\n";
+      OS << "const symcr::DeviceFieldRange device_ranges[] = {\n"
+         << RangeRows << "};\n";
     if (DeviceTimes)
-      OS << "const symcr::DeviceFieldTime device_times[] = {\n" << TimeRows
-         << "};\n";
+      OS << "const symcr::DeviceFieldTime device_times[] = {\n"
+         << TimeRows << "};\n";
     DeviceFields = FieldCount;
     DeviceValidators = Validators.size();
   }
@@ -438,19 +438,17 @@ private:
         std::to_string(Schema.root_count) + "u, " +
         (Schema.program ? quoted(Schema.program) : std::string("nullptr"));
     if (Device)
-      OS << "  static const symcr::DeviceSchema schema{{" << Head
-         << "}, " << (Schema.type_count ? "device_types" : "nullptr") << ", "
+      OS << "  static const symcr::DeviceSchema schema{{" << Head << "}, "
+         << (Schema.type_count ? "device_types" : "nullptr") << ", "
          << (DeviceFields ? "device_fields" : "nullptr") << ", "
          << (DeviceValidators ? "device_validators" : "nullptr") << ", "
-         << (DeviceRanges ? "device_ranges" : "nullptr") << ", "
-         << DeviceRanges << "u, "
-         << (DeviceTimes ? "device_times" : "nullptr") << ", " << DeviceTimes
-         << "u};\n  return &schema;\n}\n\n";
+         << (DeviceRanges ? "device_ranges" : "nullptr") << ", " << DeviceRanges
+         << "u, " << (DeviceTimes ? "device_times" : "nullptr") << ", "
+         << DeviceTimes << "u};\n  return &schema;\n}\n\n";
     else
       OS << "  static const symcr::Schema schema{" << Head
          << "};\n  return &schema;\n}\n\n";
-    OS
-       << "extern \"C\" const symcr::SerialisedSchema* "
+    OS << "extern \"C\" const symcr::SerialisedSchema* "
           "symcr_program_serialised_schema(void) {\n  return &serialised;\n}\n"
        << "\nextern \"C\" std::uint64_t symcr_program_schema_hash(void) {\n"
           "  return "

@@ -38,8 +38,8 @@ class CompactSchema {
       }
       types_.push_back(entry);
     }
-    device_.schema = symcr::Schema{nullptr, from.type_count, from.roots, from.root_count,
-                                   from.program};
+    device_.schema =
+        symcr::Schema{nullptr, from.type_count, from.roots, from.root_count, from.program};
     device_.types = types_.data();
     device_.fields = fields_.data();
     device_.validators = validators_.data();

@@ -44,8 +44,7 @@ std::vector<std::uint8_t> vehicle_bytes() {
 TEST(DeviceCompactTables, SizeSaveAndRestoreAsTheTypeInfoTables) {
   const Both both;
   EXPECT_EQ(symcr::device::check_schema(both.compact.schema()), Result::Ok);
-  EXPECT_EQ(symcr::device::record_size(both.compact.schema()),
-            symcr::device::record_size(kSchema));
+  EXPECT_EQ(symcr::device::record_size(both.compact.schema()), symcr::device::record_size(kSchema));
   EXPECT_EQ(symcr::device::scratch_size(both.compact.schema()),
             symcr::device::scratch_size(kSchema));
   fill(4);
@@ -62,8 +61,7 @@ TEST(DeviceCompactTables, SizeSaveAndRestoreAsTheTypeInfoTables) {
 // A value out of its SYMCR_RANGE (a plain field, a bit-field) and one the validator refuses.
 TEST(DeviceCompactTables, RangesAndTheValidatorRefuseTheWholeCheckpoint) {
   const Both both;
-  void (*const breaks[])() = {[] { vehicle.altitude = 5001; },
-                              [] { vehicle.flags.trim = -13; },
+  void (*const breaks[])() = {[] { vehicle.altitude = 5001; }, [] { vehicle.flags.trim = -13; },
                               [] { vehicle.ticks = 666; }};
   for (auto breaking : breaks) {
     fill(2);

@@ -322,8 +322,8 @@ TEST(DevicePlan, RestoresAPreviousBuildsCheckpointValueByValue) {
 TEST(DevicePlan, CompactTablesRestoreAsTheTypeInfoTables) {
   const Devices devices;
   const device_tests::CompactSchema compact(kSchemaV1);
-  const symcr::device::Build compact_build(&compact.schema(), hash_of(kSchemaV1),
-                                           &devices.planned, 1);
+  const symcr::device::Build compact_build(&compact.schema(), hash_of(kSchemaV1), &devices.planned,
+                                           1);
   std::vector<std::uint8_t> scratch(symcr::device::scratch_size(compact.schema()));
   ASSERT_EQ(scratch.size(), symcr::device::scratch_size(kSchemaV1));
   for (int seed = 0; seed < 6; ++seed) {

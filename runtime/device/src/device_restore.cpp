@@ -68,7 +68,6 @@ class Restorer {
     }
   }
 
-
   // Reads the reference at `*at` (advancing it): its target's address in the live roots.
   Result reference_at(std::size_t* at, std::uintptr_t* address, std::uint32_t* type) const {
     std::size_t p = *at;

@@ -104,8 +104,8 @@ class Saver {
   // The field's value as its type's width, sign-extended for signed types.
   void bit_field(const detail::FieldView& field, const std::uint8_t* unit) {
     const detail::TypeView type = detail::type_at(schema_, field.type);
-    const Kind integer = type.kind == Kind::Enum ? detail::type_at(schema_, type.element).kind
-                                                 : type.kind;
+    const Kind integer =
+        type.kind == Kind::Enum ? detail::type_at(schema_, type.element).kind : type.kind;
     const unsigned bytes = (field.bit_offset + field.bit_width + 7u) / 8u;
     if (bytes > 8 || field.bit_width > 64) {
       result_ = Result::Unsupported;
