@@ -273,7 +273,7 @@ private:
       const TypeModel &Model = Program.Types[I];
       const bool IsStruct = T.kind == symcr::Kind::Struct;
       std::string Validator = "0";
-      if (IsStruct && Model.hasValidate(Program)) {
+      if (Model.hasValidate(Program)) {
         Validators.push_back("&symcr_gen::validate_" +
                              symbolOf(Model.Symbol, I));
         Validator = std::to_string(Validators.size());

@@ -27,14 +27,14 @@ class CompactSchema {
         entry.count = type.reference_member_count;
         entry.first_field = static_cast<std::uint16_t>(fields_.size());
         entry.field_count = static_cast<std::uint16_t>(type.field_count);
-        if (type.validate != nullptr) {
-          validators_.push_back(type.validate);
-          entry.validator = static_cast<std::uint8_t>(validators_.size());
-        }
         for (std::uint32_t f = 0; f < type.field_count; ++f) add(type.fields[f]);
         for (std::uint32_t m = 0; m < type.reference_member_count; ++m) {
           add(type.reference_members[m]);
         }
+      }
+      if (type.validate != nullptr) {
+        validators_.push_back(type.validate);
+        entry.validator = static_cast<std::uint8_t>(validators_.size());
       }
       types_.push_back(entry);
     }

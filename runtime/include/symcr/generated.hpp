@@ -302,7 +302,7 @@ struct DeviceTypeInfo {
                               // reference members follow its fields
   std::uint16_t field_count;  // Struct: its fields (bases first)
   std::uint8_t kind;          // a Kind
-  std::uint8_t validator;     // Struct: 1 + its symcr_validate's index in `validators`; 0: none
+  std::uint8_t validator;     // 1 + its symcr_validate's index in `validators`; 0: none
 };
 constexpr std::uint16_t kDeviceNoType = 0xFFFF;
 struct DeviceFieldInfo {
