@@ -278,8 +278,10 @@ private:
                              symbolOf(Model.Symbol, I));
         Validator = std::to_string(Validators.size());
       }
+      // Only a struct's fields: a union is raw bytes to the device.
       const std::uint32_t First = FieldCount;
-      for (std::uint32_t F = 0; F < T.field_count; ++F) {
+      const std::uint32_t Members = IsStruct ? T.field_count : 0;
+      for (std::uint32_t F = 0; F < Members; ++F) {
         const symcr::FieldInfo &Field = T.fields[F];
         Fields << "    {" << Field.offset << "u, " << Field.type << "u, "
                << Field.bit_offset << "u, " << Field.bit_width << "u},\n";
@@ -295,14 +297,15 @@ private:
         if (Field.bit_offset > 0xFF || Field.bit_width > 0xFF)
           Limit = "a bit-field beyond bit 255";
       }
-      for (std::uint32_t M = 0; M < T.reference_member_count; ++M)
+      const std::uint32_t References = IsStruct ? T.reference_member_count : 0;
+      for (std::uint32_t M = 0; M < References; ++M)
         Fields << "    {" << T.reference_members[M].offset << "u, "
                << T.reference_members[M].type << "u, 0u, 0u},\n";
-      FieldCount += T.field_count + T.reference_member_count;
-      const std::uint64_t Count = IsStruct ? T.reference_member_count : T.count;
+      FieldCount += Members + References;
+      const std::uint64_t Count = IsStruct ? References : T.count;
       if (Count > 0xFFFFFFFFu)
         Limit = "an array of more than 2^32 - 1 elements";
-      if (T.field_count > 0xFFFF || First > 0xFFFF)
+      if (Members > 0xFFFF || First > 0xFFFF)
         Limit = "more than 65,535 fields";
       if (Validators.size() > 0xFF)
         Limit = "more than 255 types with a symcr_validate";
@@ -310,7 +313,7 @@ private:
             << (T.element == symcr::kNoType
                     ? std::string("symcr::kDeviceNoType")
                     : std::to_string(T.element) + "u")
-            << ", " << (IsStruct ? First : 0) << "u, " << T.field_count << "u, "
+            << ", " << (IsStruct ? First : 0) << "u, " << Members << "u, "
             << static_cast<unsigned>(T.kind) << "u, " << Validator << "},  // "
             << I << "\n";
     }
