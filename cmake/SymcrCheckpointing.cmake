@@ -240,9 +240,9 @@ function(symcr_add_checkpointing target)
     VERBATIM)
   target_link_libraries(${target} PRIVATE ${runtime})
   if(profile STREQUAL "device")
-    # symcr_program_schema() builds its root table on first call (a root's address comes from
-    # its own source's wrapper); without a thread-safe guard, that is a flag test rather than
-    # libstdc++'s __cxa_guard_*, which would pull the exception unwinder into a firmware.
+    # symcr_program_device_schema() builds its root table on first call (a root's address comes
+    # from its own source's wrapper); without a thread-safe guard, that is a flag test rather
+    # than libstdc++'s __cxa_guard_*, which would pull the exception unwinder into a firmware.
     set_property(SOURCE "${schema}" TARGET_DIRECTORY ${target} APPEND PROPERTY COMPILE_OPTIONS
                  $<$<COMPILE_LANG_AND_ID:CXX,GNU,Clang,AppleClang>:-fno-threadsafe-statics>)
   endif()

@@ -11,6 +11,7 @@
 #include "ProgramPoints.h"
 #include "SchemaTables.h"
 
+#include <algorithm>
 #include <cinttypes>
 #include <cstdio>
 #include <sstream>
@@ -53,13 +54,17 @@ public:
     declareSymbols();
     OS << "namespace {\n";
     writeClocks();
-    for (std::uint32_t I = 0; I < Schema.type_count; ++I)
-      writeTypeParts(I);
-    writeTypes();
     std::vector<std::string> RootRenamed;
-    for (std::uint32_t I = 0; I < Schema.root_count; ++I)
-      RootRenamed.push_back(names("root_renamed_" + std::to_string(I),
-                                  Schema.roots[I].renamed_from));
+    if (Device) {
+      writeDeviceTables();
+    } else {
+      for (std::uint32_t I = 0; I < Schema.type_count; ++I)
+        writeTypeParts(I);
+      writeTypes();
+      for (std::uint32_t I = 0; I < Schema.root_count; ++I)
+        RootRenamed.push_back(names("root_renamed_" + std::to_string(I),
+                                    Schema.roots[I].renamed_from));
+    }
     writeSerialised();
     writePreviousPlans();
     OS << "}  // namespace\n\n";
@@ -254,6 +259,94 @@ private:
     OS << "};\n";
   }
 
+  /// The device profile's compact tables (generated.hpp's DeviceSchema): what
+  /// its runtime reads of each type and field, and the few ranges, times and
+  /// validators beside. A program beyond their 16-bit indices fails to compile,
+  /// saying which.
+  void writeDeviceTables() {
+    std::vector<std::string> Validators;
+    std::ostringstream Types, Fields, Ranges, Times;
+    std::uint32_t FieldCount = 0;
+    const char *Limit = nullptr;
+    for (std::uint32_t I = 0; I < Schema.type_count; ++I) {
+      const symcr::TypeInfo &T = Schema.types[I];
+      const TypeModel &Model = Program.Types[I];
+      const bool IsStruct = T.kind == symcr::Kind::Struct;
+      std::string Validator = "0";
+      if (Model.hasValidate(Program)) {
+        Validators.push_back("&symcr_gen::validate_" +
+                             symbolOf(Model.Symbol, I));
+        Validator = std::to_string(Validators.size());
+      }
+      // Only a struct's fields: a union is raw bytes to the device.
+      const std::uint32_t First = FieldCount;
+      const std::uint32_t Members = IsStruct ? T.field_count : 0;
+      for (std::uint32_t F = 0; F < Members; ++F) {
+        const symcr::FieldInfo &Field = T.fields[F];
+        Fields << "    {" << Field.offset << "u, " << Field.type << "u, "
+               << Field.bit_offset << "u, " << Field.bit_width << "u},\n";
+        if ((Field.flags & symcr::kFieldHasRange) && Field.range)
+          Ranges << "    {" << FieldCount + F << "u, {"
+                 << number(Field.range->min) << ", " << number(Field.range->max)
+                 << "}},\n";
+        if ((Field.flags & symcr::kFieldClockTime) && Field.time &&
+            Field.time->clock)
+          Times << "    {" << FieldCount + F << "u, {&clocks["
+                << Field.time->clock->index << "], "
+                << integer(Field.time->never) << "}},\n";
+        if (Field.bit_offset > 0xFF || Field.bit_width > 0xFF)
+          Limit = "a bit-field beyond bit 255";
+      }
+      const std::uint32_t References = IsStruct ? T.reference_member_count : 0;
+      for (std::uint32_t M = 0; M < References; ++M)
+        Fields << "    {" << T.reference_members[M].offset << "u, "
+               << T.reference_members[M].type << "u, 0u, 0u},\n";
+      FieldCount += Members + References;
+      const std::uint64_t Count = IsStruct ? References : T.count;
+      if (Count > 0xFFFFFFFFu)
+        Limit = "an array of more than 2^32 - 1 elements";
+      if (Members > 0xFFFF || First > 0xFFFF)
+        Limit = "more than 65,535 fields";
+      if (Validators.size() > 0xFF)
+        Limit = "more than 255 types with a symcr_validate";
+      Types << "    {" << T.size << "u, " << Count << "u, "
+            << (T.element == symcr::kNoType
+                    ? std::string("symcr::kDeviceNoType")
+                    : std::to_string(T.element) + "u")
+            << ", " << (IsStruct ? First : 0) << "u, " << Members << "u, "
+            << static_cast<unsigned>(T.kind) << "u, " << Validator << "},  // "
+            << I << "\n";
+    }
+    if (Schema.type_count >= symcr::kDeviceNoType)
+      Limit = "more than 65,534 types";
+    if (Limit)
+      OS << "#error \"symcr-gen: the device profile's tables cannot hold "
+         << Limit << "; build with the host profile\"\n";
+    if (Schema.type_count != 0)
+      OS << "const symcr::DeviceTypeInfo device_types[] = {\n"
+         << Types.str() << "};\n";
+    if (FieldCount != 0)
+      OS << "const symcr::DeviceFieldInfo device_fields[] = {\n"
+         << Fields.str() << "};\n";
+    if (!Validators.empty()) {
+      OS << "bool (*const device_validators[])(const void*) = {\n";
+      for (const std::string &Validator : Validators)
+        OS << "    " << Validator << ",\n";
+      OS << "};\n";
+    }
+    const std::string RangeRows = Ranges.str(), TimeRows = Times.str();
+    DeviceRanges = std::count(RangeRows.begin(), RangeRows.end(), '\n');
+    DeviceTimes = std::count(TimeRows.begin(), TimeRows.end(), '\n');
+    if (DeviceRanges)
+      OS << "const symcr::DeviceFieldRange device_ranges[] = {\n"
+         << RangeRows << "};\n";
+    if (DeviceTimes)
+      OS << "const symcr::DeviceFieldTime device_times[] = {\n"
+         << TimeRows << "};\n";
+    DeviceFields = FieldCount;
+    DeviceValidators = Validators.size();
+  }
+
   void writeBytes(const std::string &Name, const std::uint8_t *Bytes,
                   std::size_t Size) {
     OS << "const std::uint8_t " << Name << "[] = {";
@@ -321,7 +414,13 @@ private:
   }
 
   void writeProgramSchema(const std::vector<std::string> &RootRenamed) {
-    OS << "extern \"C\" const symcr::Schema* symcr_program_schema(void) {\n";
+    // The device profile's program has only its compact tables: a firmware
+    // links no TypeInfo table.
+    if (Device)
+      OS << "extern \"C\" const symcr::DeviceSchema* "
+            "symcr_program_device_schema(void) {\n";
+    else
+      OS << "extern \"C\" const symcr::Schema* symcr_program_schema(void) {\n";
     if (Schema.root_count != 0) {
       // Root addresses come from other TUs: read at the first call, not
       // during static initialisation.
@@ -330,17 +429,29 @@ private:
         const symcr::RootInfo &R = Schema.roots[I];
         OS << "      {" << nameText(R.name) << ", " << R.type
            << "u, symcr_gen_root_" << symbolOf(Program.Roots[I].Symbol, I)
-           << ", " << R.flags << "u, " << RootRenamed[I] << "},\n";
+           << ", " << R.flags << "u, "
+           << (Device ? std::string("nullptr") : RootRenamed[I]) << "},\n";
       }
       OS << "  };\n";
     }
-    OS << "  static const symcr::Schema schema{"
-       << (Schema.type_count ? "types" : "nullptr") << ", " << Schema.type_count
-       << "u, " << (Schema.root_count ? "roots" : "nullptr") << ", "
-       << Schema.root_count << "u, "
-       << (Schema.program ? quoted(Schema.program) : std::string("nullptr"))
-       << "};\n  return &schema;\n}\n\n"
-       << "extern \"C\" const symcr::SerialisedSchema* "
+    const std::string Head =
+        std::string(Schema.type_count && !Device ? "types" : "nullptr") + ", " +
+        std::to_string(Schema.type_count) + "u, " +
+        (Schema.root_count ? "roots" : "nullptr") + ", " +
+        std::to_string(Schema.root_count) + "u, " +
+        (Schema.program ? quoted(Schema.program) : std::string("nullptr"));
+    if (Device)
+      OS << "  static const symcr::DeviceSchema schema{{" << Head << "}, "
+         << (Schema.type_count ? "device_types" : "nullptr") << ", "
+         << (DeviceFields ? "device_fields" : "nullptr") << ", "
+         << (DeviceValidators ? "device_validators" : "nullptr") << ", "
+         << (DeviceRanges ? "device_ranges" : "nullptr") << ", " << DeviceRanges
+         << "u, " << (DeviceTimes ? "device_times" : "nullptr") << ", "
+         << DeviceTimes << "u};\n  return &schema;\n}\n\n";
+    else
+      OS << "  static const symcr::Schema schema{" << Head
+         << "};\n  return &schema;\n}\n\n";
+    OS << "extern \"C\" const symcr::SerialisedSchema* "
           "symcr_program_serialised_schema(void) {\n  return &serialised;\n}\n"
        << "\nextern \"C\" std::uint64_t symcr_program_schema_hash(void) {\n"
           "  return "
@@ -354,6 +465,9 @@ private:
   std::ostringstream &OS;
   std::vector<std::string> TypeRenamed;
   std::vector<std::string> TypeLeft;
+  // The device tables' counts (writeDeviceTables).
+  std::size_t DeviceFields = 0, DeviceValidators = 0, DeviceRanges = 0,
+              DeviceTimes = 0;
 };
 
 } // namespace

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "compact_schema.hpp"
 #include "device_plan_encode.hpp"
 #include "schema_blob.hpp"
 #include "schema_tables.hpp"
@@ -313,6 +314,55 @@ TEST(DevicePlan, RestoresAPreviousBuildsCheckpointValueByValue) {
   ASSERT_EQ(devices.restore_v1(landing), Result::Ok);
   EXPECT_EQ(v1.mode, ModeV1::Land);
   EXPECT_EQ(v1.target, &v1.route[0]);
+}
+
+// V1's tables in the compact form symcr-gen emits for a firmware (its clock's time, ranges and
+// enum included): V0's checkpoint through the plan, and V1's own, restore the same values and
+// save the same bytes as through V1's TypeInfo tables.
+TEST(DevicePlan, CompactTablesRestoreAsTheTypeInfoTables) {
+  const Devices devices;
+  const device_tests::CompactSchema compact(kSchemaV1);
+  const symcr::device::Build compact_build(&compact.schema(), hash_of(kSchemaV1), &devices.planned,
+                                           1);
+  std::vector<std::uint8_t> scratch(symcr::device::scratch_size(compact.schema()));
+  ASSERT_EQ(scratch.size(), symcr::device::scratch_size(kSchemaV1));
+  for (int seed = 0; seed < 6; ++seed) {
+    clock_now = 500;
+    fill_v0(seed);
+    const std::vector<std::uint8_t> record = devices.save_v0();
+    clock_now = 20;
+    initial_v1();
+    ASSERT_EQ(devices.restore_v1(record), Result::Ok) << seed;
+    const std::vector<std::uint8_t> by_typeinfo = v1_bytes();
+    initial_v1();
+    ASSERT_EQ(symcr::device::restore(compact_build, record.data(), record.size(), scratch.data(),
+                                     scratch.size()),
+              Result::Ok)
+        << seed;
+    EXPECT_EQ(v1_bytes(), by_typeinfo) << seed;
+    std::vector<std::uint8_t> own(symcr::device::record_size(compact.schema()));
+    std::vector<std::uint8_t> own_typeinfo(symcr::device::record_size(kSchemaV1));
+    std::size_t size = 0, size_typeinfo = 0;
+    ASSERT_EQ(symcr::device::save(compact_build, 7, own.data(), own.size(), &size), Result::Ok);
+    ASSERT_EQ(symcr::device::save(devices.v1_build, 7, own_typeinfo.data(), own_typeinfo.size(),
+                                  &size_typeinfo),
+              Result::Ok);
+    own.resize(size);
+    own_typeinfo.resize(size_typeinfo);
+    EXPECT_EQ(own, own_typeinfo) << seed;
+    clock_now = 50 + seed;  // another reset: the time moves on the same-build path too
+    initial_v1();
+    ASSERT_EQ(devices.restore_v1(own_typeinfo), Result::Ok) << seed;
+    const std::vector<std::uint8_t> own_by_typeinfo = v1_bytes();
+    EXPECT_EQ(v1.last_fix_ms, 1000u + static_cast<std::uint32_t>(seed) + 20u - 500u + 30u +
+                                  static_cast<std::uint32_t>(seed));
+    initial_v1();
+    ASSERT_EQ(symcr::device::restore(compact_build, own.data(), own.size(), scratch.data(),
+                                     scratch.size()),
+              Result::Ok)
+        << seed;
+    EXPECT_EQ(v1_bytes(), own_by_typeinfo) << seed;
+  }
 }
 
 // After restoring V0's checkpoint, V1 checkpoints in its own format: the same-build path.

@@ -36,8 +36,16 @@ const char* result_text(Result result) {
 
 Build program_build() {
   Build build;
-  if (symcr_program_schema == nullptr || symcr_program_schema_hash == nullptr) return build;
-  build.schema = symcr_program_schema();
+  if (symcr_program_schema_hash == nullptr) return build;
+  // The compact tables when the generated code is the device profile's: the program's
+  // TypeInfo tables are then never linked. A host build's generated code has only those.
+  if (symcr_program_device_schema != nullptr) {
+    build.schema = &symcr_program_device_schema()->schema;
+  } else if (symcr_program_schema != nullptr) {
+    build.schema = symcr_program_schema();
+  } else {
+    return build;
+  }
   build.schema_hash = symcr_program_schema_hash();
   // Set here, not through the constructor that links the executor: the generated code links
   // it when there are plans.
@@ -65,7 +73,7 @@ std::size_t record_size(const Schema& schema) {
 std::size_t scratch_size(const Schema& schema) {
   std::size_t total = 0;
   for (std::uint32_t r = 0; r < schema.root_count; ++r) {
-    total += detail::stage_size(schema.types[schema.roots[r].type].size);
+    total += detail::stage_size(detail::root_size(schema, r));
   }
   return total + detail::kStageAlign;  // room to align the first copy
 }

@@ -4,6 +4,64 @@ namespace symcr {
 namespace device {
 namespace detail {
 
+TypeView type_at(const Schema& schema, std::uint32_t t) {
+  TypeView view;
+  if (const DeviceSchema* device = compact(schema)) {
+    const DeviceTypeInfo& type = device->types[t];
+    view.kind = static_cast<Kind>(type.kind);
+    view.size = type.size;
+    view.element = type.element == kDeviceNoType ? kNoType : type.element;
+    const bool is_struct = view.kind == Kind::Struct;
+    view.count = is_struct ? 0 : type.count;
+    view.field_count = type.field_count;
+    view.member_count = type.field_count + (is_struct ? type.count : 0);
+    view.validate = type.validator != 0 ? device->validators[type.validator - 1] : nullptr;
+    return view;
+  }
+  const TypeInfo& type = schema.types[t];
+  view.kind = type.kind;
+  view.size = type.size;
+  view.element = type.element;
+  view.count = type.count;
+  view.field_count = type.field_count;
+  view.member_count = type.field_count + type.reference_member_count;
+  view.validate = type.validate;
+  return view;
+}
+
+FieldView field_at(const Schema& schema, std::uint32_t t, std::uint32_t f) {
+  FieldView view;
+  if (const DeviceSchema* device = compact(schema)) {
+    const std::uint32_t index = device->types[t].first_field + f;
+    const DeviceFieldInfo& field = device->fields[index];
+    view.type = field.type;
+    view.offset = field.offset;
+    view.bit_offset = field.bit_offset;
+    view.bit_width = field.bit_width;
+    view.range = nullptr;
+    view.time = nullptr;
+    for (std::uint32_t i = 0; i < device->range_count; ++i) {
+      if (device->ranges[i].field == index) view.range = &device->ranges[i].range;
+    }
+    for (std::uint32_t i = 0; i < device->time_count; ++i) {
+      if (device->times[i].field == index && device->times[i].time.clock != nullptr) {
+        view.time = &device->times[i].time;
+      }
+    }
+    return view;
+  }
+  const TypeInfo& type = schema.types[t];
+  const FieldInfo& field =
+      f < type.field_count ? type.fields[f] : type.reference_members[f - type.field_count];
+  view.type = field.type;
+  view.offset = field.offset;
+  view.bit_offset = field.bit_offset;
+  view.bit_width = field.bit_width;
+  view.range = (field.flags & kFieldHasRange) ? field.range : nullptr;
+  view.time = format::field_clock(field) != nullptr ? field.time : nullptr;
+  return view;
+}
+
 namespace {
 
 // Types nest by value only as deep as the source does; the bound guards hand-written tables.
@@ -11,7 +69,7 @@ constexpr int kMaxNesting = 64;
 
 std::uint32_t first_unheld_at(const Schema& schema, std::uint32_t t, int depth) {
   if (t >= schema.type_count || depth > kMaxNesting) return t;
-  const TypeInfo& type = schema.types[t];
+  const TypeView type = type_at(schema, t);
   switch (type.kind) {
     case Kind::Bool:
     case Kind::Union:
@@ -24,11 +82,13 @@ std::uint32_t first_unheld_at(const Schema& schema, std::uint32_t t, int depth) 
       return type.size == 4 || type.size == 8 ? kNoType : t;
     case Kind::Pointer:  // the pointee is not saved through the pointer: a path names it
       return type.element < schema.type_count ? kNoType : t;
-    case Kind::Array:
+    case Kind::Array:  // more elements than the target's std::size_t counts: not in memory
+      if (compact(schema) == nullptr && schema.types[t].count != type.count) return t;
       return first_unheld_at(schema, type.element, depth + 1);
     case Kind::Struct:
       for (std::uint32_t f = 0; f < type.field_count; ++f) {
-        const std::uint32_t unheld = first_unheld_at(schema, type.fields[f].type, depth + 1);
+        const std::uint32_t unheld =
+            first_unheld_at(schema, field_at(schema, t, f).type, depth + 1);
         if (unheld != kNoType) return unheld;
       }
       return kNoType;
@@ -47,13 +107,25 @@ std::uint32_t first_unheld_type(const Schema& schema) {
   return kNoType;
 }
 
+// format::wire_size_of's rule over the view: a struct's fields, an array's elements, else the
+// value's own bytes.
 std::size_t wire_size(const Schema& schema, std::uint32_t t) {
-  return format::wire_size_of<std::size_t>(
-      schema.types[t], [&schema](std::uint32_t member) { return wire_size(schema, member); });
+  const TypeView type = type_at(schema, t);
+  if (type.kind == Kind::Struct) {
+    std::size_t total = 0;
+    for (std::uint32_t f = 0; f < type.field_count; ++f) {
+      total += wire_size(schema, field_at(schema, t, f).type);
+    }
+    return total;
+  }
+  if (type.kind == Kind::Array) {
+    return wire_size(schema, type.element) * static_cast<std::size_t>(type.count);
+  }
+  return format::own_wire_size(type);
 }
 
 std::size_t pointer_count(const Schema& schema, std::uint32_t t) {
-  const TypeInfo& type = schema.types[t];
+  const TypeView type = type_at(schema, t);
   switch (type.kind) {
     case Kind::Pointer:
       return 1;
@@ -62,7 +134,7 @@ std::size_t pointer_count(const Schema& schema, std::uint32_t t) {
     case Kind::Struct: {
       std::size_t total = 0;
       for (std::uint32_t f = 0; f < type.field_count; ++f) {
-        total += pointer_count(schema, type.fields[f].type);
+        total += pointer_count(schema, field_at(schema, t, f).type);
       }
       return total;
     }
@@ -71,25 +143,31 @@ std::size_t pointer_count(const Schema& schema, std::uint32_t t) {
   }
 }
 
-std::uint32_t clock_count(const Schema& schema) {
-  std::uint32_t count = 0;
-  format::for_each_field_clock(schema, [&count](const ClockInfo& clock) {
-    if (clock.index >= count) count = clock.index + 1;
-  });
-  return count;
-}
-
-// The first field's clock of that index: a loop of its own, to stop there.
-const ClockInfo* clock_at(const Schema& schema, std::uint32_t index) {
+// The clock of the first time field (in the structs' order) whose clock has index `index`, or,
+// with kNoType, one more than the greatest index of any: a walk of its own, to stop there.
+const ClockInfo* clocks_walk(const Schema& schema, std::uint32_t index, std::uint32_t* count) {
   for (std::uint32_t t = 0; t < schema.type_count; ++t) {
-    const TypeInfo& type = schema.types[t];
+    const TypeView type = type_at(schema, t);
     if (type.kind != Kind::Struct) continue;
     for (std::uint32_t f = 0; f < type.field_count; ++f) {
-      const ClockInfo* clock = format::field_clock(type.fields[f]);
-      if (clock != nullptr && clock->index == index) return clock;
+      const FieldTime* time = field_at(schema, t, f).time;
+      if (time == nullptr) continue;
+      if (time->clock->index == index) return time->clock;
+      if (time->clock->index >= *count) *count = time->clock->index + 1;
     }
   }
   return nullptr;
+}
+
+std::uint32_t clock_count(const Schema& schema) {
+  std::uint32_t count = 0;
+  clocks_walk(schema, kNoType, &count);
+  return count;
+}
+
+const ClockInfo* clock_at(const Schema& schema, std::uint32_t index) {
+  std::uint32_t ignored = 0;
+  return clocks_walk(schema, index, &ignored);
 }
 
 std::size_t values_size(const Schema& schema) {
@@ -107,21 +185,17 @@ bool follow_path(const Schema& schema, std::uint32_t root, const std::uint32_t* 
   std::size_t at = 0;
   for (std::size_t i = 0; i < step_count; ++i) {
     if (t >= schema.type_count) return false;
-    const TypeInfo& current = schema.types[t];
+    const TypeView current = type_at(schema, t);
     if (current.kind == Kind::Struct) {
       // Fields, then reference members (docs/format.md §2): same build, same offsets.
-      const std::uint32_t member = steps[i] - current.field_count;
-      if (steps[i] >= current.field_count && member >= current.reference_member_count) {
-        return false;
-      }
-      const FieldInfo& field = steps[i] < current.field_count ? current.fields[steps[i]]
-                                                              : current.reference_members[member];
+      if (steps[i] >= current.member_count) return false;
+      const FieldView field = field_at(schema, t, steps[i]);
       if (field.bit_width != 0) return false;  // no address to point at
       at += field.offset;
       t = field.type;
     } else if (current.kind == Kind::Array) {
       if (steps[i] >= current.count || current.element >= schema.type_count) return false;
-      at += static_cast<std::size_t>(steps[i]) * schema.types[current.element].size;
+      at += static_cast<std::size_t>(steps[i]) * type_at(schema, current.element).size;
       t = current.element;
     } else {
       return false;

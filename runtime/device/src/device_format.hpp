@@ -21,6 +21,40 @@ namespace symcr {
 namespace device {
 namespace detail {
 
+// What the device reads of a type and of a field, from a schema's TypeInfo tables or from a
+// DeviceSchema's compact ones (generated.hpp) alike: every read of the tables goes through
+// type_at() and field_at().
+struct TypeView {
+  Kind kind;
+  std::uint32_t size;
+  std::uint32_t element;       // Enum, Array, Pointer; else kNoType
+  std::size_t count;           // Array (first_unheld_type() refuses a count beyond std::size_t)
+  std::uint32_t field_count;   // Struct: its fields...
+  std::uint32_t member_count;  // ...and after them its reference members (a pointer's targets)
+  bool (*validate)(const void* object);
+};
+struct FieldView {
+  std::uint32_t type;
+  std::uint32_t offset;
+  std::uint32_t bit_offset;
+  std::uint32_t bit_width;  // 0: not a bit-field
+  const FieldRange* range;  // its SYMCR_RANGE, or null
+  const FieldTime* time;    // the clock of its times, or null
+};
+// `t` < schema.type_count; `f` < type_at(schema, t).member_count.
+TypeView type_at(const Schema& schema, std::uint32_t t);
+FieldView field_at(const Schema& schema, std::uint32_t t, std::uint32_t f);
+// The compact tables `schema` heads, or null for TypeInfo tables.
+inline const DeviceSchema* compact(const Schema& schema) {
+  return schema.types == nullptr && schema.type_count != 0
+             ? reinterpret_cast<const DeviceSchema*>(&schema)
+             : nullptr;
+}
+static_assert(offsetof(DeviceSchema, schema) == 0, "a DeviceSchema begins with its Schema");
+inline std::uint32_t root_size(const Schema& schema, std::uint32_t root) {
+  return type_at(schema, schema.roots[root].type).size;
+}
+
 // The first type reachable from the roots that the device profile cannot hold, or kNoType.
 std::uint32_t first_unheld_type(const Schema& schema);
 // Bytes `type` takes in the payload (fixed: the profile has no variable-length kind), and the

@@ -120,7 +120,8 @@ class PlanRunner {
           if (!has_entries(b, 1) || entry(b) >= reader_.type_count || stage_root_ == nullptr) {
             return Result::Corrupt;
           }
-          const TypeInfo& type = reader_.types[entry(b)];
+          const detail::TypeView type =
+              detail::type_at(reader_, static_cast<std::uint32_t>(entry(b)));
           if (dst > root_size_ || type.size > root_size_ - dst) return Result::Corrupt;
           if (type.validate != nullptr && !type.validate(stage_root_ + dst)) {
             return Result::Rejected;
@@ -161,10 +162,10 @@ class PlanRunner {
     if (index >= reader_.root_count) return Result::Corrupt;
     std::uint8_t* stage = stage_;
     for (std::uint32_t r = 0; r < index; ++r) {
-      stage += detail::stage_size(reader_.types[reader_.roots[r].type].size);
+      stage += detail::stage_size(detail::root_size(reader_, r));
     }
     stage_root_ = stage;
-    root_size_ = reader_.types[reader_.roots[index].type].size;
+    root_size_ = detail::root_size(reader_, index);
     *dst_base = 0;
     return Result::Ok;
   }
@@ -445,7 +446,7 @@ Result detail::restore_planned_payload(const Schema& reader, const PlannedSchema
   // What the record does not hold (a member added since) keeps the running build's value.
   std::uint8_t* stage = first;
   for (std::uint32_t r = 0; r < reader.root_count; ++r) {
-    const std::size_t root_size = reader.types[reader.roots[r].type].size;
+    const std::size_t root_size = detail::root_size(reader, r);
     std::memcpy(stage, reader.roots[r].address, root_size);
     stage += detail::stage_size(root_size);
   }
@@ -453,7 +454,7 @@ Result detail::restore_planned_payload(const Schema& reader, const PlannedSchema
   if (result != Result::Ok) return result;
   stage = first;
   for (std::uint32_t r = 0; r < reader.root_count; ++r) {
-    const std::size_t root_size = reader.types[reader.roots[r].type].size;
+    const std::size_t root_size = detail::root_size(reader, r);
     std::memcpy(reader.roots[r].address, stage, root_size);
     stage += detail::stage_size(root_size);
   }

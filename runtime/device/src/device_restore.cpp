@@ -35,9 +35,9 @@ class Restorer {
     std::uint8_t* stage = stage_;
     for (std::uint32_t r = 0; r < schema_.root_count; ++r) {
       const RootInfo& root = schema_.roots[r];
-      const std::size_t size = schema_.types[root.type].size;
+      const std::size_t size = detail::root_size(schema_, r);
       std::memcpy(stage, root.address, size);  // what the record does not hold stays as is
-      result = value(root.type, stage, static_cast<std::uint8_t*>(root.address));
+      result = value(root.type, stage, nullptr);
       if (result != Result::Ok) return result;
       stage += detail::stage_size(size);
     }
@@ -65,17 +65,6 @@ class Restorer {
       const std::uint64_t saved =
           static_cast<std::uint64_t>(format::clock_reading(payload_ + references_end_, c));
       deltas_[c] = clock && clock->read ? static_cast<std::uint64_t>(clock->read()) - saved : 0;
-    }
-  }
-
-  // The staged time(s) of a time field: an integer, or an array of them.
-  void rebase(std::uint32_t t, std::uint8_t* stage, const FieldTime& time) const {
-    const TypeInfo& type = schema_.types[t];
-    if (type.kind == Kind::Array) {
-      const std::size_t stride = schema_.types[type.element].size;
-      for (std::uint64_t i = 0; i < type.count; ++i) rebase(type.element, stage + i * stride, time);
-    } else if (type.kind == Kind::Int || type.kind == Kind::UInt) {
-      format::rebase_time(stage, type.size, time.never, deltas_[time.clock->index]);
     }
   }
 
@@ -123,9 +112,10 @@ class Restorer {
     return bytes;
   }
 
-  // Decodes a value of type `t` into `stage` (the staged copy); `live` is where it will be.
-  Result value(std::uint32_t t, std::uint8_t* stage, std::uint8_t* live) {
-    const TypeInfo& type = schema_.types[t];
+  // Decodes a value of type `t` into `stage` (the staged copy). `time`: the clock of the times
+  // it holds (a time field: an integer, or an array of them), each moved by its clock's advance.
+  Result value(std::uint32_t t, std::uint8_t* stage, const FieldTime* time) {
+    const detail::TypeView type = detail::type_at(schema_, t);
     switch (type.kind) {
       case Kind::Bool: {
         const std::uint8_t b = *take(1);
@@ -136,26 +126,22 @@ class Restorer {
       case Kind::Pointer:
         return pointer(type, stage);
       case Kind::Array: {
-        const std::size_t stride = schema_.types[type.element].size;
-        for (std::uint64_t i = 0; i < type.count; ++i) {
-          const Result result = value(type.element, stage + i * stride, live + i * stride);
+        const std::size_t stride = detail::type_at(schema_, type.element).size;
+        for (std::size_t i = 0; i < type.count; ++i) {
+          const Result result = value(type.element, stage + i * stride, time);
           if (result != Result::Ok) return result;
         }
         return Result::Ok;
       }
       case Kind::Struct: {
         for (std::uint32_t f = 0; f < type.field_count; ++f) {
-          const FieldInfo& field = type.fields[f];
+          const detail::FieldView field = detail::field_at(schema_, t, f);
           const std::uint8_t* wire = payload_ + at_;  // a scalar's value, bit-fields' too
           const Result result = field.bit_width != 0
                                     ? bit_field(field, stage + field.offset)
-                                    : value(field.type, stage + field.offset, live + field.offset);
+                                    : value(field.type, stage + field.offset, field.time);
           if (result != Result::Ok) return result;
-          if ((field.flags & kFieldClockTime) && field.time && field.time->clock &&
-              field.bit_width == 0) {
-            rebase(field.type, stage + field.offset, *field.time);
-          }
-          if ((field.flags & kFieldHasRange) && field.range != nullptr && !in_range(field, wire)) {
+          if (field.range != nullptr && !in_range(field, wire)) {
             return Result::Rejected;
           }
         }
@@ -164,11 +150,14 @@ class Restorer {
       }
       default:  // Int, UInt, Enum, Float, Union: their bytes
         std::memcpy(stage, take(type.size), type.size);
+        if (time != nullptr && (type.kind == Kind::Int || type.kind == Kind::UInt)) {
+          format::rebase_time(stage, type.size, time->never, deltas_[time->clock->index]);
+        }
         return Result::Ok;
     }
   }
 
-  Result pointer(const TypeInfo& type, std::uint8_t* stage) {
+  Result pointer(const detail::TypeView& type, std::uint8_t* stage) {
     const std::uint32_t code = load32(take(format::kPointerCodeSize));
     std::uintptr_t target = 0;
     if (code == format::kOutsideCode) return Result::Ok;  // the running build's value stays
@@ -180,22 +169,23 @@ class Restorer {
     return Result::Ok;
   }
 
-  Result bit_field(const FieldInfo& field, std::uint8_t* unit) {
-    const TypeInfo& type = schema_.types[field.type];
-    const TypeInfo& integer = type.kind == Kind::Enum ? schema_.types[type.element] : type;
+  Result bit_field(const detail::FieldView& field, std::uint8_t* unit) {
+    const detail::TypeView type = detail::type_at(schema_, field.type);
+    const Kind integer =
+        type.kind == Kind::Enum ? detail::type_at(schema_, type.element).kind : type.kind;
     const unsigned bytes = (field.bit_offset + field.bit_width + 7u) / 8u;
     const std::size_t width = type.size > 8 ? 8 : type.size;
     if (bytes > 8 || field.bit_width > 64) return Result::Unsupported;
     std::uint64_t v = 0;
     std::memcpy(&v, take(width), width);
-    if (integer.kind == Kind::Int && width < 8 && ((v >> (8 * width - 1)) & 1u)) {
+    if (integer == Kind::Int && width < 8 && ((v >> (8 * width - 1)) & 1u)) {
       v |= ~std::uint64_t{0} << (8 * width);  // sign-extend the wire value
     }
     if (type.kind == Kind::Bool && v > 1) return Result::Corrupt;
     const std::uint64_t mask =
         field.bit_width == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << field.bit_width) - 1;
     // The value must survive the field's width: as written, it did.
-    const bool is_signed = integer.kind == Kind::Int;
+    const bool is_signed = integer == Kind::Int;
     const std::uint64_t high = v & ~mask;
     const bool fits = !is_signed ? high == 0
                                  : (high == 0 && !((v >> (field.bit_width - 1)) & 1u)) ||
@@ -209,9 +199,10 @@ class Restorer {
   }
 
   // `p`: the value's wire bytes (a bit-field's value sign-extended to its type's width).
-  bool in_range(const FieldInfo& field, const std::uint8_t* p) const {
-    const TypeInfo& type = schema_.types[field.type];
-    const TypeInfo& number = type.kind == Kind::Enum ? schema_.types[type.element] : type;
+  bool in_range(const detail::FieldView& field, const std::uint8_t* p) const {
+    const detail::TypeView type = detail::type_at(schema_, field.type);
+    const detail::TypeView number =
+        type.kind == Kind::Enum ? detail::type_at(schema_, type.element) : type;
     double v = 0;
     if (number.kind == Kind::Float) {
       if (number.size == 4) {
@@ -306,7 +297,7 @@ Result detail::restore_held_payload(const Schema& schema, const std::uint8_t* pa
   const Result result = Restorer(schema, payload, size, stage).run();
   if (result != Result::Ok) return result;
   for (std::uint32_t r = 0; r < schema.root_count; ++r) {
-    const std::size_t root_size = schema.types[schema.roots[r].type].size;
+    const std::size_t root_size = detail::root_size(schema, r);
     std::memcpy(schema.roots[r].address, stage, root_size);
     stage += detail::stage_size(root_size);
   }

@@ -71,7 +71,7 @@ class Saver {
   }
 
   void value(std::uint32_t t, const std::uint8_t* p) {
-    const TypeInfo& type = schema_.types[t];
+    const detail::TypeView type = detail::type_at(schema_, t);
     switch (type.kind) {
       case Kind::Bool: {
         const std::uint8_t b = *p != 0;
@@ -80,15 +80,15 @@ class Saver {
       case Kind::Pointer:
         return pointer(type, p);
       case Kind::Array: {
-        const std::size_t stride = schema_.types[type.element].size;
-        for (std::uint64_t i = 0; i < type.count && result_ == Result::Ok; ++i) {
+        const std::size_t stride = detail::type_at(schema_, type.element).size;
+        for (std::size_t i = 0; i < type.count && result_ == Result::Ok; ++i) {
           value(type.element, p + i * stride);
         }
         return;
       }
       case Kind::Struct:
         for (std::uint32_t f = 0; f < type.field_count && result_ == Result::Ok; ++f) {
-          const FieldInfo& field = type.fields[f];
+          const detail::FieldView field = detail::field_at(schema_, t, f);
           if (field.bit_width != 0) {
             bit_field(field, p + field.offset);
           } else {
@@ -102,9 +102,10 @@ class Saver {
   }
 
   // The field's value as its type's width, sign-extended for signed types.
-  void bit_field(const FieldInfo& field, const std::uint8_t* unit) {
-    const TypeInfo& type = schema_.types[field.type];
-    const TypeInfo& integer = type.kind == Kind::Enum ? schema_.types[type.element] : type;
+  void bit_field(const detail::FieldView& field, const std::uint8_t* unit) {
+    const detail::TypeView type = detail::type_at(schema_, field.type);
+    const Kind integer =
+        type.kind == Kind::Enum ? detail::type_at(schema_, type.element).kind : type.kind;
     const unsigned bytes = (field.bit_offset + field.bit_width + 7u) / 8u;
     if (bytes > 8 || field.bit_width > 64) {
       result_ = Result::Unsupported;
@@ -115,7 +116,7 @@ class Saver {
     const std::uint64_t mask =
         field.bit_width == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << field.bit_width) - 1;
     std::uint64_t v = (raw >> field.bit_offset) & mask;
-    if (integer.kind == Kind::Int && field.bit_width < 64 && ((v >> (field.bit_width - 1)) & 1u)) {
+    if (integer == Kind::Int && field.bit_width < 64 && ((v >> (field.bit_width - 1)) & 1u)) {
       v |= ~mask;
     }
     if (type.kind == Kind::Bool) v = v != 0;
@@ -124,7 +125,7 @@ class Saver {
     put(out, type.size > 8 ? 8 : type.size);
   }
 
-  void pointer(const TypeInfo& type, const std::uint8_t* p) {
+  void pointer(const detail::TypeView& type, const std::uint8_t* p) {
     std::uintptr_t target;
     std::memcpy(&target, p, sizeof target);
     if (target == 0) return put32(format::kNullCode);
@@ -146,7 +147,7 @@ class Saver {
   bool find_root(std::uintptr_t target, std::uint32_t* root) const {
     for (std::uint32_t r = 0; r < schema_.root_count; ++r) {
       const std::uintptr_t start = reinterpret_cast<std::uintptr_t>(schema_.roots[r].address);
-      if (target >= start && target - start < schema_.types[schema_.roots[r].type].size) {
+      if (target >= start && target - start < detail::root_size(schema_, r)) {
         *root = r;
         return true;
       }
@@ -166,23 +167,22 @@ class Saver {
     std::uint32_t t = schema_.roots[root].type;
     std::uintptr_t base = reinterpret_cast<std::uintptr_t>(schema_.roots[root].address);
     while (!(t == target.type && base == target.address)) {
-      const TypeInfo& type = schema_.types[t];
+      const detail::TypeView type = detail::type_at(schema_, t);
       std::uint32_t step = kNoType;
       if (type.kind == Kind::Struct) {
-        const std::uint32_t members = type.field_count + type.reference_member_count;
-        for (std::uint32_t f = 0; f < members && step == kNoType; ++f) {
-          const FieldInfo& field =
-              f < type.field_count ? type.fields[f] : type.reference_members[f - type.field_count];
+        const std::uint32_t struct_type = t;
+        for (std::uint32_t f = 0; f < type.member_count && step == kNoType; ++f) {
+          const detail::FieldView field = detail::field_at(schema_, struct_type, f);
           const std::uintptr_t start = base + field.offset;
           if (field.bit_width == 0 && target.address >= start &&
-              target.address - start < schema_.types[field.type].size) {
+              target.address - start < detail::type_at(schema_, field.type).size) {
             step = f;
             base = start;
             t = field.type;
           }
         }
       } else if (type.kind == Kind::Array) {
-        const std::size_t stride = schema_.types[type.element].size;
+        const std::size_t stride = detail::type_at(schema_, type.element).size;
         const std::uint64_t index = stride ? (target.address - base) / stride : type.count;
         if (index < type.count) {
           step = static_cast<std::uint32_t>(index);

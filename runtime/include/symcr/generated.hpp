@@ -288,4 +288,51 @@ struct PlannedSchema {
 extern "C" const symcr::PlannedSchema* symcr_program_plans(std::uint32_t* count)
     __attribute__((weak));
 
+namespace symcr {
+// The device profile's compact tables (PROFILE device): what its runtime reads of each type and
+// field, in 16 and 8 bytes on a 32-bit target where a TypeInfo takes 96 and a FieldInfo 32.
+// A DeviceSchema begins with a Schema whose `types` is null while `type_count` counts the
+// entries of `types` here; its roots and program are that Schema's. The device runtime accepts
+// either form wherever it takes a Schema; the host runtime only TypeInfo tables.
+struct DeviceTypeInfo {
+  std::uint32_t size;         // sizeof(T) in the running build
+  std::uint32_t count;        // Array: its elements; Struct: its reference members
+  std::uint16_t element;      // Enum: underlying; Array: element; Pointer: pointee; else 0xFFFF
+  std::uint16_t first_field;  // Struct: its first field in DeviceSchema::fields, then its
+                              // reference members follow its fields
+  std::uint16_t field_count;  // Struct: its fields (bases first)
+  std::uint8_t kind;          // a Kind
+  std::uint8_t validator;     // 1 + its symcr_validate's index in `validators`; 0: none
+};
+constexpr std::uint16_t kDeviceNoType = 0xFFFF;
+struct DeviceFieldInfo {
+  std::uint32_t offset;     // as FieldInfo's
+  std::uint16_t type;       // index into DeviceSchema::types
+  std::uint8_t bit_offset;  // bit-field: first bit within the unit
+  std::uint8_t bit_width;   // bit-field width; 0 = not a bit-field
+};
+// The few fields with a SYMCR_RANGE or a clock's time, by their index in DeviceSchema::fields.
+struct DeviceFieldRange {
+  std::uint32_t field;
+  FieldRange range;
+};
+struct DeviceFieldTime {
+  std::uint32_t field;
+  FieldTime time;
+};
+struct DeviceSchema {
+  Schema schema;  // types null: the types are `types` below
+  const DeviceTypeInfo* types;
+  const DeviceFieldInfo* fields;
+  bool (*const* validators)(const void* object);
+  const DeviceFieldRange* ranges;
+  std::uint32_t range_count;
+  const DeviceFieldTime* times;
+  std::uint32_t time_count;
+};
+}  // namespace symcr
+// The device profile's compact schema of the program (PROFILE device only): the same types and
+// roots as symcr_program_schema(), whose TypeInfo tables a firmware then never links.
+extern "C" const symcr::DeviceSchema* symcr_program_device_schema(void) __attribute__((weak));
+
 #endif  // SYMCR_GENERATED_HPP

@@ -61,8 +61,9 @@ struct Build {
   const PlannedSchema* plans;
   std::uint32_t plan_count;
 };
-// The program's own build (symcr_program_schema(), its emitted hash and its previous builds'
-// plans); `schema` is null when the program has no generated code.
+// The program's own build (its generated tables: a PROFILE device build's compact ones,
+// symcr_program_device_schema(), else symcr_program_schema(); its emitted hash and its previous
+// builds' plans); `schema` is null when the program has no generated code.
 Build program_build();
 
 // Ok when every type reachable from the roots is one the device profile holds; else

@@ -64,8 +64,10 @@ static_assert(kObjectReferenceStepCountOffset == kReferenceObjectOffset + 4 &&
 // The bytes a value of `type` takes on the wire by itself: all of a scalar's, a union's or a
 // pointer's code; the prefix of a String, Container, Variant, Optional or UniquePtr, whose
 // characters, elements, alternative or pointee follow; none for a Struct or an Array, whose
-// bytes are their members'.
-inline std::uint32_t own_wire_size(const TypeInfo& type) {
+// bytes are their members'. `Type`: a TypeInfo, or anything with its `kind` and `size` (the
+// device profile's view of its compact tables).
+template <typename Type>
+inline std::uint32_t own_wire_size(const Type& type) {
   switch (type.kind) {
     case Kind::Struct:
     case Kind::Array:
