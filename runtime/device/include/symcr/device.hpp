@@ -52,10 +52,11 @@ const char* result_text(Result result);
 // it, and so does the four-argument constructor. A Build given plans any other way restores
 // another build's record as OtherSchema.
 struct Build {
-  Build(const Schema* schema_ = nullptr, std::uint64_t schema_hash_ = 0)
-      : schema(schema_), schema_hash(schema_hash_), plans(nullptr), plan_count(0) {}
-  Build(const Schema* schema_, std::uint64_t schema_hash_, const PlannedSchema* plans_,
-        std::uint32_t plan_count_);
+  // (Parameters named unlike the members: user code may build with -Wshadow.)
+  Build(const Schema* tables = nullptr, std::uint64_t hash = 0)
+      : schema(tables), schema_hash(hash), plans(nullptr), plan_count(0) {}
+  Build(const Schema* tables, std::uint64_t hash, const PlannedSchema* planned,
+        std::uint32_t planned_count);
   const Schema* schema;
   std::uint64_t schema_hash;
   const PlannedSchema* plans;
