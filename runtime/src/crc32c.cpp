@@ -9,6 +9,7 @@
 #include <nmmintrin.h>
 #if __has_include(<sys/platform/x86.h>)  // glibc 2.33+: the features ld.so already read
 #if defined(__clang__)
+// NOLINTNEXTLINE(readability-identifier-naming): C's keyword, which the C header spells
 #define _Bool bool  // the header is C: clang's C++ mode has no _Bool, unlike GCC's
 #include <sys/platform/x86.h>
 #undef _Bool
