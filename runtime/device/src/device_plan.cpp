@@ -415,9 +415,12 @@ class PlanRunner {
 // this file (the executor) into the firmware; others leave it out.
 extern "C" const char symcr_device_plan_executor = 1;
 
-Build::Build(const Schema* tables, std::uint64_t hash, const PlannedSchema* planned,
-             std::uint32_t planned_count)
-    : schema(tables), schema_hash(hash), plans(planned), plan_count(planned_count) {}
+Build::Build(const Schema* own_schema, std::uint64_t own_schema_hash,
+             const PlannedSchema* previous_plans, std::uint32_t previous_plan_count)
+    : schema(own_schema),
+      schema_hash(own_schema_hash),
+      plans(previous_plans),
+      plan_count(previous_plan_count) {}
 
 const PlannedSchema* detail::plan_for_writer(const Build& build, std::uint64_t writer_hash) {
   for (std::uint32_t i = 0; build.plans != nullptr && i < build.plan_count; ++i) {

@@ -53,10 +53,10 @@ const char* result_text(Result result);
 // another build's record as OtherSchema.
 struct Build {
   // (Parameters named unlike the members: user code may build with -Wshadow.)
-  Build(const Schema* tables = nullptr, std::uint64_t hash = 0)
-      : schema(tables), schema_hash(hash), plans(nullptr), plan_count(0) {}
-  Build(const Schema* tables, std::uint64_t hash, const PlannedSchema* planned,
-        std::uint32_t planned_count);
+  Build(const Schema* own_schema = nullptr, std::uint64_t own_schema_hash = 0)
+      : schema(own_schema), schema_hash(own_schema_hash), plans(nullptr), plan_count(0) {}
+  Build(const Schema* own_schema, std::uint64_t own_schema_hash,
+        const PlannedSchema* previous_plans, std::uint32_t previous_plan_count);
   const Schema* schema;
   std::uint64_t schema_hash;
   const PlannedSchema* plans;
