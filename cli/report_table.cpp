@@ -13,15 +13,13 @@ Colour decision_colour(Decision decision) {
     case Decision::Restored:
       return Colour::None;
     case Decision::Kept:
+    case Decision::Rebased:
       return Colour::Cyan;
     case Decision::Dropped:
-      return Colour::Yellow;
     case Decision::Converted:
       return Colour::Yellow;
     case Decision::Rejected:
       return Colour::Red;
-    case Decision::Rebased:
-      return Colour::Cyan;
   }
   return Colour::None;
 }

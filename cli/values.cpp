@@ -38,7 +38,10 @@ std::string shortest(T value, int max_precision, T (*parse)(const char*, char**)
   for (; precision <= max_precision; ++precision) {
     std::snprintf(buffer, sizeof buffer, format, precision, value);
     const T back = parse(buffer, nullptr);
-    if (std::memcmp(&back, &value, sizeof(T) < 10 ? sizeof(T) : 10) == 0) break;
+    // Over the value bytes only: long double's 10 of its 16.
+    const std::size_t value_bytes = sizeof(T) < 10 ? sizeof(T) : 10;
+    // NOLINTNEXTLINE(bugprone-suspicious-memory-comparison): the same bits are meant (-0 != 0)
+    if (std::memcmp(&back, &value, value_bytes) == 0) break;
   }
   // %g switches to an exponent when the precision is below the magnitude (100 -> "1e+02"):
   // spell out numbers of moderate magnitude in full instead.
@@ -100,7 +103,7 @@ std::string string_contents(const std::uint8_t* bytes, std::size_t size, std::ui
   std::string out;
   for (std::size_t i = 0; i + width <= size; i += width) {
     std::uint32_t code = static_cast<std::uint32_t>(load_unsigned(bytes + i, width));
-    if (width == 2 && code >= 0xD800 && code < 0xDC00 && i + 2 * width <= size) {
+    if (width == 2 && code >= 0xD800 && code < 0xDC00 && i + 2 * std::size_t{width} <= size) {
       const auto low = static_cast<std::uint32_t>(load_unsigned(bytes + i + width, width));
       if (low >= 0xDC00 && low < 0xE000) {
         code = 0x10000 + ((code - 0xD800) << 10) + (low - 0xDC00);

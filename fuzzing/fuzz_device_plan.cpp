@@ -36,7 +36,7 @@ struct Pair {
 
 // The pairs whose worlds the device profile holds, each with the image symcr-gen would embed.
 const std::vector<Pair>& device_pairs() {
-  static const std::vector<Pair> pairs = [] {
+  static const std::vector<Pair> kPairs = [] {
     std::vector<Pair> held;
     for (unsigned world = 0; world < fuzz::kP; world += 2) {  // x0, x1 pairs
       const symcr::Schema& writer = fuzz::world_schema(world);
@@ -55,7 +55,7 @@ const std::vector<Pair>& device_pairs() {
     }
     return held;
   }();
-  return pairs;
+  return kPairs;
 }
 
 [[noreturn]] void fail(const char* what, unsigned world, const char* why = "") {

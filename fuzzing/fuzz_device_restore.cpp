@@ -21,7 +21,7 @@ namespace {
 
 // The worlds whose every type the device profile holds.
 const std::vector<unsigned>& device_worlds() {
-  static const std::vector<unsigned> worlds = [] {
+  static const std::vector<unsigned> kWorlds = [] {
     std::vector<unsigned> held;
     for (unsigned world = 0; world < fuzz::kWorldCount; ++world) {
       if (symcr::device::check_schema(fuzz::world_schema(world)) == symcr::device::Result::Ok) {
@@ -30,7 +30,7 @@ const std::vector<unsigned>& device_worlds() {
     }
     return held;
   }();
-  return worlds;
+  return kWorlds;
 }
 
 [[noreturn]] void fail(const char* what, unsigned world, const char* why = "") {

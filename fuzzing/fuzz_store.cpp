@@ -54,14 +54,14 @@ namespace le = symcr::format;
 constexpr std::uint64_t kMaxFile = 4u << 20;
 
 const std::string& store_path() {
-  static const std::string path = [] {
+  static const std::string kPath = [] {
     const char* dir = std::getenv("TMPDIR");
     std::string base = dir && *dir ? dir : "/tmp";
     char name[64];
     std::snprintf(name, sizeof name, "/symcr-fuzz-store-%d", static_cast<int>(getpid()));
     return base + name;
   }();
-  return path;
+  return kPath;
 }
 
 [[noreturn]] void fail(const char* what, unsigned world, const symcr::Report& report) {
@@ -197,7 +197,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   };
   put(header, 0, 4096);
   for (int a = 0; a < 2; ++a) {
-    if (sections.size() <= static_cast<std::size_t>(1 + a)) break;
+    if (sections.size() <= 1 + static_cast<std::size_t>(a)) break;
     std::vector<std::uint8_t>& area = sections[1 + a];
     if (fix) fix_area(area);
     put(area, 4096 + static_cast<std::uint64_t>(a) * area_size, area_size);
@@ -219,7 +219,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       binding.location = slots_offset + slot * slot_size;
       for (int a = 0; a < 2 && record.size() >= 40; ++a) {
         const std::vector<std::uint8_t>* area =
-            sections.size() > static_cast<std::size_t>(1 + a) ? &sections[1 + a] : nullptr;
+            sections.size() > 1 + static_cast<std::size_t>(a) ? &sections[1 + a] : nullptr;
         if (area == nullptr || area->size() < 16) continue;
         const std::uint32_t area_bytes = le::load32(area->data() + 8);
         if (area_bytes <= area->size() - 16 && le::load64(area->data()) == le::load64(record.data() + 32)) {

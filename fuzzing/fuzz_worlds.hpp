@@ -46,7 +46,7 @@ struct Registry {
 inline Registry registry;
 
 template <typename T>
-struct tracked {
+struct Tracked {
   static void destroy_now(void* object) { delete static_cast<T*>(object); }
   static void* create() {
     T* object = new T();
@@ -68,7 +68,7 @@ const symcr::Schema& with_tracked_lifecycles(const symcr::Schema& original) {
     types.assign(original.types, original.types + original.type_count);
     for (symcr::TypeInfo& type : types) {
       ((type.lifecycle == &symcr::ops::lifecycle<Types>::table
-            ? (void)(type.lifecycle = &tracked<Types>::table)
+            ? (void)(type.lifecycle = &Tracked<Types>::table)
             : (void)0),
        ...);
     }
@@ -104,9 +104,9 @@ inline const symcr::Schema& world_schema(unsigned world) {
 }
 
 inline const char* world_name(unsigned world) {
-  static const char* const names[] = {"a0", "a1", "b0", "b1", "c0", "c1", "d0",
-                                      "d1", "e0", "e1", "t0", "t1", "p",  "g"};
-  return names[world % kWorldCount];
+  static const char* const kNames[] = {"a0", "a1", "b0", "b1", "c0", "c1", "d0",
+                                       "d1", "e0", "e1", "t0", "t1", "p",  "g"};
+  return kNames[world % kWorldCount];
 }
 
 inline void reset_world(unsigned world) {
@@ -147,9 +147,9 @@ inline void reset_world(unsigned world) {
 // Gives the pointer worlds a live object of the new build for restore to fill.
 inline void preset_live_objects(unsigned world) {
   switch (world % kWorldCount) {
-    case kC0: w::c0::world.head = static_cast<w::c0::Node*>(tracked<w::c0::Node>::create()); break;
-    case kC1: w::c1::world.head = static_cast<w::c1::Node*>(tracked<w::c1::Node>::create()); break;
-    case kG: w::g::graph.first = static_cast<w::g::Node*>(tracked<w::g::Node>::create()); break;
+    case kC0: w::c0::world.head = static_cast<w::c0::Node*>(Tracked<w::c0::Node>::create()); break;
+    case kC1: w::c1::world.head = static_cast<w::c1::Node*>(Tracked<w::c1::Node>::create()); break;
+    case kG: w::g::graph.first = static_cast<w::g::Node*>(Tracked<w::g::Node>::create()); break;
     case kB1: w::b1::bag.up.reset(new w::b1::Item()); break;
     default: break;
   }
@@ -224,8 +224,8 @@ inline void fix_record_integrity(std::uint8_t* p, std::size_t size,
 
 // The key the fuzzers authenticate with (control bit 7 of the record target).
 inline void use_fuzz_key(bool on) {
-  static const std::uint8_t key[] = {'f', 'u', 'z', 'z', '-', 'k', 'e', 'y'};
-  const symcr::CheckpointKey fuzz_key{9, key, sizeof key};
+  static const std::uint8_t kKey[] = {'f', 'u', 'z', 'z', '-', 'k', 'e', 'y'};
+  const symcr::CheckpointKey fuzz_key{9, kKey, sizeof kKey};
   (void)symcr::set_checkpoint_keys(&fuzz_key, on ? 1 : 0);
 }
 

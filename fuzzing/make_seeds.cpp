@@ -32,7 +32,7 @@ std::int32_t outside_static = 5;
 // Heap objects of the pointer worlds, freed by reset_world.
 template <typename T>
 T* make(const T& value) {
-  T* object = static_cast<T*>(tracked<T>::create());
+  T* object = static_cast<T*>(Tracked<T>::create());
   *object = value;
   return object;
 }
@@ -171,6 +171,7 @@ void fill_world(unsigned world) {
       break;
     default: {
       std::vector<w::g::Node*> nodes;
+      nodes.reserve(6);
       for (int i = 0; i < 6; ++i) nodes.push_back(make<w::g::Node>(w::g::Node{i, nullptr, nullptr}));
       for (int i = 0; i < 6; ++i) {
         nodes[i]->next = i + 1 < 6 ? nodes[i + 1] : nullptr;
@@ -196,7 +197,7 @@ unsigned partner(unsigned world) {
 }
 
 std::string dir_of(const std::string& root, const char* target) {
-  const std::string dir = root + "/" + target;
+  std::string dir = root + "/" + target;
   ::mkdir(root.c_str(), 0755);
   ::mkdir(dir.c_str(), 0755);
   return dir;

@@ -18,7 +18,7 @@ namespace {
 
 /// Bumped whenever the part's fields change: a part of another format is
 /// refused (rebuild).
-constexpr std::int64_t kPartFormat = 1;
+constexpr std::int64_t PartFormat = 1;
 
 json::Array strings(const std::vector<std::string> &List) {
   json::Array Out;
@@ -114,7 +114,7 @@ public:
     std::int64_t Profile = 0;
     if (!integer(*O, "format", Format))
       return false;
-    if (Format != kPartFormat)
+    if (Format != PartFormat)
       return fail(
           "written by another version of symcr-gen (rebuild the object)");
     if (!string(*O, "program", P.Name) || !integer(*O, "profile", Profile))
@@ -453,7 +453,7 @@ std::string writeModelPart(const ProgramModel &Program) {
                                   {"spelling", P.Spelling}});
   const PointStoreModel &Store = Program.PointStore;
   json::Object Part{
-      {"format", kPartFormat},
+      {"format", PartFormat},
       {"program", Program.Name},
       {"profile", Program.Profile == RuntimeProfile::Device ? 1 : 0},
       {"units", std::move(Units)},

@@ -29,13 +29,13 @@ namespace {
 /// fallback_depth=0: a restored state that crashes the program is passed over
 /// at the next start, down to this many older checkpoints, then the initial
 /// state.
-constexpr unsigned kDefaultFallbackDepth = 2;
+constexpr unsigned DefaultFallbackDepth = 2;
 /// Checkpoint points reached after a restore that confirm it, unless the store
 /// directive says confirm_after=N.
-constexpr unsigned kDefaultConfirmAfter = 10;
+constexpr unsigned DefaultConfirmAfter = 10;
 /// Slots the fallback keeps beside its depth: the restored checkpoint and one
 /// to save into while the restore waits for its confirmation.
-constexpr unsigned kFallbackSpareSlots = 2;
+constexpr unsigned FallbackSpareSlots = 2;
 
 std::string locationKey(const Location &L) {
   return L.File + ":" + std::to_string(L.Line) + ":" + std::to_string(L.Column);
@@ -135,12 +135,12 @@ void ProgramPoints::addDirective(const Directive &D) {
     if (!DepthGiven) {
       // On by default, as deep as the slots the directive gives leave room for
       // (saves go on while a restore waits for its confirmation).
-      Store.FallbackDepth = kDefaultFallbackDepth;
+      Store.FallbackDepth = DefaultFallbackDepth;
       if (Store.Slots != 0)
-        Store.FallbackDepth = std::min(Store.FallbackDepth,
-                                       Store.Slots > kFallbackSpareSlots
-                                           ? Store.Slots - kFallbackSpareSlots
-                                           : 0u);
+        Store.FallbackDepth =
+            std::min(Store.FallbackDepth, Store.Slots > FallbackSpareSlots
+                                              ? Store.Slots - FallbackSpareSlots
+                                              : 0u);
       Store.FallbackDefault = true;
     }
     if (Store.ConfirmAfter != 0 && Store.FallbackDepth == 0) {
@@ -159,7 +159,7 @@ void ProgramPoints::addDirective(const Directive &D) {
     }
     // A restore proves itself over this many checkpoints unless told otherwise.
     if (Store.FallbackDepth != 0 && Store.ConfirmAfter == 0)
-      Store.ConfirmAfter = kDefaultConfirmAfter;
+      Store.ConfirmAfter = DefaultConfirmAfter;
     PointStoreModel &Current = Program.PointStore;
     if (!Current.Where.valid()) {
       Current = Store;

@@ -452,9 +452,8 @@ void SchemaBuilder::addTranslationUnit(
       case DirectiveKind::CheckpointAt:
       case DirectiveKind::RestoreAt:
       case DirectiveKind::Store:
-        return; // program points: ProgramPoints
       case DirectiveKind::Clock:
-        return; // declareClock; resolved below
+        return; // program points: ProgramPoints; clocks: declareClock (below)
       }
       if (Found && Matched)
         (*Matched)[I] = true;

@@ -127,7 +127,7 @@ private:
   std::uint32_t fail(const WalkContext &C, const std::string &What,
                      const std::string &Why);
   std::uint32_t scalar(const clang::BuiltinType *BT, const WalkContext &C);
-  std::uint32_t record(clang::QualType Type, const clang::RecordDecl *RD,
+  std::uint32_t record(clang::QualType Type, const clang::RecordDecl *Decl,
                        const WalkContext &C);
   std::uint32_t stdRecord(clang::QualType Type, const clang::RecordDecl *RD,
                           llvm::StringRef Name, const WalkContext &C);

@@ -416,9 +416,12 @@ class PlanRunner {
 // this file (the executor) into the firmware; others leave it out.
 extern "C" const char symcr_device_plan_executor = 1;
 
-Build::Build(const Schema* schema_, std::uint64_t schema_hash_, const PlannedSchema* plans_,
-             std::uint32_t plan_count_)
-    : schema(schema_), schema_hash(schema_hash_), plans(plans_), plan_count(plan_count_) {}
+Build::Build(const Schema* own_schema, std::uint64_t own_schema_hash,
+             const PlannedSchema* previous_plans, std::uint32_t previous_plan_count)
+    : schema(own_schema),
+      schema_hash(own_schema_hash),
+      plans(previous_plans),
+      plan_count(previous_plan_count) {}
 
 const PlannedSchema* detail::plan_for_writer(const Build& build, std::uint64_t writer_hash) {
   for (std::uint32_t i = 0; build.plans != nullptr && i < build.plan_count; ++i) {

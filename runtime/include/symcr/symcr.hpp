@@ -258,7 +258,7 @@ Report transfer(const Schema& from, const Schema& to, const RestoreOptions& opti
 // cannot (a TPM NV counter, eMMC RPMB, a microcontroller's backup register), one per store.
 class FreshnessCounter {
  public:
-  virtual ~FreshnessCounter() {}
+  virtual ~FreshnessCounter() = default;
   // The highest value advanced to, 0 when never advanced. A failure means the value cannot be
   // known: a store holding authenticated checkpoints then restores nothing.
   virtual Status read(std::uint64_t& value) = 0;

@@ -19,9 +19,11 @@
 #include "report_access.hpp"
 #include "symcr/symcr.hpp"
 
+// NOLINTNEXTLINE(readability-redundant-declaration): redeclared to make it weak
 extern "C" void symcr_on_restore_point(const struct symcr_point* point, struct symcr_report* report)
     __attribute__((weak));
 // Weak here: a program without points (none defines it) may still call symcr_points_open_store.
+// NOLINTNEXTLINE(readability-redundant-declaration): redeclared to make it weak
 extern "C" const struct symcr_point_store symcr_program_point_store __attribute__((weak));
 
 namespace {
@@ -40,8 +42,8 @@ struct PointState {
 
 // Never destroyed: a point reached while static objects are destroyed still finds it.
 PointState& state() {
-  static PointState* const instance = new PointState;
-  return *instance;
+  static PointState* const kInstance = new PointState;
+  return *kInstance;
 }
 
 const char* store_path(const symcr_point_store& store) {

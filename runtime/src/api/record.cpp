@@ -56,7 +56,7 @@ Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t seq
   return encode_record_as(schema, schema_blob(schema), inline_schema, sequence, out, signing);
 }
 
-Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inline_schema,
+Status encode_record_as(const Schema& schema, const SchemaBlob& identity, bool inline_schema,
                         std::uint64_t sequence, std::vector<std::uint8_t>& out,
                         const RecordSigning* signing, const ClockReadings* clock_readings) {
   // Without a store's signing, a standalone checkpoint signed with the keys in force: one
@@ -67,7 +67,7 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   if (signing == nullptr) {
     snapshot = current_keys();
     own.keys = snapshot.get();
-    if (own.keys != nullptr) schema_digest(blob.data, blob.size, standalone.schema_digest);
+    if (own.keys != nullptr) schema_digest(identity.data, identity.size, standalone.schema_digest);
     own.binding = &standalone;
     signing = &own;
   }
@@ -77,7 +77,7 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
       authenticated ? format::kRecordAuthenticatedHeaderSize : format::kRecordHeaderSize;
   std::size_t schema_size = 0;
   if (inline_schema) {
-    schema_size = blob.size;
+    schema_size = identity.size;
     if (schema_size > UINT32_MAX) {
       return Status(Error::TooLarge, "schema of %zu bytes exceeds the format's 4 GiB limit",
                     schema_size);
@@ -87,7 +87,7 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   // never cleared first: the payload's large values are then copied straight over it.
   if (out.size() < header_size + schema_size) out.resize(header_size + schema_size);
   std::memset(out.data(), 0, header_size);
-  if (schema_size != 0) std::memcpy(out.data() + header_size, blob.data, schema_size);
+  if (schema_size != 0) std::memcpy(out.data() + header_size, identity.data, schema_size);
   PayloadCrc payload_crc;
   Status status =
       encode_payload_at(schema, out, header_size + schema_size, &payload_crc, clock_readings);
@@ -109,10 +109,10 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& blob, bool inlin
   }
   header.sequence = sequence;
   header.timestamp_ns = realtime_ns();
-  header.schema_hash = blob.hash;
+  header.schema_hash = identity.hash;
   header.schema_size = static_cast<std::uint32_t>(schema_size);
   header.payload_size = static_cast<std::uint32_t>(payload_size);
-  header.program_id = blob.program_id;
+  header.program_id = identity.program_id;
   store_header(header, out.data());
   if (authenticated && signing->binding != nullptr) {  // the CRC then covers the MAC too
     sign_record(*signing->keys, out.data(), out.size(), *signing->binding);

@@ -64,42 +64,42 @@ Status check_store_dimensions(std::uint32_t slots, std::uint32_t slot_size) {
   return Status();
 }
 
-void encode_store_header(const StoreGeometry& g, std::uint8_t* p) {
-  std::memset(p, 0, format::kStoreHeaderSize);
-  std::memcpy(p, format::kStoreFileMagic, sizeof format::kStoreFileMagic);
-  format::store16(p + format::kStoreVersionOffset, format::kStoreFileFormatVersion);
-  format::store32(p + format::kStoreSlotCountOffset, g.slot_count);
-  format::store32(p + format::kStoreSlotSizeOffset, g.slot_size);
-  format::store32(p + format::kStoreSchemaAreaSizeOffset, g.schema_area_size);
-  format::store64(p + format::kStoreSlotsOffsetOffset, g.slots_offset);
-  format::store32(p + format::kStoreHeaderCrcOffset, crc32c(p, format::kStoreHeaderCrcOffset));
+void encode_store_header(const StoreGeometry& geometry, std::uint8_t* out) {
+  std::memset(out, 0, format::kStoreHeaderSize);
+  std::memcpy(out, format::kStoreFileMagic, sizeof format::kStoreFileMagic);
+  format::store16(out + format::kStoreVersionOffset, format::kStoreFileFormatVersion);
+  format::store32(out + format::kStoreSlotCountOffset, geometry.slot_count);
+  format::store32(out + format::kStoreSlotSizeOffset, geometry.slot_size);
+  format::store32(out + format::kStoreSchemaAreaSizeOffset, geometry.schema_area_size);
+  format::store64(out + format::kStoreSlotsOffsetOffset, geometry.slots_offset);
+  format::store32(out + format::kStoreHeaderCrcOffset, crc32c(out, format::kStoreHeaderCrcOffset));
 }
 
-Status decode_store_header(const std::uint8_t* p, std::size_t size, const char* path,
-                           StoreGeometry& g) {
-  if (size < sizeof format::kStoreFileMagic || std::memcmp(p, format::kStoreFileMagic, 8) != 0) {
+Status decode_store_header(const std::uint8_t* data, std::size_t size, const char* path,
+                           StoreGeometry& out) {
+  if (size < sizeof format::kStoreFileMagic || std::memcmp(data, format::kStoreFileMagic, 8) != 0) {
     return Status(Error::NotACheckpoint, "%s is not a symcr store (bad magic)", path);
   }
   if (size < format::kStoreHeaderSize)
     return Status(Error::Truncated, "%s: store header truncated", path);
-  const std::uint16_t version = format::load16(p + format::kStoreVersionOffset);
+  const std::uint16_t version = format::load16(data + format::kStoreVersionOffset);
   if (version > format::kStoreFileFormatVersion) {
     return Status(Error::FutureVersion,
                   "%s was written by store format version %u; this build reads up to %u", path,
                   unsigned{version}, unsigned{format::kStoreFileFormatVersion});
   }
-  if (format::load32(p + format::kStoreHeaderCrcOffset) !=
-      crc32c(p, format::kStoreHeaderCrcOffset)) {
+  if (format::load32(data + format::kStoreHeaderCrcOffset) !=
+      crc32c(data, format::kStoreHeaderCrcOffset)) {
     return Status(Error::Checksum, "%s: store header checksum mismatch", path);
   }
-  g.slot_count = format::load32(p + format::kStoreSlotCountOffset);
-  g.slot_size = format::load32(p + format::kStoreSlotSizeOffset);
-  g.schema_area_size = format::load32(p + format::kStoreSchemaAreaSizeOffset);
-  g.slots_offset = format::load64(p + format::kStoreSlotsOffsetOffset);
-  if (version == 0 || !check_store_dimensions(g.slot_count, g.slot_size).ok() ||
-      g.schema_area_size <= format::kStoreAreaHeaderSize ||
-      g.schema_area_size % format::kStorePageSize != 0 ||
-      g.slots_offset != format::kStorePageSize + 2 * std::uint64_t{g.schema_area_size}) {
+  out.slot_count = format::load32(data + format::kStoreSlotCountOffset);
+  out.slot_size = format::load32(data + format::kStoreSlotSizeOffset);
+  out.schema_area_size = format::load32(data + format::kStoreSchemaAreaSizeOffset);
+  out.slots_offset = format::load64(data + format::kStoreSlotsOffsetOffset);
+  if (version == 0 || !check_store_dimensions(out.slot_count, out.slot_size).ok() ||
+      out.schema_area_size <= format::kStoreAreaHeaderSize ||
+      out.schema_area_size % format::kStorePageSize != 0 ||
+      out.slots_offset != format::kStorePageSize + 2 * std::uint64_t{out.schema_area_size}) {
     return Status(Error::Corrupt, "%s: invalid store header", path);
   }
   return Status();

@@ -77,7 +77,7 @@ struct StoreSchemaArea {
 // A damaged or empty area is loaded as not valid; only an I/O error is a failure. `own`, if
 // given, is the opening build's schema, recognised by its bytes instead of parsed.
 Status load_store_area(int fd, const char* path, std::uint64_t offset, std::uint64_t capacity,
-                       const Schema* own, StoreSchemaArea& out);
+                       const Schema* own, StoreSchemaArea& area);
 
 enum class StoreSlotState : std::uint8_t {
   Valid,          // the record validates and its schema area is valid

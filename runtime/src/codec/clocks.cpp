@@ -8,7 +8,7 @@
 namespace symcr::detail {
 
 std::uint64_t process_epoch() {
-  static const std::uint64_t epoch = [] {
+  static const std::uint64_t kEpoch = [] {
     std::uint64_t value = 0;
     if (getrandom(&value, sizeof value, 0) != static_cast<ssize_t>(sizeof value)) {
       // No entropy source: the start time and the pid still tell processes apart.
@@ -20,7 +20,7 @@ std::uint64_t process_epoch() {
     }
     return value != 0 ? value : 1;
   }();
-  return epoch;
+  return kEpoch;
 }
 
 }  // namespace symcr::detail

@@ -156,9 +156,9 @@ class Encoder {
     container_ordinal_ = 0;
     depth_ = 0;
     error_ = Status();
-    pos_ = start_;
+    pos_ = payload_start;
     fused_crc_ = 0;
-    fused_to_ = start_;
+    fused_to_ = payload_start;
     fused_ = false;
     fused_valid_ = true;
 
@@ -201,13 +201,13 @@ class Encoder {
     }
     if (!ok()) return finish_error();
     if (refold_) {
-      out_.resize(start_);
+      out_.resize(payload_start);
       return Status();
     }
     if (!exact_ &&
         (overlap_suspected_ || (track_regions_ && !s_.heap.empty() && heap_objects_overlap()))) {
       overlap_suspected_ = true;
-      out_.resize(start_);
+      out_.resize(payload_start);
       return Status();
     }
     check_shared_targets();
@@ -220,7 +220,7 @@ class Encoder {
     }
     if (!ok()) return finish_error();
     if (overlap_suspected_) {
-      out_.resize(start_);
+      out_.resize(payload_start);
       return Status();
     }
     if (!facts_.clocks.empty()) put_clock_readings();
@@ -231,9 +231,9 @@ class Encoder {
   // The clocks' readings end the payload (docs/format.md §3), after everything they describe
   // was read from memory.
   void put_clock_readings() {
-    if (given_readings_ != nullptr) {
-      const std::size_t size = format::clock_readings_size(given_readings_->count);
-      std::memcpy(grow(size), given_readings_->bytes, size);
+    if (given_readings != nullptr) {
+      const std::size_t size = format::clock_readings_size(given_readings->count);
+      std::memcpy(grow(size), given_readings->bytes, size);
       return;
     }
     format::store64(grow(format::kClockEpochSize), process_epoch());
@@ -295,7 +295,7 @@ class Encoder {
 
   bool ok() const { return error_.ok(); }
   Status finish_error() {
-    out_.resize(start_);
+    out_.resize(payload_start);
     return error_;
   }
   std::uint32_t size_of(std::uint32_t type) const { return types_[type].size; }
@@ -365,7 +365,7 @@ class Encoder {
   // by chunk (std::vector cannot grow without writing its new bytes), each chunk checksummed
   // right after it was copied, while still in cache.
   static constexpr std::size_t kFuseMin = std::size_t{1} << 20;
-  static constexpr std::size_t kFuseChunk = 64 * 1024;
+  static constexpr std::size_t kFuseChunk = std::size_t{64} * 1024;
   void put_fused(const std::uint8_t* bytes, std::size_t n) {
     fused_crc_ = crc32c_extend(fused_crc_, out_.data() + fused_to_, pos_ - fused_to_);
     if (out_.size() - pos_ >= n) {
@@ -1147,8 +1147,8 @@ class Encoder {
   }
 
  public:
-  std::size_t start_ = 0;
-  const ClockReadings* given_readings_ = nullptr;  // encode_payload_at's, or null: read them now
+  std::size_t payload_start = 0;
+  const ClockReadings* given_readings = nullptr;  // encode_payload_at's, or null: read them now
 
  private:
   const Schema& schema_;
@@ -1163,7 +1163,7 @@ class Encoder {
   bool exact_ = false;  // heap objects indexed too (the second pass)
   bool overlap_suspected_ = false;
   bool refold_ = false;          // an enclosure was learned: the pass runs again
-  std::uint32_t fused_crc_ = 0;  // CRC-32C of out_ from start_ to fused_to_ (put_fused)
+  std::uint32_t fused_crc_ = 0;  // CRC-32C of out_ from payload_start to fused_to_ (put_fused)
   std::size_t fused_to_ = 0;
   bool fused_ = false;                       // a large copy was checksummed as it was made
   bool fused_valid_ = true;                  // and nothing before fused_to_ was written again since
@@ -1199,12 +1199,12 @@ Status encode_payload_at(const Schema& schema, std::vector<std::uint8_t>& out, s
   EncodeScratch& scratch = thread_encode_scratch();
   if (out.size() < at) out.resize(at);
   Encoder encoder(schema, out, scratch, cached.facts());
-  encoder.start_ = at;
+  encoder.payload_start = at;
   if (clock_readings != nullptr && clock_readings->count != cached.facts().clocks.size()) {
     return Status(Error::Unsupported, "%u clock readings given for a schema of %zu clocks",
                   clock_readings->count, cached.facts().clocks.size());
   }
-  encoder.given_readings_ = clock_readings;
+  encoder.given_readings = clock_readings;
   const Status status = encoder.run();
   if (payload_crc) {
     payload_crc->known = status.ok() && encoder.fused_payload_crc(payload_crc->value);

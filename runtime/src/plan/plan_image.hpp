@@ -38,10 +38,10 @@ enum NodeBits : std::uint8_t {
 
 }  // namespace plan_image
 
-// Appends `plan`'s image to `out` (cleared first). `writer_hash` and `reader_hash` are the
+// Appends `plan`'s image to `bytes` (cleared first). `writer_hash` and `reader_hash` are the
 // serialised schemas' hashes, checked again when the image is decoded.
 void encode_plan_image(const Plan& plan, std::uint64_t writer_hash, std::uint64_t reader_hash,
-                       std::vector<std::uint8_t>& out);
+                       std::vector<std::uint8_t>& bytes);
 
 // Fills `plan`, whose writer and reader are set, from an image of a plan between those schemas.
 // False when the image was made for other schemas or is damaged; `plan` is then to be dropped.

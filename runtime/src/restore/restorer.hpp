@@ -194,7 +194,7 @@ struct RestoreTables {
   void clear();
 };
 
-constexpr std::size_t kKeptRestoreTableBytes = 64 * 1024;
+constexpr std::size_t kKeptRestoreTableBytes = std::size_t{64} * 1024;
 
 // The tables a Restorer decodes with: the thread's kept set, or a set of its own when a
 // restore runs inside another one on this thread (a hook or validator that restores).

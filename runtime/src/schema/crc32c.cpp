@@ -9,6 +9,7 @@
 #include <nmmintrin.h>
 #if __has_include(<sys/platform/x86.h>)  // glibc 2.33+: the features ld.so already read
 #if defined(__clang__)
+// NOLINTNEXTLINE(readability-identifier-naming): C's keyword, which the C header spells
 #define _Bool bool  // the header is C: clang's C++ mode has no _Bool, unlike GCC's
 #include <sys/platform/x86.h>
 #undef _Bool
@@ -92,7 +93,7 @@ std::uint32_t crc32c_extend_portable(std::uint32_t crc, const void* data, std::s
 // leaf 1, ECX bit 20, read directly: __builtin_cpu_supports would link libgcc's CPU model
 // detection (__cpu_indicator_init, about 4.5 KB of .text) into every program.
 bool crc32c_hardware_available() {
-  static const bool available = [] {
+  static const bool kAvailable = [] {
 #if defined(CPU_FEATURE_ACTIVE)
     return CPU_FEATURE_ACTIVE(SSE4_2);
 #else
@@ -100,7 +101,7 @@ bool crc32c_hardware_available() {
     return __get_cpuid(1, &eax, &ebx, &ecx, &edx) != 0 && (ecx & bit_SSE4_2) != 0;
 #endif
   }();
-  return available;
+  return kAvailable;
 }
 
 namespace {
@@ -281,9 +282,9 @@ std::uint32_t crc32c_combine(std::uint32_t crc_a, std::uint32_t crc_b, std::uint
 
 std::uint32_t crc32c_extend(std::uint32_t crc, const void* data, std::size_t size) {
   using Implementation = std::uint32_t (*)(std::uint32_t, const void*, std::size_t);
-  static const Implementation implementation =
+  static const Implementation kImplementation =
       crc32c_hardware_available() ? &crc32c_extend_hardware : &crc32c_extend_portable;
-  return implementation(crc, data, size);
+  return kImplementation(crc, data, size);
 }
 
 std::uint32_t crc32c_copy(std::uint32_t crc, void* destination, const void* source,

@@ -51,13 +51,13 @@ struct SchemaCacheEntry {
   SchemaBlob blob;
   const Schema* schema = nullptr;
   const SchemaFacts& facts() const {
-    std::call_once(facts_computed, [this] { facts_ = compute_schema_facts(*schema); });
+    std::call_once(facts_computed_, [this] { facts_ = compute_schema_facts(*schema); });
     return facts_;
   }
   // Every type reachable from the roots is one the device profile's decoder holds, so a
   // checkpoint of this very schema can be restored without a plan (restore.cpp).
   bool device_holdable() const {
-    std::call_once(device_checked, [this] {
+    std::call_once(device_checked_, [this] {
       // Times of clocks are rebased value by value, which that decoder leaves to the device.
       device_holdable_ =
           device::check_schema(*schema) == device::Result::Ok && schema_clocks(*schema).empty();
@@ -68,9 +68,9 @@ struct SchemaCacheEntry {
   bool first_same_build_restore() const { return !restored_.exchange(true); }
 
  private:
-  mutable std::once_flag facts_computed;
+  mutable std::once_flag facts_computed_;
   mutable SchemaFacts facts_;
-  mutable std::once_flag device_checked;
+  mutable std::once_flag device_checked_;
   mutable bool device_holdable_ = false;
   mutable std::atomic<bool> restored_{false};
 };

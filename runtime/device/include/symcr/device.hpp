@@ -52,10 +52,11 @@ const char* result_text(Result result);
 // it, and so does the four-argument constructor. A Build given plans any other way restores
 // another build's record as OtherSchema.
 struct Build {
-  Build(const Schema* schema_ = nullptr, std::uint64_t schema_hash_ = 0)
-      : schema(schema_), schema_hash(schema_hash_), plans(nullptr), plan_count(0) {}
-  Build(const Schema* schema_, std::uint64_t schema_hash_, const PlannedSchema* plans_,
-        std::uint32_t plan_count_);
+  // (Parameters named unlike the members: user code may build with -Wshadow.)
+  Build(const Schema* own_schema = nullptr, std::uint64_t own_schema_hash = 0)
+      : schema(own_schema), schema_hash(own_schema_hash), plans(nullptr), plan_count(0) {}
+  Build(const Schema* own_schema, std::uint64_t own_schema_hash,
+        const PlannedSchema* previous_plans, std::uint32_t previous_plan_count);
   const Schema* schema;
   std::uint64_t schema_hash;
   const PlannedSchema* plans;

@@ -52,7 +52,7 @@ class Sha256 {
     std::uint8_t length[8];
     for (int i = 0; i < 8; ++i) length[i] = static_cast<std::uint8_t>(bits >> (56 - 8 * i));
     update(length, sizeof length);
-    for (int i = 0; i < 8; ++i) store_be32(digest + 4 * i, state_[i]);
+    for (std::size_t i = 0; i < 8; ++i) store_be32(digest + 4 * i, state_[i]);
   }
 
  private:
@@ -81,7 +81,7 @@ class Sha256 {
         0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7,
         0xc67178f2};
     std::uint32_t w[64];
-    for (int i = 0; i < 16; ++i) w[i] = load_be32(block + 4 * i);
+    for (std::size_t i = 0; i < 16; ++i) w[i] = load_be32(block + 4 * i);
     for (int i = 16; i < 64; ++i) {
       const std::uint32_t s0 = rotr(w[i - 15], 7) ^ rotr(w[i - 15], 18) ^ (w[i - 15] >> 3);
       const std::uint32_t s1 = rotr(w[i - 2], 17) ^ rotr(w[i - 2], 19) ^ (w[i - 2] >> 10);
