@@ -7,6 +7,7 @@
 #if defined(__x86_64__)
 #include <cpuid.h>
 #include <nmmintrin.h>
+#include <wmmintrin.h>
 #if __has_include(<sys/platform/x86.h>)  // glibc 2.33+: the features ld.so already read
 #if defined(__clang__)
 // NOLINTNEXTLINE(readability-identifier-naming): C's keyword, which the C header spells
@@ -106,6 +107,19 @@ bool crc32c_hardware_available() {
 
 namespace {
 
+// Carry-less multiplication (PCLMULQDQ), for the folding path below. Asked as above.
+bool carryless_multiply_available() {
+  static const bool kAvailable = [] {
+#if defined(CPU_FEATURE_ACTIVE)
+    return CPU_FEATURE_ACTIVE(PCLMULQDQ);
+#else
+    unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+    return __get_cpuid(1, &eax, &ebx, &ecx, &edx) != 0 && (ecx & bit_PCLMUL) != 0;
+#endif
+  }();
+  return kAvailable;
+}
+
 // Three interleaved crc32 chains (the instruction's latency is 3 cycles, its throughput 1 per
 // cycle), combined by shifting one chain's CRC over the bytes the next chain covered: the
 // technique of Mark Adler's crc32c.c. Shifting a CRC register over n zero bytes is linear, so
@@ -190,12 +204,96 @@ __attribute__((target("sse4.2"))) std::uint32_t three_chains(std::uint32_t c, st
   return shift(t, crc) ^ static_cast<std::uint32_t>(c2);
 }
 
+// Folding (Intel's "Fast CRC Computation for Generic Polynomials Using PCLMULQDQ"): four
+// 128-bit lanes hold the message read so far, reduced: each step multiplies every lane,
+// carry-less, by x^575 and x^511 mod P (its two halves move 512 bits on) and adds the next 64
+// bytes, so the lanes stay congruent, modulo P, to the message. At the end the lanes fold into
+// one, whose 16 bytes the crc32 instruction reduces. It reads memory as fast as it comes, where
+// the crc32 chains are bound by the instruction (a third of memcpy's speed on AMD cores).
+//
+// The constants, in the bit-reflected order of the crc32 instruction: x^n mod P (P the
+// CRC-32C polynomial with its x^32 term), coefficient e at bit 63 - e. A carry-less product of
+// two reflected 64-bit values comes out one bit short of the 128-bit lane's order, hence the
+// exponents one below the distance: the low half, 64 bits further from the end, by x^(D+63);
+// the high half by x^(D-1).
+constexpr std::uint64_t x_power_mod_p(unsigned n) {
+  std::uint64_t r = 1;
+  for (unsigned i = 0; i < n; ++i) {
+    r <<= 1;
+    if ((r >> 32) != 0) r ^= 0x11EDC6F41u;
+  }
+  return r;
+}
+constexpr std::uint64_t reflected(std::uint64_t polynomial) {
+  std::uint64_t out = 0;
+  for (int e = 0; e < 32; ++e) {
+    if (((polynomial >> e) & 1u) != 0) out |= std::uint64_t{1} << (63 - e);
+  }
+  return out;
+}
+constexpr std::uint64_t kFold512Low = reflected(x_power_mod_p(512 + 63));
+constexpr std::uint64_t kFold512High = reflected(x_power_mod_p(512 - 1));
+constexpr std::uint64_t kFold128Low = reflected(x_power_mod_p(128 + 63));
+constexpr std::uint64_t kFold128High = reflected(x_power_mod_p(128 - 1));
+// Below this many bytes the crc32 chains are as fast.
+constexpr std::size_t kFoldingMinimum = 512;
+
+__attribute__((target("sse4.2,pclmul"))) inline __m128i fold(__m128i lane, __m128i constants,
+                                                             __m128i next) {
+  const __m128i low = _mm_clmulepi64_si128(lane, constants, 0x00);
+  const __m128i high = _mm_clmulepi64_si128(lane, constants, 0x11);
+  return _mm_xor_si128(_mm_xor_si128(low, high), next);
+}
+
+// Folds whole 64-byte blocks of `p` (at least two), copying them to `d` when kCopy, and
+// advances both past them; `state` is the raw register (not inverted), as is the result.
+template <bool kCopy>
+__attribute__((target("sse4.2,pclmul"))) std::uint32_t fold_blocks(std::uint32_t state,
+                                                                   std::uint8_t*& d,
+                                                                   const std::uint8_t*& p,
+                                                                   std::size_t& size) {
+  const auto load = [&p](int lane) {
+    return _mm_loadu_si128(reinterpret_cast<const __m128i*>(p) + lane);
+  };
+  const auto store = [&d](int lane, __m128i value) {
+    if (kCopy) _mm_storeu_si128(reinterpret_cast<__m128i*>(d) + lane, value);
+  };
+  __m128i a0 = load(0), a1 = load(1), a2 = load(2), a3 = load(3);
+  store(0, a0), store(1, a1), store(2, a2), store(3, a3);
+  // The register so far enters as the message's first 32 bits.
+  a0 = _mm_xor_si128(a0, _mm_cvtsi32_si128(static_cast<int>(state)));
+  p += 64, d += kCopy ? 64 : 0, size -= 64;
+  const __m128i by512 =
+      _mm_set_epi64x(static_cast<long long>(kFold512High), static_cast<long long>(kFold512Low));
+  while (size >= 64) {
+    const __m128i b0 = load(0), b1 = load(1), b2 = load(2), b3 = load(3);
+    store(0, b0), store(1, b1), store(2, b2), store(3, b3);
+    a0 = fold(a0, by512, b0);
+    a1 = fold(a1, by512, b1);
+    a2 = fold(a2, by512, b2);
+    a3 = fold(a3, by512, b3);
+    p += 64, d += kCopy ? 64 : 0, size -= 64;
+  }
+  const __m128i by128 =
+      _mm_set_epi64x(static_cast<long long>(kFold128High), static_cast<long long>(kFold128Low));
+  a3 = fold(fold(fold(a0, by128, a1), by128, a2), by128, a3);
+  std::uint64_t c = _mm_crc32_u64(0, static_cast<std::uint64_t>(_mm_cvtsi128_si64(a3)));
+  c = _mm_crc32_u64(c, static_cast<std::uint64_t>(_mm_extract_epi64(a3, 1)));
+  return static_cast<std::uint32_t>(c);
+}
+
 // crc32c_extend_hardware, and with kCopy crc32c_copy_hardware: the bytes of `p` copied to `d`.
 template <bool kCopy>
 __attribute__((target("sse4.2"))) std::uint32_t extend_hardware(std::uint32_t crc, std::uint8_t* d,
                                                                 const std::uint8_t* p,
                                                                 std::size_t size) {
   std::uint32_t c = ~crc;
+  // Copying: folding (measured on an AMD EPYC: 256 MiB in 33 ms, against 42 ms by the chains
+  // and 20 ms for memcpy). Reading only, the chains over long blocks are faster there (19 ms
+  // against 25 ms).
+  if (kCopy && size >= kFoldingMinimum && carryless_multiply_available()) {
+    c = fold_blocks<kCopy>(c, d, p, size);
+  }
   if (size >= 3 * kShortBlock) {
     while (!kCopy && size >= 3 * kLongBlock) {
       c = three_chains<kCopy>(c, d, p, kLongBlock, kLongBlockShift);
