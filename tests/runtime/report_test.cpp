@@ -18,10 +18,10 @@ TEST(EngineStatus, FormatsAndTruncatesSafely) {
   EXPECT_STREQ(error.message(), "bad field at 42");
   const std::string long_text(1000, 'x');
   symcr::Status truncated(symcr::Error::Io, "%s", long_text.c_str());
-  // Cut at 319 characters, and says so.
-  EXPECT_EQ(std::string(truncated.message()), long_text.substr(0, 316) + "...");
+  // Cut at 239 characters, and says so.
+  EXPECT_EQ(std::string(truncated.message()), long_text.substr(0, 236) + "...");
   // A message that just fits is not marked.
-  const std::string fits(319, 'y');
+  const std::string fits(239, 'y');
   EXPECT_EQ(std::string(symcr::Status(symcr::Error::Io, "%s", fits.c_str()).message()), fits);
 }
 

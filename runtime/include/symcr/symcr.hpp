@@ -88,7 +88,7 @@ const char* error_name(Error error);
 class Status {
  public:
   // A message longer than this, less one, is cut and ends in "...".
-  static constexpr std::size_t kMessageCapacity = 320;
+  static constexpr std::size_t kMessageCapacity = 240;
   Status() = default;
   Status(Error error, const char* format, ...) __attribute__((format(printf, 3, 4)));
   bool ok() const { return error_ == Error::None; }
