@@ -295,7 +295,7 @@ struct StoreOptions {
   // write the store cannot (another owner, another partition): with both, an attacker can
   // copy an old store and its old counter back together. open() refuses (Unsupported) a
   // counter_path naming the store file itself, or an existing entry that is not a regular
-  // file; an empty counter_path means the default.
+  // file, and (Io) one whose folder does not exist; an empty counter_path means the default.
   FreshnessCounter* freshness_counter = nullptr;
   const char* counter_path = nullptr;
 };
