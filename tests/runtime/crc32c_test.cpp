@@ -183,4 +183,30 @@ TEST(Crc32c, CopyingChecksumsExactlyTheBytesCopied) {
   }
 }
 
+// A copy of 16 MiB or more bypasses the caches, its destination first aligned to 16 bytes by
+// single bytes: every misalignment of the destination, an odd length, and nothing written
+// around it.
+TEST(Crc32c, LargeCopiesBypassingTheCachesChecksumExactlyTheBytesCopied) {
+  constexpr std::size_t kSize = (std::size_t{16} << 20) + 77;
+  std::mt19937 random(77);
+  std::vector<std::uint8_t> source(kSize + 16);
+  for (auto& byte : source) byte = static_cast<std::uint8_t>(random());
+  constexpr std::uint8_t kGuard = 0x5A;
+  std::vector<std::uint8_t> destination(kSize + 64);
+  for (std::size_t to : {std::size_t{0}, std::size_t{1}, std::size_t{9}, std::size_t{15}}) {
+    const std::size_t from = 3;
+    const std::uint32_t seed = static_cast<std::uint32_t>(random());
+    const std::uint32_t expected = crc32c_extend_portable(seed, source.data() + from, kSize);
+    std::fill(destination.begin(), destination.end(), kGuard);
+    // The vector's data is 16-byte aligned, so `to` is the destination's misalignment.
+    std::uint8_t* into = destination.data() + 16 + to;
+    ASSERT_EQ(crc32c_copy(seed, into, source.data() + from, kSize), expected) << "to " << to;
+    ASSERT_EQ(std::memcmp(into, source.data() + from, kSize), 0) << "to " << to;
+    for (std::size_t i = 0; i < 16 + to; ++i) ASSERT_EQ(destination[i], kGuard) << i;
+    for (std::size_t i = 16 + to + kSize; i < destination.size(); ++i) {
+      ASSERT_EQ(destination[i], kGuard) << i;
+    }
+  }
+}
+
 }  // namespace
