@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include "authentication.hpp"
 #include "file_io.hpp"
 #include "header_fields.hpp"
 #include "parsed_schema.hpp"
@@ -209,6 +210,16 @@ Status read_key_ring(const std::string& path, std::vector<KeyFile>& keys) {
     keys.push_back({static_cast<std::uint32_t>(value), key_path});
   }
   return Status();
+}
+
+Status check_authentic(const LoadedCheckpoint& checkpoint) {
+  const detail::KeySnapshot keys = detail::current_keys();
+  const std::uint8_t* record = checkpoint.bytes.data();
+  return checkpoint.from_store
+             ? detail::check_authentication(
+                   keys.get(), record, checkpoint.record,
+                   checkpoint.store->binding(checkpoint.slot, checkpoint.area))
+             : detail::check_standalone_authentication(keys.get(), record, checkpoint.record);
 }
 
 std::string describe_checkpoint(const LoadedCheckpoint& c) {

@@ -67,6 +67,10 @@ Status read_key_ring(const std::string& path, std::vector<KeyFile>& keys);
 Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slot,
                        LoadedCheckpoint& out, const std::string& writer_schema = "");
 
+// With keys set (use_key_files), OK only for a checkpoint a restore would accept as
+// authentic: it carries a MAC that verifies with one of them, bound to its store slot (or as a
+// standalone checkpoint). A restore checks this before anything else. Without keys, OK.
+Status check_authentic(const LoadedCheckpoint& checkpoint);
 // "<path> [slot N] (sequence S, <time>, schema <hash>)", for a command's heading.
 std::string describe_checkpoint(const LoadedCheckpoint& checkpoint);
 

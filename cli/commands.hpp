@@ -61,6 +61,7 @@ struct ConvertArgs {
   bool accept_other_program = false;
   bool inline_schema = false;  // else the record names its schema by hash only
   std::string writer_schema;   // for a record that names its schema by hash only
+  std::vector<KeyFile> keys;   // the program's keys (none: MACs are not checked)
 };
 int run_convert(const ConvertArgs& args);
 

@@ -113,8 +113,29 @@ Status refuse_migrations(const Schema& build) {
 }  // namespace
 
 int run_convert(const ConvertArgs& args) {
+  const Status keys = use_key_files(args.keys);
+  if (!keys.ok()) {
+    print_error(keys.message());
+    return kExitError;
+  }
   LoadedCheckpoint checkpoint;
   Status status = load_checkpoint(args.checkpoint, args.slot, checkpoint, args.writer_schema);
+  if (!status.ok() && checkpoint.restores_nothing) {
+    // The program's next start would restore nothing (its journal or keys exclude every
+    // checkpoint, or the store is rolled back): a restore that fails, not an unreadable file.
+    print_error(status.message() + std::string("; nothing written"));
+    return kExitFinding;
+  }
+  // With keys, only a checkpoint the old build's restore would accept as authentic converts:
+  // the converted record carries no MAC (the device profile verifies none), so this is where
+  // its authenticity is checked.
+  if (status.ok()) {
+    const Status refused = check_authentic(checkpoint);
+    if (!refused.ok()) {
+      print_error(refused.message() + std::string("; nothing written"));
+      return kExitFinding;
+    }
+  }
   detail::ParsedSchema build;
   std::uint32_t build_program_id = 0;
   if (status.ok()) {

@@ -62,25 +62,25 @@ cl::list<std::string> key_files(
              "rotation); a checkpoint without a MAC, or whose MAC verifies with none of them, "
              "is one the program refuses"),
     cl::value_desc("file"), cl::sub(inspect_command), cl::sub(verify_command),
-    cl::sub(plan_command), cl::cat(symcr_category));
+    cl::sub(plan_command), cl::sub(convert_command), cl::cat(symcr_category));
 cl::list<unsigned> key_ids(
     "key-id",
     cl::desc("The id of a --key-file key: the first --key-id is the first --key-file's, and so "
              "on (default 0 for a single key)"),
     cl::value_desc("N"), cl::sub(inspect_command), cl::sub(verify_command), cl::sub(plan_command),
-    cl::cat(symcr_category));
+    cl::sub(convert_command), cl::cat(symcr_category));
 cl::opt<std::string> key_ring(
     "key-ring",
     cl::desc("A file naming the program's keys, one a line: \"<id> <key file>\" (relative key "
              "files are taken from the ring's directory); with --key-file, both count"),
     cl::value_desc("file"), cl::sub(inspect_command), cl::sub(verify_command),
-    cl::sub(plan_command), cl::cat(symcr_category));
+    cl::sub(plan_command), cl::sub(convert_command), cl::cat(symcr_category));
 cl::opt<std::string> counter_file(
     "counter",
     cl::desc("With keys: the store's freshness counter file (default: the store's path with "
              ".fresh appended, when it exists); a store older than it is reported rolled back"),
     cl::value_desc("file"), cl::sub(inspect_command), cl::sub(verify_command),
-    cl::sub(plan_command), cl::cat(symcr_category));
+    cl::sub(plan_command), cl::sub(convert_command), cl::cat(symcr_category));
 cl::opt<std::string> diff_a(cl::Positional, cl::Required, cl::desc("<checkpoint a>"),
                             cl::sub(diff_command), cl::cat(symcr_category));
 cl::opt<std::string> diff_b(cl::Positional, cl::Required, cl::desc("<checkpoint b>"),
@@ -194,7 +194,7 @@ int run_subcommand() {
   if (convert_command) {
     return symcr::cli::run_convert({convert_checkpoint, given(slot), plan_schema, convert_output,
                                     convert_initial, plan_strict, plan_accept_other_program,
-                                    convert_inline_schema, writer_schema});
+                                    convert_inline_schema, writer_schema, keys});
   }
   llvm::errs() << "symcr: a subcommand is needed: inspect, verify, diff, plan or convert (see "
                   "'symcr --help')\n";

@@ -62,14 +62,7 @@ void plan_one(const PlanArgs& args, const Build& build, PlannedCheckpoint& out) 
   if (!out.loaded.ok()) return;
   const detail::RecordHeader& header = out.checkpoint.record.header;
   // With keys, a restore refuses a checkpoint whose MAC does not verify, before anything else.
-  const detail::KeySnapshot keys = detail::current_keys();
-  const std::uint8_t* record = out.checkpoint.bytes.data();
-  Status refused =
-      out.checkpoint.from_store
-          ? detail::check_authentication(
-                keys.get(), record, out.checkpoint.record,
-                out.checkpoint.store->binding(out.checkpoint.slot, out.checkpoint.area))
-          : detail::check_standalone_authentication(keys.get(), record, out.checkpoint.record);
+  Status refused = check_authentic(out.checkpoint);
   if (refused.ok()) {
     refused = detail::check_program(header.program_id, build.program_id,
                                     "the build of the schema file", args.accept_other_program);

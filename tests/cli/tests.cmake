@@ -13,7 +13,8 @@ symcr_cli_test(inspect_help EXIT 0 ARGS inspect --help EXPECT "--json" "--slot" 
                REJECT "--schema" "--strict")
 symcr_cli_test(plan_help EXIT 0 ARGS plan --help EXPECT "--schema" "--strict" "--json" "--key-file")
 symcr_cli_test(convert_help EXIT 0 ARGS convert --help
-               EXPECT "--schema" "--initial" "--writer-schema" "--inline-schema" "--strict")
+               EXPECT "--schema" "--initial" "--writer-schema" "--inline-schema" "--strict"
+                      "--key-file" "--key-ring" "--counter")
 
 # ---- inspect --------------------------------------------------------------------------------
 symcr_cli_test(inspect_checkpoint EXIT 0 ARGS inspect ${files}/v0.ckpt
@@ -177,6 +178,25 @@ symcr_cli_test(convert_corrupt EXIT 2
                EXPECT "checksum")
 symcr_cli_test(convert_needs_output EXIT 2 ARGS convert ${files}/v0.ckpt --schema ${files}/v1.schema
                EXPECT "-o")
+# With the program's keys, only a checkpoint its restore accepts as authentic converts (checked
+# first: the signed fixture then meets the host-kind refusal above).
+symcr_cli_test(convert_signed_with_key EXIT 2
+               ARGS convert ${files}/signed.ckpt --schema ${files}/v1.schema
+                    -o ${files}/converted-signed.ckpt --key-file ${files}/fixture.key --key-id 7
+               EXPECT "type 'std::string' needs the build's own code"
+               REJECT "MAC")
+symcr_cli_test(convert_signed_other_key EXIT 1
+               ARGS convert ${files}/signed.ckpt --schema ${files}/v1.schema
+                    -o ${files}/converted-signed.ckpt --key-file ${files}/other.key --key-id 7
+               EXPECT "MAC does not verify.*nothing written")
+symcr_cli_test(convert_unsigned_with_key EXIT 1
+               ARGS convert ${files}/v0.ckpt --schema ${files}/v1.schema
+                    -o ${files}/converted-signed.ckpt --key-ring ${files}/keys.ring
+               EXPECT "carries no MAC.*nothing written")
+symcr_cli_test(convert_rolled_back_store EXIT 1
+               ARGS convert ${files}/rolled-back.store --schema ${files}/v0.schema
+                    -o ${files}/converted-signed.ckpt --key-ring ${files}/keys.ring
+               EXPECT "RolledBack|rolled back.*nothing written")
 
 # ---- plan -----------------------------------------------------------------------------------
 symcr_cli_test(plan_same_build EXIT 0 ARGS plan ${files}/v0.ckpt --schema ${files}/v0.schema
