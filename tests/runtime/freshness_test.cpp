@@ -407,6 +407,30 @@ TEST_F(FreshnessTest, AMissingForgedOrForeignCounterRestoresNothing) {
   expect_a(2);
 }
 
+// A counter that exists but cannot be read is a fault to repair, not evidence of an attack:
+// Io, naming the file (a missing or untrustworthy one is RolledBack, above). Nothing is
+// restored either way, and once the counter reads again the newest checkpoint restores.
+TEST_F(FreshnessTest, ACounterThatCannotBeReadIsAnIoErrorAndRestoresNothing) {
+  save_seeds(1, 2);
+  const std::string counter = path + ".fresh";
+  const std::vector<std::uint8_t> genuine = read_file(counter);
+  symcr::Store store;
+  ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, options, store).ok());
+  // Replaced by a directory after the store opened: it opens, and reading it fails (EISDIR).
+  ASSERT_EQ(::unlink(counter.c_str()), 0);
+  ASSERT_EQ(::mkdir(counter.c_str(), 0700), 0);
+  scramble_a();
+  symcr::Report report = store.restore_latest();
+  expect_error(report, symcr::Error::Io, counter.c_str());
+  expect_untouched();
+
+  ASSERT_EQ(::rmdir(counter.c_str()), 0);
+  write_file(counter, genuine);
+  report = store.restore_latest();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  expect_a(2);
+}
+
 TEST_F(FreshnessTest, ACounterPathAwayFromTheStoreIsUsed) {
   const std::string elsewhere = dir.file("counter-elsewhere");
   options.counter_path = elsewhere.c_str();
