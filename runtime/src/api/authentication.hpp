@@ -14,6 +14,7 @@
 
 #include "record.hpp"
 #include "symcr/format/sha256.hpp"
+#include "symcr/format/store.hpp"
 #include "symcr/symcr.hpp"
 
 namespace symcr::detail {
@@ -35,7 +36,7 @@ struct KeyRing {
 using KeySnapshot = std::shared_ptr<const KeyRing>;
 KeySnapshot current_keys();
 
-inline constexpr std::size_t kStoreIdSize = 16;
+inline constexpr std::size_t kStoreIdSize = format::kStoreIdSize;
 inline constexpr std::uint64_t kNoLocation = UINT64_MAX;
 
 // Where a record lives and what its payload means, bound into its MAC: a record moved to

@@ -18,12 +18,14 @@
 namespace symcr::detail {
 namespace {
 
-constexpr std::uint8_t kStoreIdMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'S', 'I', 'D'};
-constexpr std::uint8_t kCounterMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'C', 'T', 'R'};
+using format::kCounterMagic;
+using format::kStoreIdMagic;
 constexpr char kCounterDomain[] = "symcr freshness counter";
-constexpr std::uint64_t kCounterCopies[2] = {0, 128};
-constexpr std::size_t kCounterSigned = 40;  // magic, key id, reserved, value, store id
-constexpr std::size_t kCounterCopySize = kCounterSigned + format::kSha256Size;
+constexpr std::uint64_t kCounterCopies[2] = {format::kCounterFirstCopyOffset,
+                                             format::kCounterSecondCopyOffset};
+constexpr std::size_t kCounterSigned = format::kCounterMacOffset;  // what precedes the MAC
+constexpr std::size_t kCounterCopySize = format::kCounterCopySize;
+static_assert(kCounterSigned + format::kSha256Size == kCounterCopySize, "an HMAC-SHA-256 ends it");
 
 bool fill_random(std::uint8_t* out, std::size_t size) {
   std::size_t got = 0;
@@ -46,10 +48,10 @@ bool fill_random(std::uint8_t* out, std::size_t size) {
 void encode_counter_copy(std::uint64_t value, const std::uint8_t* store_id, const OwnedKey& key,
                          std::uint8_t* out) {
   std::memcpy(out, kCounterMagic, sizeof kCounterMagic);
-  format::store32(out + 8, key.id);
-  format::store32(out + 12, 0);
-  format::store64(out + 16, value);
-  std::memcpy(out + 24, store_id, kStoreIdSize);
+  format::store32(out + format::kCounterKeyIdOffset, key.id);
+  format::store32(out + format::kCounterReservedOffset, 0);
+  format::store64(out + format::kCounterValueOffset, value);
+  std::memcpy(out + format::kCounterStoreIdOffset, store_id, kStoreIdSize);
   std::uint8_t mac[format::kSha256Size];
   store_item_mac(key, kCounterDomain, store_id, out, kCounterSigned, mac);
   std::memcpy(out + kCounterSigned, mac, sizeof mac);
@@ -74,8 +76,8 @@ void encode_store_id(const std::uint8_t (&id)[kStoreIdSize], std::uint8_t* out) 
   for (const std::uint64_t at : {kStoreIdOffset, kStoreIdSecondCopy}) {
     std::uint8_t* copy = out + (at - kStoreIdOffset);
     std::memcpy(copy, kStoreIdMagic, sizeof kStoreIdMagic);
-    std::memcpy(copy + 8, id, kStoreIdSize);
-    format::store32(copy + 8 + kStoreIdSize, crc32c(copy, 8 + kStoreIdSize));
+    std::memcpy(copy + sizeof kStoreIdMagic, id, kStoreIdSize);
+    format::store32(copy + format::kStoreIdCrcOffset, crc32c(copy, format::kStoreIdCrcOffset));
   }
 }
 
@@ -87,10 +89,11 @@ bool read_store_id(const std::uint8_t* page, std::size_t size, std::uint8_t (&id
     if (size < at + kStoreIdCopySize) continue;
     const std::uint8_t* copy = page + at;
     if (std::memcmp(copy, kStoreIdMagic, sizeof kStoreIdMagic) != 0 ||
-        format::load32(copy + 8 + kStoreIdSize) != crc32c(copy, 8 + kStoreIdSize)) {
+        format::load32(copy + format::kStoreIdCrcOffset) !=
+            crc32c(copy, format::kStoreIdCrcOffset)) {
       continue;
     }
-    std::memcpy(id, copy + 8, kStoreIdSize);
+    std::memcpy(id, copy + sizeof kStoreIdMagic, kStoreIdSize);
     ++holding;
   }
   if (both != nullptr) *both = holding == 2;
@@ -128,25 +131,26 @@ Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
     if (at + kCounterCopySize > size) continue;
     const std::uint8_t* copy = bytes + at;
     if (std::memcmp(copy, kCounterMagic, sizeof kCounterMagic) != 0) continue;
-    const OwnedKey* key = keys.find(format::load32(copy + 8));
+    const OwnedKey* key = keys.find(format::load32(copy + format::kCounterKeyIdOffset));
     if (key == nullptr) {
       why = Status(Error::RolledBack,
                    "it is signed with key id %u, which this program does not "
                    "hold",
-                   format::load32(copy + 8));
+                   format::load32(copy + format::kCounterKeyIdOffset));
       continue;
     }
     std::uint8_t mac[format::kSha256Size];
-    store_item_mac(*key, kCounterDomain, copy + 24, copy, kCounterSigned, mac);
+    store_item_mac(*key, kCounterDomain, copy + format::kCounterStoreIdOffset, copy,
+                   kCounterSigned, mac);
     if (!format::equal_macs(mac, copy + kCounterSigned, format::kSha256Size)) {
       why = Status(Error::RolledBack, "its MAC does not verify: it was forged or damaged");
       continue;
     }
-    if (std::memcmp(copy + 24, store_id, kStoreIdSize) != 0) {
+    if (std::memcmp(copy + format::kCounterStoreIdOffset, store_id, kStoreIdSize) != 0) {
       why = Status(Error::RolledBack, "it is the counter of another store");
       continue;
     }
-    const std::uint64_t copy_value = format::load64(copy + 16);
+    const std::uint64_t copy_value = format::load64(copy + format::kCounterValueOffset);
     if (copy_value > format::kMaxRecordSequence) {
       why = Status(Error::RolledBack, "its value is beyond the sequence range");
       continue;

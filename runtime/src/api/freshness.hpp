@@ -18,10 +18,11 @@ namespace symcr::detail {
 
 // The store's identity: 16 random bytes drawn when the store is created (or first opened for
 // writing by a build that knows of it), kept in the header page after the journal copies, in
-// two copies (magic, id, CRC each), so that one damaged byte does not cost every checkpoint.
-inline constexpr std::uint64_t kStoreIdOffset = 400;
-inline constexpr std::size_t kStoreIdCopySize = 8 + kStoreIdSize + 4;
-inline constexpr std::uint64_t kStoreIdSecondCopy = 432;
+// two copies (magic, id, CRC each: the format core's layout), so that one damaged byte does
+// not cost every checkpoint.
+inline constexpr std::uint64_t kStoreIdOffset = format::kStoreIdFirstCopyOffset;
+inline constexpr std::size_t kStoreIdCopySize = format::kStoreIdCopySize;
+inline constexpr std::uint64_t kStoreIdSecondCopy = format::kStoreIdSecondCopyOffset;
 inline constexpr std::size_t kStoreIdBlockSize =
     kStoreIdSecondCopy + kStoreIdCopySize - kStoreIdOffset;
 inline constexpr std::size_t kStoreHeaderPageRead = kStoreIdOffset + kStoreIdBlockSize;
@@ -87,7 +88,7 @@ class FileFreshnessCounter final : public FreshnessCounter {
 // the copies that verify. Corrupt or Unauthenticated, saying why, when none does.
 Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
                            const std::uint8_t* store_id, const KeyRing& keys, std::uint64_t& value);
-inline constexpr std::size_t kCounterFileSize = 256;
+inline constexpr std::size_t kCounterFileSize = format::kCounterFileSize;
 
 }  // namespace symcr::detail
 

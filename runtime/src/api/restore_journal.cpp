@@ -12,16 +12,16 @@
 namespace symcr::detail {
 namespace {
 
-constexpr std::uint8_t kJournalMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'J', 'N', '2'};
-constexpr std::size_t kChecked = kRestoreJournalSize - 4;  // the CRC covers what precedes it
-constexpr std::uint8_t kLegacyMagic[8] = {'S', 'Y', 'M', 'C', 'R', 'J', 'N', 'L'};
-constexpr std::size_t kLegacyChecked = kLegacyRestoreJournalSize - 4;
+using format::kJournalMagic;
+using format::kLegacyJournalMagic;
+constexpr std::size_t kChecked = format::kJournalCrcOffset;  // the CRC covers what precedes it
+constexpr std::size_t kLegacyChecked = format::kLegacyJournalCrcOffset;
 
-// The seal: u32 key id, u32 1 (sealed), u64 freshness, u64 newest, the first 24 bytes of the
-// HMAC-SHA-256 of the journal and those fields (192 bits; truncated to fit between the copies).
+// The seal's MAC (format::kJournalSeal*): the first 24 bytes of the HMAC-SHA-256 of the journal
+// and the seal's fields before it (192 bits; truncated to fit between the copies).
 constexpr char kSealDomain[] = "symcr restore journal";
-constexpr std::size_t kSealSigned = kRestoreJournalSize + 24;
-constexpr std::size_t kSealMacSize = kRestoreJournalSealSize - 24;
+constexpr std::size_t kSealSigned = format::kJournalSize + format::kJournalSealMacOffset;
+constexpr std::size_t kSealMacSize = format::kJournalSealSize - format::kJournalSealMacOffset;
 
 bool ranges_hold(const RestoreJournal& journal) {
   return journal.suspect_low <= journal.suspect_high &&
@@ -33,24 +33,25 @@ bool ranges_hold(const RestoreJournal& journal) {
 bool seal_holds(const std::uint8_t* data, const JournalSeal& seal, std::uint64_t& freshness,
                 std::uint64_t& newest, std::string& why) {
   const std::uint8_t* s = data + kRestoreJournalSize;
-  if (format::load32(s + 4) != 1) {
+  if (format::load32(s + format::kJournalSealSealedOffset) != 1) {
     why = "it carries no MAC (written without keys)";
     return false;
   }
-  const OwnedKey* key = seal.keys->find(format::load32(s));
+  const OwnedKey* key = seal.keys->find(format::load32(s + format::kJournalSealKeyIdOffset));
   if (key == nullptr) {
-    why = "its MAC is made with key id " + std::to_string(format::load32(s)) +
+    why = "its MAC is made with key id " +
+          std::to_string(format::load32(s + format::kJournalSealKeyIdOffset)) +
           ", which this program does not hold";
     return false;
   }
   std::uint8_t mac[format::kSha256Size];
   store_item_mac(*key, kSealDomain, seal.store_id, data, kSealSigned, mac);
-  if (!format::equal_macs(mac, s + 24, kSealMacSize)) {
+  if (!format::equal_macs(mac, s + format::kJournalSealMacOffset, kSealMacSize)) {
     why = "its MAC does not verify (forged, or another store's)";
     return false;
   }
-  freshness = format::load64(s + 8);
-  newest = format::load64(s + 16);
+  freshness = format::load64(s + format::kJournalSealFreshnessOffset);
+  newest = format::load64(s + format::kJournalSealNewestOffset);
   if (freshness > format::kMaxRecordSequence || newest > format::kMaxRecordSequence) {
     why = "its freshness value is beyond the sequence range";
     return false;
@@ -65,31 +66,31 @@ bool decode_copy(const std::uint8_t* data, RestoreJournal& out) {
     return false;
   }
   RestoreJournal journal;
-  journal.generation = format::load64(data + 8);
-  journal.unconfirmed = format::load64(data + 16);
-  journal.suspect_low = format::load64(data + 24);
-  journal.suspect_high = format::load64(data + 32);
-  journal.given_up_through = format::load64(data + 40);
-  journal.crashed_low = format::load64(data + 48);
-  journal.crashed_high = format::load64(data + 56);
-  journal.fallbacks = format::load32(data + 64);
-  journal.depth = format::load32(data + 68);
+  journal.generation = format::load64(data + format::kJournalGenerationOffset);
+  journal.unconfirmed = format::load64(data + format::kJournalUnconfirmedOffset);
+  journal.suspect_low = format::load64(data + format::kJournalSuspectLowOffset);
+  journal.suspect_high = format::load64(data + format::kJournalSuspectHighOffset);
+  journal.given_up_through = format::load64(data + format::kJournalGivenUpThroughOffset);
+  journal.crashed_low = format::load64(data + format::kJournalCrashedLowOffset);
+  journal.crashed_high = format::load64(data + format::kJournalCrashedHighOffset);
+  journal.fallbacks = format::load32(data + format::kJournalFallbacksOffset);
+  journal.depth = format::load32(data + format::kJournalDepthOffset);
   if (!ranges_hold(journal)) return false;  // not ours to trust
   out = journal;
   return true;
 }
 
 bool decode_legacy(const std::uint8_t* data, RestoreJournal& out) {
-  if (std::memcmp(data, kLegacyMagic, sizeof kLegacyMagic) != 0 ||
+  if (std::memcmp(data, kLegacyJournalMagic, sizeof kLegacyJournalMagic) != 0 ||
       format::load32(data + kLegacyChecked) != crc32c(data, kLegacyChecked)) {
     return false;
   }
   RestoreJournal journal;
-  journal.unconfirmed = format::load64(data + 8);
-  journal.suspect_low = format::load64(data + 16);
-  journal.suspect_high = format::load64(data + 24);
-  journal.given_up_through = format::load64(data + 32);
-  journal.fallbacks = format::load32(data + 40);
+  journal.unconfirmed = format::load64(data + format::kLegacyJournalUnconfirmedOffset);
+  journal.suspect_low = format::load64(data + format::kLegacyJournalSuspectLowOffset);
+  journal.suspect_high = format::load64(data + format::kLegacyJournalSuspectHighOffset);
+  journal.given_up_through = format::load64(data + format::kLegacyJournalGivenUpThroughOffset);
+  journal.fallbacks = format::load32(data + format::kLegacyJournalFallbacksOffset);
   if (!ranges_hold(journal)) return false;
   out = journal;
   return true;
@@ -176,27 +177,27 @@ void RestoreJournal::confirm() {
 void encode_restore_journal(const RestoreJournal& journal, std::uint8_t* out,
                             const JournalSeal* seal) {
   std::memcpy(out, kJournalMagic, sizeof kJournalMagic);
-  format::store64(out + 8, journal.generation);
-  format::store64(out + 16, journal.unconfirmed);
-  format::store64(out + 24, journal.suspect_low);
-  format::store64(out + 32, journal.suspect_high);
-  format::store64(out + 40, journal.given_up_through);
-  format::store64(out + 48, journal.crashed_low);
-  format::store64(out + 56, journal.crashed_high);
-  format::store32(out + 64, journal.fallbacks);
-  format::store32(out + 68, journal.depth);
+  format::store64(out + format::kJournalGenerationOffset, journal.generation);
+  format::store64(out + format::kJournalUnconfirmedOffset, journal.unconfirmed);
+  format::store64(out + format::kJournalSuspectLowOffset, journal.suspect_low);
+  format::store64(out + format::kJournalSuspectHighOffset, journal.suspect_high);
+  format::store64(out + format::kJournalGivenUpThroughOffset, journal.given_up_through);
+  format::store64(out + format::kJournalCrashedLowOffset, journal.crashed_low);
+  format::store64(out + format::kJournalCrashedHighOffset, journal.crashed_high);
+  format::store32(out + format::kJournalFallbacksOffset, journal.fallbacks);
+  format::store32(out + format::kJournalDepthOffset, journal.depth);
   format::store32(out + kChecked, crc32c(out, kChecked));
   std::uint8_t* s = out + kRestoreJournalSize;
   std::memset(s, 0, kRestoreJournalSealSize);
   if (seal == nullptr || seal->keys == nullptr) return;
   const OwnedKey& key = seal->keys->signing();
-  format::store32(s, key.id);
-  format::store32(s + 4, 1);
-  format::store64(s + 8, journal.freshness);
-  format::store64(s + 16, journal.newest);
+  format::store32(s + format::kJournalSealKeyIdOffset, key.id);
+  format::store32(s + format::kJournalSealSealedOffset, 1);
+  format::store64(s + format::kJournalSealFreshnessOffset, journal.freshness);
+  format::store64(s + format::kJournalSealNewestOffset, journal.newest);
   std::uint8_t mac[format::kSha256Size];
   store_item_mac(key, kSealDomain, seal->store_id, out, kSealSigned, mac);
-  std::memcpy(s + 24, mac, kSealMacSize);
+  std::memcpy(s + format::kJournalSealMacOffset, mac, kSealMacSize);
 }
 
 RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size,

@@ -13,24 +13,25 @@
 #include <cstdint>
 #include <string>
 
+#include "symcr/format/store.hpp"
+
 namespace symcr::detail {
 
 struct KeyRing;
 
 // The two copies, in the store's header page (its first sector), written together. Each is
-// the journal (kRestoreJournalSize bytes, its own CRC) and its seal: with keys set, a MAC
-// binding it to the store and carrying its freshness value (zero without keys).
-inline constexpr std::uint64_t kRestoreJournalOffsets[2] = {128, 256};
-inline constexpr std::size_t kRestoreJournalSize = 76;
-inline constexpr std::size_t kRestoreJournalSealSize = 48;
-inline constexpr std::size_t kRestoreJournalCopySize =
-    kRestoreJournalSize + kRestoreJournalSealSize;
+// the journal (its own CRC) and its seal: with keys set, a MAC binding it to the store and
+// carrying its freshness value (zero without keys). The layout is the format core's.
+inline constexpr std::uint64_t kRestoreJournalOffsets[2] = {format::kJournalFirstCopyOffset,
+                                                            format::kJournalSecondCopyOffset};
+inline constexpr std::size_t kRestoreJournalSize = format::kJournalSize;
+inline constexpr std::size_t kRestoreJournalSealSize = format::kJournalSealSize;
+inline constexpr std::size_t kRestoreJournalCopySize = format::kJournalCopySize;
 // Where the header page's journal bytes end.
-inline constexpr std::size_t kRestoreJournalEnd = 256 + kRestoreJournalCopySize;
-// The single journal of stores written by earlier versions (48 bytes at 64), read when
-// neither copy holds a journal.
-inline constexpr std::uint64_t kLegacyRestoreJournalOffset = 64;
-inline constexpr std::size_t kLegacyRestoreJournalSize = 48;
+inline constexpr std::size_t kRestoreJournalEnd = format::kJournalEnd;
+// The single journal of stores written by earlier versions, read when neither copy holds one.
+inline constexpr std::uint64_t kLegacyRestoreJournalOffset = format::kLegacyJournalOffset;
+inline constexpr std::size_t kLegacyRestoreJournalSize = format::kLegacyJournalSize;
 
 struct RestoreJournal {
   // Counts the journal's writes: the copy with the higher one is the current journal.
