@@ -140,8 +140,8 @@ Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
       continue;
     }
     std::uint8_t mac[format::kSha256Size];
-    store_item_mac(*key, kCounterDomain, copy + format::kCounterStoreIdOffset, copy,
-                   kCounterSigned, mac);
+    store_item_mac(*key, kCounterDomain, copy + format::kCounterStoreIdOffset, copy, kCounterSigned,
+                   mac);
     if (!format::equal_macs(mac, copy + kCounterSigned, format::kSha256Size)) {
       why = Status(Error::RolledBack, "its MAC does not verify: it was forged or damaged");
       continue;
