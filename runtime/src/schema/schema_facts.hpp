@@ -72,7 +72,10 @@ struct SchemaCacheEntry {
     return blob_crc_;
   }
   // True the first time it is asked: the process's first restore of this schema into itself.
-  bool first_same_build_restore() const { return !restored_.exchange(true); }
+  // Read before it is written: every later restore then costs a load, not an atomic exchange.
+  bool first_same_build_restore() const {
+    return !restored_.load(std::memory_order_relaxed) && !restored_.exchange(true);
+  }
 
  private:
   mutable std::once_flag facts_computed_;
