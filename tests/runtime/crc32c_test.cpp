@@ -16,11 +16,11 @@ using symcr::detail::crc32c_combine;
 using symcr::detail::crc32c_copy;
 using symcr::detail::crc32c_copy_hardware;
 using symcr::detail::crc32c_extend;
-using symcr::detail::crc32c_extend_span;
-using symcr::detail::crc32c_span;
 using symcr::detail::crc32c_extend_hardware;
 using symcr::detail::crc32c_extend_portable;
+using symcr::detail::crc32c_extend_span;
 using symcr::detail::crc32c_hardware_available;
+using symcr::detail::crc32c_span;
 
 struct Vector {
   std::vector<std::uint8_t> bytes;

@@ -169,8 +169,7 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
   // The inline schema's bytes, if they are `known`'s, are compared once; their share of the
   // CRC is then known, and only the header and payload are read for it. The CRC is the same.
   const std::uint64_t schema_end = std::uint64_t{h.header_size} + h.schema_size;
-  const bool known_inline = known_crc != nullptr &&
-                            (h.flags & format::kRecordSchemaInline) != 0 &&
+  const bool known_inline = known_crc != nullptr && (h.flags & format::kRecordSchemaInline) != 0 &&
                             schema_end <= record_size &&
                             is_blob(known, data + h.header_size, h.schema_size, h.schema_hash);
   const std::uint32_t actual =
@@ -269,10 +268,9 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size, con
     plan_blob.size = plan->writer_owner->bytes().size();
     plan_blob.hash = plan->writer_owner->hash();
   }
-  Status status =
-      plan_blob.data
-          ? parse_record(data, size, record, &plan_blob, &plan->writer_crc)
-          : parse_record(data, size, record, &own, &schema_cache_entry(reader).blob_crc());
+  Status status = plan_blob.data ? parse_record(data, size, record, &plan_blob, &plan->writer_crc)
+                                 : parse_record(data, size, record, &own,
+                                                &schema_cache_entry(reader).blob_crc());
   if (status.ok() && record.record_size != size) {
     status = Status(Error::Corrupt, "%zu unexpected bytes after the %zu-byte record",
                     size - record.record_size, record.record_size);

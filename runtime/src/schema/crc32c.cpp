@@ -391,25 +391,25 @@ constexpr std::uint32_t multiply_modulo(std::uint32_t a, std::uint32_t b) {
   return product;
 }
 
+// x^(2^k) for every k that x^(8 n) of a 64-bit n needs (8 n = 2^3 n).
 struct PowerTable {
-  std::uint32_t x_to_2_to[32];  // x^(2^k)
+  std::uint32_t x_to_2_to[3 + 64];
 };
 
 constexpr PowerTable make_power_table() {
   PowerTable t{};
   std::uint32_t p = 1u << 30;  // x^1
   t.x_to_2_to[0] = p;
-  for (int k = 1; k < 32; ++k) t.x_to_2_to[k] = p = multiply_modulo(p, p);
+  for (int k = 1; k < 3 + 64; ++k) t.x_to_2_to[k] = p = multiply_modulo(p, p);
   return t;
 }
 
 constexpr PowerTable kPowers = make_power_table();
 
-// x^(8 n): the powers' cycle divides 2^32 - 1, so the table wraps around.
 std::uint32_t x_to_8n(std::uint64_t n) {
   std::uint32_t p = 1u << 31;  // x^0
   for (unsigned k = 3; n != 0; n >>= 1, ++k) {
-    if (n & 1u) p = multiply_modulo(kPowers.x_to_2_to[k & 31u], p);
+    if (n & 1u) p = multiply_modulo(kPowers.x_to_2_to[k], p);
   }
   return p;
 }
@@ -440,7 +440,8 @@ Crc32cSpan crc32c_span(const void* data, std::size_t size) {
 // their own CRC added.
 std::uint32_t crc32c_extend_span(std::uint32_t crc, const Crc32cSpan& span) {
   std::uint32_t moved = span.crc;
-  for (int nibble = 0; nibble < 8; ++nibble) moved ^= span.shift[nibble][(crc >> (4 * nibble)) & 15u];
+  for (int nibble = 0; nibble < 8; ++nibble)
+    moved ^= span.shift[nibble][(crc >> (4 * nibble)) & 15u];
   return moved;
 }
 
