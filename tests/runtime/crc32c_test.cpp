@@ -18,7 +18,9 @@ using symcr::detail::crc32c_copy_hardware;
 using symcr::detail::crc32c_extend;
 using symcr::detail::crc32c_extend_hardware;
 using symcr::detail::crc32c_extend_portable;
+using symcr::detail::crc32c_extend_span;
 using symcr::detail::crc32c_hardware_available;
+using symcr::detail::crc32c_span;
 
 struct Vector {
   std::vector<std::uint8_t> bytes;
@@ -73,6 +75,24 @@ TEST(Crc32c, CombiningEqualsOneCall) {
     EXPECT_EQ(crc32c_combine(a, b, bytes.size() - split), whole) << split;
   }
   EXPECT_EQ(crc32c_combine(0xE3069283u, 0, 0), 0xE3069283u);  // nothing appended
+}
+
+// A span's share, added to any CRC before it and extended after it, is the CRC of the whole.
+TEST(Crc32c, ExtendingBySpanEqualsReadingTheSpan) {
+  std::mt19937 random(11);
+  std::vector<std::uint8_t> bytes(20000);
+  for (std::uint8_t& b : bytes) b = static_cast<std::uint8_t>(random());
+  for (std::size_t length : {std::size_t{0}, std::size_t{1}, std::size_t{3}, std::size_t{8},
+                             std::size_t{255}, std::size_t{4321}, std::size_t{16384}}) {
+    const std::size_t before = 57, after = 1000;
+    const std::uint8_t* span_bytes = bytes.data() + before;
+    const std::uint32_t whole = crc32c(bytes.data(), before + length + after);
+    const std::uint32_t head = crc32c(bytes.data(), before);
+    const std::uint32_t through = crc32c_extend_span(head, crc32c_span(span_bytes, length));
+    EXPECT_EQ(through, crc32c_extend(head, span_bytes, length)) << length;
+    EXPECT_EQ(crc32c_extend(through, span_bytes + length, after), whole) << length;
+    EXPECT_EQ(crc32c_extend_span(0, crc32c_span(span_bytes, length)), crc32c(span_bytes, length));
+  }
 }
 
 TEST(Crc32c, HardwareAndPortableAgreeAtEveryLengthAndAlignment) {

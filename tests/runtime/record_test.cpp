@@ -177,6 +177,28 @@ TEST(Record, ChecksumMismatchIsDetected) {
   EXPECT_EQ(parse(record).error(), Error::Checksum);
 }
 
+// Given the reader's schema and its share of the CRC, the inline schema's bytes are not read for
+// the checksum: every byte of the record is still covered, with the same verdict as a full read.
+TEST(Record, AKnownInlineSchemasShareOfTheChecksumCoversEveryByte) {
+  const symcr::detail::SchemaBlob& own = symcr::detail::schema_blob(schema_a);
+  const symcr::detail::Crc32cSpan share = symcr::detail::crc32c_span(own.data, own.size);
+  const std::vector<std::uint8_t> intact = encoded_a();
+  symcr::detail::RecordView view;
+  ASSERT_TRUE(
+      symcr::detail::parse_record(intact.data(), intact.size(), view, &own, &share).ok());
+  EXPECT_TRUE(view.schema_is_known);
+  for (std::size_t i = 0; i < intact.size(); ++i) {
+    std::vector<std::uint8_t> record = intact;
+    record[i] ^= 0x04;
+    const symcr::Status full = parse(record);
+    const symcr::Status shared =
+        symcr::detail::parse_record(record.data(), record.size(), view, &own, &share);
+    ASSERT_FALSE(shared.ok()) << "byte " << i;
+    EXPECT_EQ(shared.error(), full.error()) << "byte " << i;
+    EXPECT_STREQ(shared.message(), full.message()) << "byte " << i;
+  }
+}
+
 TEST(Record, UnknownFlagsAndInconsistentSchemaFlagAreCorrupt) {
   std::vector<std::uint8_t> record = encoded_a();
   symcr::format::store32(record.data() + 12, 0x3);

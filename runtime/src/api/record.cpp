@@ -13,6 +13,7 @@
 #include "report_access.hpp"
 #include "restore_payload.hpp"
 #include "schema_blob.hpp"
+#include "schema_facts.hpp"
 #include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
@@ -137,7 +138,7 @@ void reseal_record(std::uint8_t* record, std::size_t size, const RecordSigning& 
 }
 
 Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
-                    const SchemaBlob* known) {
+                    const SchemaBlob* known, const Crc32cSpan* known_crc) {
   out = RecordView();
   RecordHeader& h = out.header;
   switch (format::decode_record_header(data, size, &h)) {
@@ -165,7 +166,17 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
     return Status(Error::Truncated, "truncated: header says %llu bytes, %zu available",
                   static_cast<unsigned long long>(record_size), size);
   }
-  const std::uint32_t actual = record_checksum(data, static_cast<std::size_t>(record_size));
+  // The inline schema's bytes, if they are `known`'s, are compared once; their share of the
+  // CRC is then known, and only the header and payload are read for it. The CRC is the same.
+  const std::uint64_t schema_end = std::uint64_t{h.header_size} + h.schema_size;
+  const bool known_inline = known_crc != nullptr && (h.flags & format::kRecordSchemaInline) != 0 &&
+                            schema_end <= record_size &&
+                            is_blob(known, data + h.header_size, h.schema_size, h.schema_hash);
+  const std::uint32_t actual =
+      known_inline
+          ? crc32c_extend(crc32c_extend_span(record_checksum(data, h.header_size), *known_crc),
+                          data + schema_end, static_cast<std::size_t>(record_size - schema_end))
+          : record_checksum(data, static_cast<std::size_t>(record_size));
   if (actual != h.checksum) {
     return Status(Error::Checksum, "checksum mismatch: stored %08x, computed %08x", h.checksum,
                   actual);
@@ -197,7 +208,8 @@ Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
   out.payload = data + h.header_size + h.schema_size;
   out.payload_size = h.payload_size;
   out.record_size = static_cast<std::size_t>(record_size);
-  out.schema_is_known = inline_schema && is_blob(known, out.schema, h.schema_size, h.schema_hash);
+  out.schema_is_known =
+      known_inline || (inline_schema && is_blob(known, out.schema, h.schema_size, h.schema_hash));
   if (inline_schema && !out.schema_is_known &&
       format::fnv1a64(out.schema, h.schema_size) != h.schema_hash) {
     return Status(Error::Corrupt, "inline schema does not match its hash %016llx",
@@ -256,7 +268,9 @@ Report restore_standalone_record(const std::uint8_t* data, std::size_t size, con
     plan_blob.size = plan->writer_owner->bytes().size();
     plan_blob.hash = plan->writer_owner->hash();
   }
-  Status status = parse_record(data, size, record, plan_blob.data ? &plan_blob : &own);
+  Status status = plan_blob.data ? parse_record(data, size, record, &plan_blob, &plan->writer_crc)
+                                 : parse_record(data, size, record, &own,
+                                                &schema_cache_entry(reader).blob_crc());
   if (status.ok() && record.record_size != size) {
     status = Status(Error::Corrupt, "%zu unexpected bytes after the %zu-byte record",
                     size - record.record_size, record.record_size);

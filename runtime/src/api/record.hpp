@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "crc32c.hpp"
 #include "parsed_schema.hpp"
 #include "schema_blob.hpp"
 #include "symcr/format/record.hpp"
@@ -76,9 +77,10 @@ void reseal_record(std::uint8_t* record, std::size_t size, const RecordSigning& 
 // inline schema that its bytes hash to `schema_hash`. Bytes after the record are not looked at
 // (a store slot has room to spare). Does not parse the schema. When the inline schema is byte
 // for byte `known` (a blob whose hash is already computed, e.g. the reader's own schema), its
-// hash is taken from `known` instead of rehashing: the common case costs a memcmp.
+// hash is taken from `known` instead of rehashing: the common case costs a memcmp. With
+// `known_crc`, known's share of the CRC (crc32c_span), its bytes are not read for the CRC either.
 Status parse_record(const std::uint8_t* data, std::size_t size, RecordView& out,
-                    const SchemaBlob* known = nullptr);
+                    const SchemaBlob* known = nullptr, const Crc32cSpan* known_crc = nullptr);
 
 // Incompatible when a checkpoint of program `writer_program_id` is not to be restored into
 // program `reader_program_id` (named `reader_name`): both are named, they differ, and it is

@@ -277,10 +277,15 @@ std::shared_ptr<const Plan> plan_for(const Schema& writer, std::uint64_t writer_
     plan->writer_owner = std::move(copy);
   }
   plan->reader = &reader;
+  if (plan->writer_owner) {
+    const std::vector<std::uint8_t>& bytes = plan->writer_owner->bytes();
+    plan->writer_crc = crc32c_span(bytes.data(), bytes.size());
+  }
   if (!decode_embedded_plan(writer_hash, reader, *plan)) {
     if (!plan->nodes.empty()) {  // an image that did not fit: planned afresh, as without one
       auto fresh = std::make_shared<Plan>();
       fresh->writer_owner = plan->writer_owner;
+      fresh->writer_crc = plan->writer_crc;
       fresh->writer = plan->writer;
       fresh->reader = plan->reader;
       plan = std::move(fresh);

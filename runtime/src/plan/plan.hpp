@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "crc32c.hpp"
 #include "parsed_schema.hpp"
 #include "payload_grammar.hpp"
 #include "report_access.hpp"
@@ -152,6 +153,9 @@ struct Plan final : ReportSource {
   // Owns *writer, whose names the cached plan must outlive the caller's schema with; null when
   // the writer is the reader itself (restoring the same build).
   std::shared_ptr<const ParsedSchema> writer_owner;
+  // writer_owner's bytes' share of a record's CRC: a standalone record carrying them inline (an
+  // earlier build's checkpoint restored again) is checked without reading them twice.
+  Crc32cSpan writer_crc;
   const Schema* writer = nullptr;
   const Schema* reader = nullptr;
   std::deque<PlanNode> nodes;               // stable addresses

@@ -14,6 +14,7 @@
 #include <cstdarg>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -63,7 +64,7 @@ Status Restorer::check() {
 
 // Capacity of the decoding tables (thread_scratch_bytes).
 std::size_t Restorer::scratch_bytes() const {
-  return lease_.tables().bytes() + explained_.bucket_count() * sizeof(void*) +
+  return lease_.table_bytes() + explained_.bucket_count() * sizeof(void*) +
          explained_.size() * (sizeof(std::pair<std::uint32_t, std::string>) + 2 * sizeof(void*));
 }
 
@@ -115,12 +116,17 @@ RestoreTablesLease::RestoreTablesLease() : kept_(!kept_tables_leased) {
   tables_->clear();
 }
 
+std::size_t RestoreTablesLease::table_bytes() const {
+  if (counted_bytes_ == kNotCounted) counted_bytes_ = tables_->bytes();
+  return counted_bytes_;
+}
+
 RestoreTablesLease::~RestoreTablesLease() {
   if (!kept_) {
     delete tables_;
     return;
   }
-  if (tables_->bytes() > kKeptRestoreTableBytes) *tables_ = RestoreTables();
+  if (table_bytes() > kKeptRestoreTableBytes) *tables_ = RestoreTables();
   kept_tables_leased = false;
 }
 
@@ -203,9 +209,11 @@ bool restore_same_build(const Schema& schema, std::uint64_t hash, const std::uin
                         std::size_t size, Report& report) {
   const SchemaCacheEntry& entry = schema_cache_entry(schema);
   if (!entry.first_same_build_restore() || !entry.device_holdable()) return false;
-  thread_local std::vector<std::uint8_t> scratch;
-  scratch.resize(device::scratch_size(schema));
-  if (device::detail::restore_held_payload(schema, payload, size, scratch.data(), scratch.size()) !=
+  // Once per schema and process: not kept, and not zero-filled (the decoder stages every root's
+  // bytes before it reads them).
+  const std::size_t scratch_size = device::scratch_size(schema);
+  const std::unique_ptr<std::uint8_t[]> scratch(new std::uint8_t[scratch_size]);
+  if (device::detail::restore_held_payload(schema, payload, size, scratch.get(), scratch_size) !=
       device::Result::Ok) {
     return false;
   }

@@ -204,12 +204,17 @@ class RestoreTablesLease {
   ~RestoreTablesLease();
   RestoreTablesLease(const RestoreTablesLease&) = delete;
   RestoreTablesLease& operator=(const RestoreTablesLease&) = delete;
+  // Writable until table_bytes() is asked: the restore is done with them then.
   RestoreTables& tables() { return *tables_; }
   const RestoreTables& tables() const { return *tables_; }
+  // The tables' bytes(), counted once: asked for thread_scratch_bytes, and again at the end.
+  std::size_t table_bytes() const;
 
  private:
+  static constexpr std::size_t kNotCounted = ~std::size_t{0};
   RestoreTables* tables_;
   bool kept_;  // the thread's set, handed back at the end
+  mutable std::size_t counted_bytes_ = kNotCounted;
 };
 
 template <typename Pass>

@@ -393,6 +393,73 @@ std::uint32_t crc32c_combine(std::uint32_t crc_a, std::uint32_t crc_b, std::uint
   return crc_a ^ crc_b;
 }
 
+namespace {
+
+// Polynomials modulo the CRC's, bit-reflected as the register is (bit 31 is x^0): zlib's
+// multmodp and x2nmodp. A CRC moves over n bytes by a product with x^(8 n).
+constexpr std::uint32_t multiply_modulo(std::uint32_t a, std::uint32_t b) {
+  std::uint32_t product = 0;
+  for (std::uint32_t m = 1u << 31; m != 0; m >>= 1) {
+    if (a & m) product ^= b;
+    b = (b & 1u) ? (b >> 1) ^ kPolynomial : b >> 1;
+  }
+  return product;
+}
+
+// x^(2^k) for every k that x^(8 n) of a 64-bit n needs (8 n = 2^3 n).
+struct PowerTable {
+  std::uint32_t x_to_2_to[3 + 64];
+};
+
+constexpr PowerTable make_power_table() {
+  PowerTable t{};
+  std::uint32_t p = 1u << 30;  // x^1
+  t.x_to_2_to[0] = p;
+  for (int k = 1; k < 3 + 64; ++k) t.x_to_2_to[k] = p = multiply_modulo(p, p);
+  return t;
+}
+
+constexpr PowerTable kPowers = make_power_table();
+
+std::uint32_t x_to_8n(std::uint64_t n) {
+  std::uint32_t p = 1u << 31;  // x^0
+  for (unsigned k = 3; n != 0; n >>= 1, ++k) {
+    if (n & 1u) p = multiply_modulo(kPowers.x_to_2_to[k], p);
+  }
+  return p;
+}
+
+}  // namespace
+
+Crc32cSpan crc32c_span(const void* data, std::size_t size) {
+  Crc32cSpan span;
+  span.crc = crc32c(data, size);
+  // The operator's column for register bit i (x^(31 - i)) is x^(8 n) times that power.
+  std::uint32_t column[32];
+  column[31] = x_to_8n(size);
+  for (int i = 30; i >= 0; --i) {
+    const std::uint32_t next = column[i + 1];
+    column[i] = (next & 1u) ? (next >> 1) ^ kPolynomial : next >> 1;  // times x
+  }
+  for (int nibble = 0; nibble < 8; ++nibble) {
+    for (unsigned value = 1; value < 16; ++value) {
+      const unsigned low = static_cast<unsigned>(__builtin_ctz(value));
+      span.shift[nibble][value] =
+          span.shift[nibble][value & (value - 1)] ^ column[4 * nibble + low];
+    }
+  }
+  return span;
+}
+
+// As crc32c_combine: the register moved over the span's bytes as if they were zeros, then
+// their own CRC added.
+std::uint32_t crc32c_extend_span(std::uint32_t crc, const Crc32cSpan& span) {
+  std::uint32_t moved = span.crc;
+  for (int nibble = 0; nibble < 8; ++nibble)
+    moved ^= span.shift[nibble][(crc >> (4 * nibble)) & 15u];
+  return moved;
+}
+
 std::uint32_t crc32c_extend(std::uint32_t crc, const void* data, std::size_t size) {
   using Implementation = std::uint32_t (*)(std::uint32_t, const void*, std::size_t);
   static const Implementation kImplementation =

@@ -26,6 +26,18 @@ std::uint32_t crc32c_copy(std::uint32_t crc, void* destination, const void* sour
 // squarings (tens of thousands of instructions), worth it only to avoid a pass over megabytes.
 std::uint32_t crc32c_combine(std::uint32_t crc_a, std::uint32_t crc_b, std::uint64_t length_b);
 
+// A byte string's share of every CRC-32C that covers it, for bytes checked again and again (a
+// schema every standalone record carries inline): crc32c_extend_span(crc, crc32c_span(s, n))
+// == crc32c_extend(crc, s, n), without reading the bytes again.
+struct Crc32cSpan {
+  std::uint32_t crc = 0;  // crc32c of the bytes
+  // The operator moving a CRC over n bytes (a product with x^(8 n) modulo the polynomial), by
+  // the register's nibbles: eight lookups rather than a 32-step product per use.
+  std::uint32_t shift[8][16] = {};
+};
+Crc32cSpan crc32c_span(const void* data, std::size_t size);
+std::uint32_t crc32c_extend_span(std::uint32_t crc, const Crc32cSpan& span);
+
 // The two implementations behind crc32c_extend, exposed so tests can compare them.
 std::uint32_t crc32c_extend_portable(std::uint32_t crc, const void* data, std::size_t size);
 bool crc32c_hardware_available();

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <vector>
 
+#include "crc32c.hpp"
 #include "schema_blob.hpp"
 #include "schema_sizes.hpp"
 #include "symcr/device.hpp"
@@ -64,8 +65,17 @@ struct SchemaCacheEntry {
     });
     return device_holdable_;
   }
+  // The blob's share of a record's CRC (crc32c_span), computed at its first use: every
+  // standalone record of this schema carries the blob inline, checked without reading it twice.
+  const Crc32cSpan& blob_crc() const {
+    std::call_once(blob_crc_computed_, [this] { blob_crc_ = crc32c_span(blob.data, blob.size); });
+    return blob_crc_;
+  }
   // True the first time it is asked: the process's first restore of this schema into itself.
-  bool first_same_build_restore() const { return !restored_.exchange(true); }
+  // Read before it is written: every later restore then costs a load, not an atomic exchange.
+  bool first_same_build_restore() const {
+    return !restored_.load(std::memory_order_relaxed) && !restored_.exchange(true);
+  }
 
  private:
   mutable std::once_flag facts_computed_;
@@ -73,6 +83,8 @@ struct SchemaCacheEntry {
   mutable std::once_flag device_checked_;
   mutable bool device_holdable_ = false;
   mutable std::atomic<bool> restored_{false};
+  mutable std::once_flag blob_crc_computed_;
+  mutable Crc32cSpan blob_crc_;
 };
 const SchemaCacheEntry& schema_cache_entry(const Schema& schema);
 
