@@ -17,14 +17,15 @@
 #include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
-namespace {
 
-std::uint64_t realtime_ns() {
+std::uint64_t record_timestamp_ns() {
   timespec now{};
   clock_gettime(CLOCK_REALTIME, &now);
   return static_cast<std::uint64_t>(now.tv_sec) * 1000000000u +
          static_cast<std::uint64_t>(now.tv_nsec);
 }
+
+namespace {
 
 void store_header(const RecordHeader& h, std::uint8_t* p) {
   format::encode_record_header(h, p);
@@ -109,7 +110,7 @@ Status encode_record_as(const Schema& schema, const SchemaBlob& identity, bool i
     header.journal_freshness = signing->journal_freshness;
   }
   header.sequence = sequence;
-  header.timestamp_ns = realtime_ns();
+  header.timestamp_ns = record_timestamp_ns();
   header.schema_hash = identity.hash;
   header.schema_size = static_cast<std::uint32_t>(schema_size);
   header.payload_size = static_cast<std::uint32_t>(payload_size);

@@ -54,6 +54,9 @@ struct RecordSigning {
   std::uint64_t journal_freshness = 0;
 };
 
+// The time a record's header carries: the wall clock, in nanoseconds since the Unix epoch.
+std::uint64_t record_timestamp_ns();
+
 // Replaces `out` with a complete record of every root of `schema`: header, the serialised
 // schema when `inline_schema`, the payload, and the checksum. Reuses `out`'s capacity.
 Status encode_record(const Schema& schema, bool inline_schema, std::uint64_t sequence,

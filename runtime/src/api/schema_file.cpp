@@ -2,8 +2,6 @@
 // encode_record, which always appends a payload of the live roots.
 #include "schema_file.hpp"
 
-#include <time.h>
-
 #include <vector>
 
 #include "crc32c.hpp"
@@ -14,16 +12,6 @@
 #include "symcr/format/bytes.hpp"
 
 namespace symcr::detail {
-namespace {
-
-std::uint64_t now_ns() {
-  timespec now{};
-  clock_gettime(CLOCK_REALTIME, &now);
-  return static_cast<std::uint64_t>(now.tv_sec) * 1000000000u +
-         static_cast<std::uint64_t>(now.tv_nsec);
-}
-
-}  // namespace
 
 Status write_schema_file(const Schema& schema, const char* path) {
   const SchemaBlob& blob = schema_blob(schema);
@@ -36,7 +24,7 @@ Status write_schema_file(const Schema& schema, const char* path) {
   header.format_version = format::kRecordFormatVersion;
   header.header_size = format::kRecordHeaderSize;
   header.flags = format::kRecordSchemaInline;
-  header.timestamp_ns = now_ns();
+  header.timestamp_ns = record_timestamp_ns();
   header.schema_hash = blob.hash;
   header.schema_size = static_cast<std::uint32_t>(blob.size);
   header.payload_size = 0;  // a schema file carries no values
