@@ -178,6 +178,13 @@ std::size_t values_size(const Schema& schema) {
   return total;
 }
 
+std::uint64_t bits_at(std::uint64_t raw, unsigned offset, unsigned width, bool is_signed) {
+  const unsigned shift = 64 - width;
+  raw <<= shift - offset;  // the field's top bit at bit 63
+  return is_signed ? static_cast<std::uint64_t>(static_cast<std::int64_t>(raw) >> shift)
+                   : raw >> shift;
+}
+
 bool follow_path(const Schema& schema, std::uint32_t root, const std::uint32_t* steps,
                  std::size_t step_count, std::size_t* offset, std::uint32_t* type) {
   if (root >= schema.root_count) return false;

@@ -107,22 +107,15 @@ class Saver {
     const Kind integer =
         type.kind == Kind::Enum ? detail::type_at(schema_, type.element).kind : type.kind;
     const unsigned bytes = (field.bit_offset + field.bit_width + 7u) / 8u;
-    if (bytes > 8 || field.bit_width > 64) {
+    if (bytes > 8) {  // also a width above 64
       result_ = Result::Unsupported;
       return;
     }
     std::uint64_t raw = 0;
     std::memcpy(&raw, unit, bytes);
-    const std::uint64_t mask =
-        field.bit_width == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << field.bit_width) - 1;
-    std::uint64_t v = (raw >> field.bit_offset) & mask;
-    if (integer == Kind::Int && field.bit_width < 64 && ((v >> (field.bit_width - 1)) & 1u)) {
-      v |= ~mask;
-    }
+    std::uint64_t v = detail::bits_at(raw, field.bit_offset, field.bit_width, integer == Kind::Int);
     if (type.kind == Kind::Bool) v = v != 0;
-    std::uint8_t out[8];
-    format::store64(out, v);
-    put(out, type.size > 8 ? 8 : type.size);
+    put(&v, type.size > 8 ? 8 : type.size);  // little-endian: its low bytes first
   }
 
   void pointer(const detail::TypeView& type, const std::uint8_t* p) {
