@@ -8,8 +8,6 @@ namespace symcr {
 namespace device {
 namespace {
 
-using format::store32;
-
 struct Target {
   std::uintptr_t address;
   std::uint32_t type;
@@ -43,16 +41,9 @@ class Saver {
     std::memcpy(out_ + at_, bytes, n);
     at_ += n;
   }
-  void put32(std::uint32_t v) {
-    std::uint8_t bytes[4];
-    store32(bytes, v);
-    put(bytes, 4);
-  }
-  void put64(std::uint64_t v) {
-    std::uint8_t bytes[8];
-    format::store64(bytes, v);
-    put(bytes, 8);
-  }
+  // Integers in memory order: little-endian, the wire's (device_format.hpp).
+  void put32(std::uint32_t v) { put(&v, 4); }
+  void put64(std::uint64_t v) { put(&v, 8); }
 
   // The epoch 0 (a device restores only after a reset: its times always move) and each
   // clock's reading.
@@ -192,9 +183,8 @@ class Saver {
     const std::uint8_t base_kind = format::kBaseObject;
     put(&base_kind, 1);
     put32(root);
-    std::uint8_t count[2];
-    format::store16(count, static_cast<std::uint16_t>(step_count));
-    put(count, 2);
+    const std::uint16_t count = static_cast<std::uint16_t>(step_count);
+    put(&count, 2);
     for (std::size_t s = 0; s < step_count; ++s) put32(steps[s]);
     put32(target.type);
   }
