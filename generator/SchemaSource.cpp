@@ -302,20 +302,23 @@ private:
         Fields << "    {" << T.reference_members[M].offset << "u, "
                << T.reference_members[M].type << "u, 0u, 0u},\n";
       FieldCount += Members + References;
-      const std::uint64_t Count = IsStruct ? References : T.count;
+      // A struct's count: its fields in the low 16 bits, its reference members
+      // in the high 16; its first field where another type has its element.
+      const std::uint64_t Count =
+          IsStruct ? (std::uint64_t{References} << 16) | Members : T.count;
       if (Count > 0xFFFFFFFFu)
         Limit = "an array of more than 2^32 - 1 elements";
-      if (Members > 0xFFFF || First > 0xFFFF)
+      if (Members > 0xFFFF || References > 0xFFFF || First > 0xFFFF)
         Limit = "more than 65,535 fields";
       if (Validators.size() > 0xFF)
         Limit = "more than 255 types with a symcr_validate";
-      Types << "    {" << T.size << "u, " << Count << "u, "
-            << (T.element == symcr::kNoType
+      Types << "    {" << T.size << "u, " << Count << "u, {"
+            << (IsStruct ? std::to_string(First) + "u"
+                : T.element == symcr::kNoType
                     ? std::string("symcr::kDeviceNoType")
                     : std::to_string(T.element) + "u")
-            << ", " << (IsStruct ? First : 0) << "u, " << Members << "u, "
-            << static_cast<unsigned>(T.kind) << "u, " << Validator << "},  // "
-            << I << "\n";
+            << "}, " << static_cast<unsigned>(T.kind) << "u, " << Validator
+            << "},  // " << I << "\n";
     }
     if (Schema.type_count >= symcr::kDeviceNoType)
       Limit = "more than 65,534 types";

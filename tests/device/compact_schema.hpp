@@ -24,9 +24,8 @@ class CompactSchema {
                                                      : static_cast<std::uint16_t>(type.element);
       entry.count = static_cast<std::uint32_t>(type.count);
       if (type.kind == symcr::Kind::Struct) {
-        entry.count = type.reference_member_count;
+        entry.count = type.field_count | type.reference_member_count << 16;
         entry.first_field = static_cast<std::uint16_t>(fields_.size());
-        entry.field_count = static_cast<std::uint16_t>(type.field_count);
         for (std::uint32_t f = 0; f < type.field_count; ++f) add(type.fields[f]);
         for (std::uint32_t m = 0; m < type.reference_member_count; ++m) {
           add(type.reference_members[m]);

@@ -10,11 +10,11 @@ TypeView type_at(const Schema& schema, std::uint32_t t) {
     const DeviceTypeInfo& type = device->types[t];
     view.kind = static_cast<Kind>(type.kind);
     view.size = type.size;
-    view.element = type.element == kDeviceNoType ? kNoType : type.element;
     const bool is_struct = view.kind == Kind::Struct;
+    view.element = is_struct || type.element == kDeviceNoType ? kNoType : type.element;
     view.count = is_struct ? 0 : type.count;
-    view.field_count = type.field_count;
-    view.member_count = type.field_count + (is_struct ? type.count : 0);
+    view.field_count = is_struct ? type.count & 0xFFFFu : 0;
+    view.member_count = view.field_count + (is_struct ? type.count >> 16 : 0);
     view.validate = type.validator != 0 ? device->validators[type.validator - 1] : nullptr;
     return view;
   }
