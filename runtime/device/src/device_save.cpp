@@ -11,6 +11,7 @@ namespace {
 struct Target {
   std::uintptr_t address;
   std::uint32_t type;
+  std::uint32_t root;  // the root holding it
 };
 
 class Saver {
@@ -124,7 +125,7 @@ class Saver {
       result_ = Result::TooManyPointers;
       return;
     }
-    targets_[target_count_] = Target{target, type.element};
+    targets_[target_count_] = Target{target, type.element, root};
     put32(format::kFirstReference + static_cast<std::uint32_t>(target_count_++));
   }
 
@@ -144,8 +145,7 @@ class Saver {
   // no such path: the save is refused rather than the pointer silently lost.
   void reference(std::size_t i) {
     const Target& target = targets_[i];
-    std::uint32_t root = 0;
-    find_root(target.address, &root);
+    const std::uint32_t root = target.root;
     std::uint32_t steps[kMaxPathSteps];
     std::size_t step_count = 0;
     std::uint32_t t = schema_.roots[root].type;
