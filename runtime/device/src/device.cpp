@@ -55,10 +55,12 @@ Result check_schema(const Schema& schema, std::uint32_t* type) {
 
 std::size_t record_size(const Schema& schema) {
   std::size_t pointers = 0;
-  const std::size_t values = detail::values_size(schema, &pointers);
+  for (std::uint32_t r = 0; r < schema.root_count; ++r) {
+    pointers += detail::pointer_count(schema, schema.roots[r].type);
+  }
   if (pointers > kMaxReferences) pointers = kMaxReferences;
-  return format::kRecordHeaderSize + values + format::kHeapCountSize + format::kReferenceCountSize +
-         pointers * detail::kMaxReferenceSize +
+  return format::kRecordHeaderSize + detail::values_size(schema) + format::kHeapCountSize +
+         format::kReferenceCountSize + pointers * detail::kMaxReferenceSize +
          format::clock_readings_size(detail::clock_count(schema));
 }
 

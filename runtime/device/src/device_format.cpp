@@ -108,23 +108,39 @@ std::uint32_t first_unheld_type(const Schema& schema) {
 }
 
 // format::wire_size_of's rule over the view: a struct's fields, an array's elements, else the
-// value's own bytes. The pointers are counted in the same walk.
-std::size_t wire_size(const Schema& schema, std::uint32_t t, std::size_t* pointers) {
+// value's own bytes.
+std::size_t wire_size(const Schema& schema, std::uint32_t t) {
   const TypeView type = type_at(schema, t);
-  std::size_t total = 0, inner = 0;
   if (type.kind == Kind::Struct) {
+    std::size_t total = 0;
     for (std::uint32_t f = 0; f < type.field_count; ++f) {
-      total += wire_size(schema, field_at(schema, t, f).type, &inner);
+      total += wire_size(schema, field_at(schema, t, f).type);
     }
-  } else if (type.kind == Kind::Array) {
-    total = wire_size(schema, type.element, &inner) * static_cast<std::size_t>(type.count);
-    inner *= static_cast<std::size_t>(type.count);
-  } else {
-    total = format::own_wire_size(type);
-    inner = type.kind == Kind::Pointer;
+    return total;
   }
-  if (pointers != nullptr) *pointers += inner;
-  return total;
+  if (type.kind == Kind::Array) {
+    return wire_size(schema, type.element) * static_cast<std::size_t>(type.count);
+  }
+  return format::own_wire_size(type);
+}
+
+std::size_t pointer_count(const Schema& schema, std::uint32_t t) {
+  const TypeView type = type_at(schema, t);
+  switch (type.kind) {
+    case Kind::Pointer:
+      return 1;
+    case Kind::Array:
+      return pointer_count(schema, type.element) * static_cast<std::size_t>(type.count);
+    case Kind::Struct: {
+      std::size_t total = 0;
+      for (std::uint32_t f = 0; f < type.field_count; ++f) {
+        total += pointer_count(schema, field_at(schema, t, f).type);
+      }
+      return total;
+    }
+    default:
+      return 0;
+  }
 }
 
 // The clock of the first time field (in the structs' order) whose clock has index `index`, or,
@@ -154,10 +170,10 @@ const ClockInfo* clock_at(const Schema& schema, std::uint32_t index) {
   return clocks_walk(schema, index, &ignored);
 }
 
-std::size_t values_size(const Schema& schema, std::size_t* pointers) {
+std::size_t values_size(const Schema& schema) {
   std::size_t total = 0;
   for (std::uint32_t r = 0; r < schema.root_count; ++r) {
-    total += wire_size(schema, schema.roots[r].type, pointers);
+    total += wire_size(schema, schema.roots[r].type);
   }
   return total;
 }

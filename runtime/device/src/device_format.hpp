@@ -58,10 +58,9 @@ inline std::uint32_t root_size(const Schema& schema, std::uint32_t root) {
 // The first type reachable from the roots that the device profile cannot hold, or kNoType.
 std::uint32_t first_unheld_type(const Schema& schema);
 // Bytes `type` takes in the payload (fixed: the profile has no variable-length kind), and the
-// bytes of all roots' values. Only for schemas first_unheld_type() accepts. `*pointers`, if
-// given, grows by the pointers among those values (each may need a reference).
-std::size_t wire_size(const Schema& schema, std::uint32_t type, std::size_t* pointers = nullptr);
-std::size_t values_size(const Schema& schema, std::size_t* pointers = nullptr);
+// bytes of all roots' values. Only for schemas first_unheld_type() accepts.
+std::size_t wire_size(const Schema& schema, std::uint32_t type);
+std::size_t values_size(const Schema& schema);
 // restore_payload() for a schema first_unheld_type() already accepted (the host checks that
 // once per schema, not once per restore).
 Result restore_held_payload(const Schema& schema, const std::uint8_t* payload, std::size_t size,
@@ -80,6 +79,8 @@ Result restore_planned_payload(const Schema& reader, const PlannedSchema& planne
 // payload of a schema with clocks ends with an epoch and one reading per clock (format §3).
 std::uint32_t clock_count(const Schema& schema);
 const ClockInfo* clock_at(const Schema& schema, std::uint32_t index);
+// Pointers among the values of `type` (each may need a reference).
+std::size_t pointer_count(const Schema& schema, std::uint32_t type);
 // The most bytes one reference takes: base, object, step count, steps, target type.
 constexpr std::size_t kMaxReferenceSize = format::kObjectReferenceStepsOffset +
                                           format::kReferenceStepSize * kMaxPathSteps +
