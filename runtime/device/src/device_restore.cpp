@@ -209,8 +209,9 @@ class Restorer {
     } else if (number.kind == Kind::Int || number.kind == Kind::UInt || number.kind == Kind::Bool) {
       std::uint64_t raw = 0;
       std::memcpy(&raw, p, number.size);
-      if (number.kind == Kind::Int && number.size < 8)
-        raw = detail::bits_at(raw, 0, 8 * number.size, true);
+      if (number.kind == Kind::Int && number.size < 8) {
+        raw = detail::bits_at(raw, 0, 8 * number.size, true);  // sign-extended
+      }
       v = number.kind == Kind::Int ? static_cast<double>(static_cast<std::int64_t>(raw))
                                    : static_cast<double>(raw);
     } else {
