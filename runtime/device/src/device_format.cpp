@@ -33,13 +33,18 @@ FieldView field_at(const Schema& schema, std::uint32_t t, std::uint32_t f) {
   FieldView view;
   if (const DeviceSchema* device = compact(schema)) {
     const std::uint32_t index = device->types[t].first_field + f;
-    const DeviceFieldInfo& field = device->fields[index];
-    view.type = field.type;
-    view.offset = field.offset;
-    view.bit_offset = field.bit_offset;
-    view.bit_width = field.bit_width;
+    view.type = device->field_types[index];
+    view.offset = device->field_offsets[index];
+    view.bit_offset = 0;
+    view.bit_width = 0;
     view.range = nullptr;
     view.time = nullptr;
+    for (std::uint32_t i = 0; i < device->bit_field_count; ++i) {
+      if (device->bit_fields[i].field == index) {
+        view.bit_offset = device->bit_fields[i].bit_offset;
+        view.bit_width = device->bit_fields[i].bit_width;
+      }
+    }
     for (std::uint32_t i = 0; i < device->range_count; ++i) {
       if (device->ranges[i].field == index) view.range = &device->ranges[i].range;
     }
