@@ -260,9 +260,9 @@ private:
   }
 
   /// The device profile's compact tables (generated.hpp's DeviceSchema): what
-  /// its runtime reads of each type and field, and the few ranges, times and
-  /// validators beside. A program beyond their 16-bit indices fails to compile,
-  /// saying which.
+  /// its runtime reads of each type and field, and the few bit-fields, ranges,
+  /// times and validators beside. A program beyond their 16-bit indices fails
+  /// to compile, saying which.
   void writeDeviceTables() {
     std::vector<std::string> Validators;
     std::ostringstream Types, Offsets, FieldTypes, BitFields, Ranges, Times;
