@@ -5,14 +5,21 @@
 //   control bits 0-3  the world (among those the device profile holds, fuzz_worlds.hpp)
 //   control bit 4     recompute the CRC-32C (and an inline schema's hash) after mutation
 //
-// Checked beyond the sanitizers: a refused restore changes nothing; an accepted one is also
-// accepted by the host runtime, which restores the same record to the same state.
+// Each record is restored through both forms of the world's tables: its TypeInfo tables and the
+// compact ones symcr-gen emits for PROFILE device (symcr::DeviceSchema, laid out by
+// tests/device/compact_schema.hpp), whose reader is fuzzed as well.
+//
+// Checked beyond the sanitizers: a refused restore changes nothing; both forms give the same
+// result and the same state; an accepted record is also accepted by the host runtime, which
+// restores it to the same state.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <vector>
 
+#include "compact_schema.hpp"
 #include "fuzz_worlds.hpp"
 #include "schema_blob.hpp"
 #include "symcr/device.hpp"
@@ -31,6 +38,14 @@ const std::vector<unsigned>& device_worlds() {
     return held;
   }();
   return kWorlds;
+}
+
+// The compact tables of world `world` (one of device_worlds()), made once.
+const symcr::Schema& compact_schema(unsigned world) {
+  static std::vector<std::unique_ptr<device_tests::CompactSchema>> compact(fuzz::kWorldCount);
+  if (!compact[world])
+    compact[world].reset(new device_tests::CompactSchema(fuzz::world_schema(world)));
+  return compact[world]->schema();
 }
 
 [[noreturn]] void fail(const char* what, unsigned world, const char* why = "") {
@@ -55,6 +70,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const symcr::device::Result result =
       symcr::device::restore(build, record.data(), record.size(), scratch.data(), scratch.size());
   const std::vector<std::uint8_t> after = fuzz::world_snapshot(world);
+  // The compact tables: the same result, the same state.
+  fuzz::reset_world(world);
+  const symcr::device::Build compact{&compact_schema(world), build.schema_hash};
+  const symcr::device::Result compact_result =
+      symcr::device::restore(compact, record.data(), record.size(), scratch.data(), scratch.size());
+  if (compact_result != result) {
+    fail("the compact tables and the TypeInfo tables restored with different results", world,
+         symcr::device::result_text(compact_result));
+  }
+  if (fuzz::world_snapshot(world) != after) {
+    fail("the compact tables and the TypeInfo tables restored different states", world);
+  }
   if (result != symcr::device::Result::Ok) {
     if (after != before) fail("a refused device restore modified the live state", world);
     return 0;

@@ -260,12 +260,12 @@ private:
   }
 
   /// The device profile's compact tables (generated.hpp's DeviceSchema): what
-  /// its runtime reads of each type and field, and the few ranges, times and
-  /// validators beside. A program beyond their 16-bit indices fails to compile,
-  /// saying which.
+  /// its runtime reads of each type and field, and the few bit-fields, ranges,
+  /// times and validators beside. A program beyond their 16-bit indices fails
+  /// to compile, saying which.
   void writeDeviceTables() {
     std::vector<std::string> Validators;
-    std::ostringstream Types, Fields, Ranges, Times;
+    std::ostringstream Types, Offsets, FieldTypes, BitFields, Ranges, Times;
     std::uint32_t FieldCount = 0;
     const char *Limit = nullptr;
     for (std::uint32_t I = 0; I < Schema.type_count; ++I) {
@@ -283,8 +283,11 @@ private:
       const std::uint32_t Members = IsStruct ? T.field_count : 0;
       for (std::uint32_t F = 0; F < Members; ++F) {
         const symcr::FieldInfo &Field = T.fields[F];
-        Fields << "    {" << Field.offset << "u, " << Field.type << "u, "
-               << Field.bit_offset << "u, " << Field.bit_width << "u},\n";
+        Offsets << "    " << Field.offset << "u,\n";
+        FieldTypes << "    " << Field.type << "u,\n";
+        if (Field.bit_width != 0)
+          BitFields << "    {" << FieldCount + F << "u, " << Field.bit_offset
+                    << "u, " << Field.bit_width << "u},\n";
         if ((Field.flags & symcr::kFieldHasRange) && Field.range)
           Ranges << "    {" << FieldCount + F << "u, {"
                  << number(Field.range->min) << ", " << number(Field.range->max)
@@ -298,24 +301,28 @@ private:
           Limit = "a bit-field beyond bit 255";
       }
       const std::uint32_t References = IsStruct ? T.reference_member_count : 0;
-      for (std::uint32_t M = 0; M < References; ++M)
-        Fields << "    {" << T.reference_members[M].offset << "u, "
-               << T.reference_members[M].type << "u, 0u, 0u},\n";
+      for (std::uint32_t M = 0; M < References; ++M) {
+        Offsets << "    " << T.reference_members[M].offset << "u,\n";
+        FieldTypes << "    " << T.reference_members[M].type << "u,\n";
+      }
       FieldCount += Members + References;
-      const std::uint64_t Count = IsStruct ? References : T.count;
+      // A struct's count: its fields in the low 16 bits, its reference members
+      // in the high 16; its first field where another type has its element.
+      const std::uint64_t Count =
+          IsStruct ? (std::uint64_t{References} << 16) | Members : T.count;
       if (Count > 0xFFFFFFFFu)
         Limit = "an array of more than 2^32 - 1 elements";
-      if (Members > 0xFFFF || First > 0xFFFF)
+      if (Members > 0xFFFF || References > 0xFFFF || First > 0xFFFF)
         Limit = "more than 65,535 fields";
       if (Validators.size() > 0xFF)
         Limit = "more than 255 types with a symcr_validate";
-      Types << "    {" << T.size << "u, " << Count << "u, "
-            << (T.element == symcr::kNoType
+      Types << "    {" << T.size << "u, " << Count << "u, {"
+            << (IsStruct ? std::to_string(First) + "u"
+                : T.element == symcr::kNoType
                     ? std::string("symcr::kDeviceNoType")
                     : std::to_string(T.element) + "u")
-            << ", " << (IsStruct ? First : 0) << "u, " << Members << "u, "
-            << static_cast<unsigned>(T.kind) << "u, " << Validator << "},  // "
-            << I << "\n";
+            << "}, " << static_cast<unsigned>(T.kind) << "u, " << Validator
+            << "},  // " << I << "\n";
     }
     if (Schema.type_count >= symcr::kDeviceNoType)
       Limit = "more than 65,534 types";
@@ -326,17 +333,25 @@ private:
       OS << "const symcr::DeviceTypeInfo device_types[] = {\n"
          << Types.str() << "};\n";
     if (FieldCount != 0)
-      OS << "const symcr::DeviceFieldInfo device_fields[] = {\n"
-         << Fields.str() << "};\n";
+      OS << "const std::uint32_t device_field_offsets[] = {\n"
+         << Offsets.str()
+         << "};\nconst std::uint16_t device_field_types[] = {\n"
+         << FieldTypes.str() << "};\n";
     if (!Validators.empty()) {
       OS << "bool (*const device_validators[])(const void*) = {\n";
       for (const std::string &Validator : Validators)
         OS << "    " << Validator << ",\n";
       OS << "};\n";
     }
-    const std::string RangeRows = Ranges.str(), TimeRows = Times.str();
+    const std::string BitFieldRows = BitFields.str(), RangeRows = Ranges.str(),
+                      TimeRows = Times.str();
+    DeviceBitFields =
+        std::count(BitFieldRows.begin(), BitFieldRows.end(), '\n');
     DeviceRanges = std::count(RangeRows.begin(), RangeRows.end(), '\n');
     DeviceTimes = std::count(TimeRows.begin(), TimeRows.end(), '\n');
+    if (DeviceBitFields)
+      OS << "const symcr::DeviceBitField device_bit_fields[] = {\n"
+         << BitFieldRows << "};\n";
     if (DeviceRanges)
       OS << "const symcr::DeviceFieldRange device_ranges[] = {\n"
          << RangeRows << "};\n";
@@ -443,8 +458,11 @@ private:
     if (Device)
       OS << "  static const symcr::DeviceSchema schema{{" << Head << "}, "
          << (Schema.type_count ? "device_types" : "nullptr") << ", "
-         << (DeviceFields ? "device_fields" : "nullptr") << ", "
-         << (DeviceValidators ? "device_validators" : "nullptr") << ", "
+         << (DeviceFields ? "device_field_offsets, device_field_types"
+                          : "nullptr, nullptr")
+         << ", " << (DeviceValidators ? "device_validators" : "nullptr") << ", "
+         << (DeviceBitFields ? "device_bit_fields" : "nullptr") << ", "
+         << DeviceBitFields << "u, "
          << (DeviceRanges ? "device_ranges" : "nullptr") << ", " << DeviceRanges
          << "u, " << (DeviceTimes ? "device_times" : "nullptr") << ", "
          << DeviceTimes << "u};\n  return &schema;\n}\n\n";
@@ -466,8 +484,8 @@ private:
   std::vector<std::string> TypeRenamed;
   std::vector<std::string> TypeLeft;
   // The device tables' counts (writeDeviceTables).
-  std::size_t DeviceFields = 0, DeviceValidators = 0, DeviceRanges = 0,
-              DeviceTimes = 0;
+  std::size_t DeviceFields = 0, DeviceValidators = 0, DeviceBitFields = 0,
+              DeviceRanges = 0, DeviceTimes = 0;
 };
 
 } // namespace

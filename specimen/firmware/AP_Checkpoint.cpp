@@ -50,7 +50,10 @@ bool AP_Checkpoint::symcr_open() { return firmware::open_backup_ring(); }
 bool AP_Checkpoint::symcr_save() {
   const symcr::device::Result saved = firmware::backup_ring().save(
       symcr::device::program_build(), firmware::record_buffer(), firmware::record_capacity());
-  if (saved != symcr::device::Result::Ok) return false;
+  if (saved != symcr::device::Result::Ok) {
+    std::printf("checkpoint: not saved: %s\n", symcr::device::result_text(saved));
+    return false;
+  }
   ++_sequence;
   return true;
 }

@@ -30,15 +30,6 @@ bool open_backup_ring() {
     for (std::uint8_t& byte : backup.slots) byte = 0;
   }
   ++backup.boots;
-  const symcr::device::Build build = symcr::device::program_build();
-  if (build.schema == nullptr || symcr::device::record_size(*build.schema) > kSlotSize ||
-      symcr::device::scratch_size(*build.schema) > sizeof scratch) {
-    std::printf(
-        "checkpoint: the vehicle's record (%u B) or staged copy (%u B) does not fit\n",
-        build.schema ? static_cast<unsigned>(symcr::device::record_size(*build.schema)) : 0u,
-        build.schema ? static_cast<unsigned>(symcr::device::scratch_size(*build.schema)) : 0u);
-    return false;
-  }
   const symcr::device::Result opened =
       ring.open(symcr::device::memory_storage(backup.slots, sizeof backup.slots), kSlotSize);
   if (opened != symcr::device::Result::Ok) {

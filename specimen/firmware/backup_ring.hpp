@@ -14,8 +14,8 @@ constexpr std::size_t kSlots = 4;
 // A record of `copter` on this target (2068 B), and room to grow.
 constexpr std::size_t kSlotSize = 2304;
 
-// Opens the ring (once per boot) and counts the boot; false with a message if the build's
-// record or staged copy does not fit.
+// Opens the ring (once per boot) and counts the boot. A record or staged copy that does not fit
+// its buffer is the save's or the restore's NoSpace, which AP_Checkpoint prints.
 bool open_backup_ring();
 symcr::device::Ring& backup_ring();
 // The ring's bytes: kSlots slots of kSlotSize.

@@ -559,8 +559,23 @@ TEST(DeviceProfile, ResultsHaveTexts) {
   EXPECT_STREQ(symcr::device::result_text(Result::Ok), "ok");
   EXPECT_STREQ(symcr::device::result_text(Result::OtherSchema), "record of another build's schema");
   EXPECT_STREQ(symcr::device::result_text(Result::Empty), "no checkpoint saved yet");
-  EXPECT_STREQ(symcr::device::result_text(Result::SequenceExhausted),
-               "sequence numbers used up");
+  EXPECT_STREQ(symcr::device::result_text(Result::SequenceExhausted), "sequence numbers used up");
+  // The texts are one string in Result's order: each result has its own, none runs into the next.
+  const struct {
+    Result result;
+    const char* text;
+  } kAll[] = {{Result::NoSpace, "buffer too small"},
+              {Result::Unsupported, "a type the device profile cannot hold"},
+              {Result::Truncated, "record truncated"},
+              {Result::Corrupt, "record corrupt"},
+              {Result::FutureVersion, "record from a newer format"},
+              {Result::OtherProgram, "record of another program"},
+              {Result::Rejected, "a value refused by its range or validator"},
+              {Result::TooManyPointers, "more pointer targets than kMaxReferences"}};
+  for (const auto& expected : kAll) {
+    EXPECT_STREQ(symcr::device::result_text(expected.result), expected.text);
+  }
+  EXPECT_STREQ(symcr::device::result_text(static_cast<Result>(200)), "?");
 }
 
 }  // namespace

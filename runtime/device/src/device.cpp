@@ -5,33 +5,27 @@ namespace symcr {
 namespace device {
 
 const char* result_text(Result result) {
-  switch (result) {
-    case Result::Ok:
-      return "ok";
-    case Result::NoSpace:
-      return "buffer too small";
-    case Result::Unsupported:
-      return "a type the device profile cannot hold";
-    case Result::Truncated:
-      return "record truncated";
-    case Result::Corrupt:
-      return "record corrupt";
-    case Result::FutureVersion:
-      return "record from a newer format";
-    case Result::OtherSchema:
-      return "record of another build's schema";
-    case Result::OtherProgram:
-      return "record of another program";
-    case Result::Rejected:
-      return "a value refused by its range or validator";
-    case Result::TooManyPointers:
-      return "more pointer targets than kMaxReferences";
-    case Result::Empty:
-      return "no checkpoint saved yet";
-    case Result::SequenceExhausted:
-      return "sequence numbers used up";
+  // The texts in Result's order, each ended by its NUL: no table of pointers in flash.
+  static const char kTexts[] =
+      "ok\0"
+      "buffer too small\0"
+      "a type the device profile cannot hold\0"
+      "record truncated\0"
+      "record corrupt\0"
+      "record from a newer format\0"
+      "record of another build's schema\0"
+      "record of another program\0"
+      "a value refused by its range or validator\0"
+      "more pointer targets than kMaxReferences\0"
+      "no checkpoint saved yet\0"
+      "sequence numbers used up";
+  if (result > Result::SequenceExhausted) return "?";
+  const char* text = kTexts;
+  for (unsigned skip = static_cast<unsigned>(result); skip > 0; --skip) {
+    while (*text++ != '\0') {
+    }
   }
-  return "?";
+  return text;
 }
 
 Build program_build() {

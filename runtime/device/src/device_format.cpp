@@ -10,11 +10,11 @@ TypeView type_at(const Schema& schema, std::uint32_t t) {
     const DeviceTypeInfo& type = device->types[t];
     view.kind = static_cast<Kind>(type.kind);
     view.size = type.size;
-    view.element = type.element == kDeviceNoType ? kNoType : type.element;
     const bool is_struct = view.kind == Kind::Struct;
+    view.element = is_struct || type.element == kDeviceNoType ? kNoType : type.element;
     view.count = is_struct ? 0 : type.count;
-    view.field_count = type.field_count;
-    view.member_count = type.field_count + (is_struct ? type.count : 0);
+    view.field_count = is_struct ? type.count & 0xFFFFu : 0;
+    view.member_count = view.field_count + (is_struct ? type.count >> 16 : 0);
     view.validate = type.validator != 0 ? device->validators[type.validator - 1] : nullptr;
     return view;
   }
@@ -33,13 +33,18 @@ FieldView field_at(const Schema& schema, std::uint32_t t, std::uint32_t f) {
   FieldView view;
   if (const DeviceSchema* device = compact(schema)) {
     const std::uint32_t index = device->types[t].first_field + f;
-    const DeviceFieldInfo& field = device->fields[index];
-    view.type = field.type;
-    view.offset = field.offset;
-    view.bit_offset = field.bit_offset;
-    view.bit_width = field.bit_width;
+    view.type = device->field_types[index];
+    view.offset = device->field_offsets[index];
+    view.bit_offset = 0;
+    view.bit_width = 0;
     view.range = nullptr;
     view.time = nullptr;
+    for (std::uint32_t i = 0; i < device->bit_field_count; ++i) {
+      if (device->bit_fields[i].field == index) {
+        view.bit_offset = device->bit_fields[i].bit_offset;
+        view.bit_width = device->bit_fields[i].bit_width;
+      }
+    }
     for (std::uint32_t i = 0; i < device->range_count; ++i) {
       if (device->ranges[i].field == index) view.range = &device->ranges[i].range;
     }
@@ -176,6 +181,13 @@ std::size_t values_size(const Schema& schema) {
     total += wire_size(schema, schema.roots[r].type);
   }
   return total;
+}
+
+std::uint64_t bits_at(std::uint64_t raw, unsigned offset, unsigned width, bool is_signed) {
+  const unsigned shift = 64 - width;
+  raw <<= shift - offset;  // the field's top bit at bit 63
+  return is_signed ? static_cast<std::uint64_t>(static_cast<std::int64_t>(raw) >> shift)
+                   : raw >> shift;
 }
 
 bool follow_path(const Schema& schema, std::uint32_t root, const std::uint32_t* steps,

@@ -86,6 +86,11 @@ constexpr std::size_t kMaxReferenceSize = format::kObjectReferenceStepsOffset +
                                           format::kReferenceStepSize * kMaxPathSteps +
                                           format::kReferenceTargetSize;
 
+// The `width` bits (1 to 64) of `raw` from bit `offset` (offset + width at most 64), zero- or,
+// when `is_signed`, sign-extended to 64 bits. Out of line: each 64-bit shift by a variable count
+// is a dozen instructions on a Cortex-M4, and bit-fields, ranges and wire values all need them.
+std::uint64_t bits_at(std::uint64_t raw, unsigned offset, unsigned width, bool is_signed);
+
 // Staged copies of the roots in the scratch: each at a multiple of kStageAlign.
 constexpr std::size_t kStageAlign = 16;
 inline std::size_t stage_size(std::size_t size) {

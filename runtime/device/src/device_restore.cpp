@@ -175,25 +175,19 @@ class Restorer {
         type.kind == Kind::Enum ? detail::type_at(schema_, type.element).kind : type.kind;
     const unsigned bytes = (field.bit_offset + field.bit_width + 7u) / 8u;
     const std::size_t width = type.size > 8 ? 8 : type.size;
-    if (bytes > 8 || field.bit_width > 64) return Result::Unsupported;
+    if (bytes > 8) return Result::Unsupported;  // also a width above 64
+    const bool is_signed = integer == Kind::Int;
     std::uint64_t v = 0;
     std::memcpy(&v, take(width), width);
-    if (integer == Kind::Int && width < 8 && ((v >> (8 * width - 1)) & 1u)) {
-      v |= ~std::uint64_t{0} << (8 * width);  // sign-extend the wire value
-    }
+    if (is_signed) v = detail::bits_at(v, 0, 8 * width, true);  // sign-extend the wire value
     if (type.kind == Kind::Bool && v > 1) return Result::Corrupt;
-    const std::uint64_t mask =
-        field.bit_width == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << field.bit_width) - 1;
     // The value must survive the field's width: as written, it did.
-    const bool is_signed = integer == Kind::Int;
-    const std::uint64_t high = v & ~mask;
-    const bool fits = !is_signed ? high == 0
-                                 : (high == 0 && !((v >> (field.bit_width - 1)) & 1u)) ||
-                                       (high == (~mask) && ((v >> (field.bit_width - 1)) & 1u));
-    if (field.bit_width < 64 && !fits) return Result::Corrupt;
+    if (detail::bits_at(v, 0, field.bit_width, is_signed) != v) return Result::Corrupt;
+    const std::uint64_t mask = detail::bits_at(~std::uint64_t{0}, 0, field.bit_width, false)
+                               << field.bit_offset;
     std::uint64_t raw = 0;
     std::memcpy(&raw, unit, bytes);
-    raw = (raw & ~(mask << field.bit_offset)) | ((v & mask) << field.bit_offset);
+    raw = (raw & ~mask) | ((v << field.bit_offset) & mask);
     std::memcpy(unit, &raw, bytes);
     return Result::Ok;
   }
@@ -215,8 +209,8 @@ class Restorer {
     } else if (number.kind == Kind::Int || number.kind == Kind::UInt || number.kind == Kind::Bool) {
       std::uint64_t raw = 0;
       std::memcpy(&raw, p, number.size);
-      if (number.kind == Kind::Int && number.size < 8 && ((raw >> (8 * number.size - 1)) & 1u)) {
-        raw |= ~std::uint64_t{0} << (8 * number.size);
+      if (number.kind == Kind::Int && number.size < 8) {
+        raw = detail::bits_at(raw, 0, 8 * number.size, true);  // sign-extended
       }
       v = number.kind == Kind::Int ? static_cast<double>(static_cast<std::int64_t>(raw))
                                    : static_cast<double>(raw);

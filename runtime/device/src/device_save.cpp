@@ -8,11 +8,10 @@ namespace symcr {
 namespace device {
 namespace {
 
-using format::store32;
-
 struct Target {
   std::uintptr_t address;
   std::uint32_t type;
+  std::uint32_t root;  // the root holding it
 };
 
 class Saver {
@@ -43,16 +42,9 @@ class Saver {
     std::memcpy(out_ + at_, bytes, n);
     at_ += n;
   }
-  void put32(std::uint32_t v) {
-    std::uint8_t bytes[4];
-    store32(bytes, v);
-    put(bytes, 4);
-  }
-  void put64(std::uint64_t v) {
-    std::uint8_t bytes[8];
-    format::store64(bytes, v);
-    put(bytes, 8);
-  }
+  // Integers in memory order: little-endian, the wire's (device_format.hpp).
+  void put32(std::uint32_t v) { put(&v, 4); }
+  void put64(std::uint64_t v) { put(&v, 8); }
 
   // The epoch 0 (a device restores only after a reset: its times always move) and each
   // clock's reading.
@@ -107,22 +99,15 @@ class Saver {
     const Kind integer =
         type.kind == Kind::Enum ? detail::type_at(schema_, type.element).kind : type.kind;
     const unsigned bytes = (field.bit_offset + field.bit_width + 7u) / 8u;
-    if (bytes > 8 || field.bit_width > 64) {
+    if (bytes > 8) {  // also a width above 64
       result_ = Result::Unsupported;
       return;
     }
     std::uint64_t raw = 0;
     std::memcpy(&raw, unit, bytes);
-    const std::uint64_t mask =
-        field.bit_width == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << field.bit_width) - 1;
-    std::uint64_t v = (raw >> field.bit_offset) & mask;
-    if (integer == Kind::Int && field.bit_width < 64 && ((v >> (field.bit_width - 1)) & 1u)) {
-      v |= ~mask;
-    }
+    std::uint64_t v = detail::bits_at(raw, field.bit_offset, field.bit_width, integer == Kind::Int);
     if (type.kind == Kind::Bool) v = v != 0;
-    std::uint8_t out[8];
-    format::store64(out, v);
-    put(out, type.size > 8 ? 8 : type.size);
+    put(&v, type.size > 8 ? 8 : type.size);  // little-endian: its low bytes first
   }
 
   void pointer(const detail::TypeView& type, const std::uint8_t* p) {
@@ -140,7 +125,7 @@ class Saver {
       result_ = Result::TooManyPointers;
       return;
     }
-    targets_[target_count_] = Target{target, type.element};
+    targets_[target_count_] = Target{target, type.element, root};
     put32(format::kFirstReference + static_cast<std::uint32_t>(target_count_++));
   }
 
@@ -160,8 +145,7 @@ class Saver {
   // no such path: the save is refused rather than the pointer silently lost.
   void reference(std::size_t i) {
     const Target& target = targets_[i];
-    std::uint32_t root = 0;
-    find_root(target.address, &root);
+    const std::uint32_t root = target.root;
     std::uint32_t steps[kMaxPathSteps];
     std::size_t step_count = 0;
     std::uint32_t t = schema_.roots[root].type;
@@ -199,9 +183,8 @@ class Saver {
     const std::uint8_t base_kind = format::kBaseObject;
     put(&base_kind, 1);
     put32(root);
-    std::uint8_t count[2];
-    format::store16(count, static_cast<std::uint16_t>(step_count));
-    put(count, 2);
+    const std::uint16_t count = static_cast<std::uint16_t>(step_count);
+    put(&count, 2);
     for (std::size_t s = 0; s < step_count; ++s) put32(steps[s]);
     put32(target.type);
   }

@@ -290,28 +290,29 @@ extern "C" const symcr::PlannedSchema* symcr_program_plans(std::uint32_t* count)
 
 namespace symcr {
 // The device profile's compact tables (PROFILE device): what its runtime reads of each type and
-// field, in 16 and 8 bytes on a 32-bit target where a TypeInfo takes 96 and a FieldInfo 32.
+// field, in 12 and 6 bytes on a 32-bit target where a TypeInfo takes 96 and a FieldInfo 32.
 // A DeviceSchema begins with a Schema whose `types` is null while `type_count` counts the
 // entries of `types` here; its roots and program are that Schema's. The device runtime accepts
 // either form wherever it takes a Schema; the host runtime only TypeInfo tables.
 struct DeviceTypeInfo {
-  std::uint32_t size;         // sizeof(T) in the running build
-  std::uint32_t count;        // Array: its elements; Struct: its reference members
-  std::uint16_t element;      // Enum: underlying; Array: element; Pointer: pointee; else 0xFFFF
-  std::uint16_t first_field;  // Struct: its first field in DeviceSchema::fields, then its
-                              // reference members follow its fields
-  std::uint16_t field_count;  // Struct: its fields (bases first)
-  std::uint8_t kind;          // a Kind
-  std::uint8_t validator;     // 1 + its symcr_validate's index in `validators`; 0: none
+  std::uint32_t size;   // sizeof(T) in the running build
+  std::uint32_t count;  // Array: its elements; Struct: its fields (bases first) in the low 16
+                        // bits, its reference members in the high 16
+  union {
+    std::uint16_t element;      // Enum: underlying; Array: element; Pointer: pointee; else 0xFFFF
+    std::uint16_t first_field;  // Struct: its first field in DeviceSchema's field tables, then
+                                // its reference members follow its fields
+  };
+  std::uint8_t kind;       // a Kind
+  std::uint8_t validator;  // 1 + its symcr_validate's index in `validators`; 0: none
 };
 constexpr std::uint16_t kDeviceNoType = 0xFFFF;
-struct DeviceFieldInfo {
-  std::uint32_t offset;     // as FieldInfo's
-  std::uint16_t type;       // index into DeviceSchema::types
-  std::uint8_t bit_offset;  // bit-field: first bit within the unit
-  std::uint8_t bit_width;   // bit-field width; 0 = not a bit-field
+// The few bit-fields, SYMCR_RANGE bounds and clocks' times, by their field's index.
+struct DeviceBitField {
+  std::uint32_t field;
+  std::uint8_t bit_offset;  // first bit within the unit (the field's offset)
+  std::uint8_t bit_width;
 };
-// The few fields with a SYMCR_RANGE or a clock's time, by their index in DeviceSchema::fields.
 struct DeviceFieldRange {
   std::uint32_t field;
   FieldRange range;
@@ -323,8 +324,13 @@ struct DeviceFieldTime {
 struct DeviceSchema {
   Schema schema;  // types null: the types are `types` below
   const DeviceTypeInfo* types;
-  const DeviceFieldInfo* fields;
+  // Per field, in two arrays (6 bytes a field, unpadded): its offset as FieldInfo's (a
+  // bit-field's storage unit) and its type, an index into `types`.
+  const std::uint32_t* field_offsets;
+  const std::uint16_t* field_types;
   bool (*const* validators)(const void* object);
+  const DeviceBitField* bit_fields;
+  std::uint32_t bit_field_count;
   const DeviceFieldRange* ranges;
   std::uint32_t range_count;
   const DeviceFieldTime* times;

@@ -37,6 +37,7 @@ enum class Result : std::uint8_t {
   TooManyPointers,    // more distinct pointer targets than kMaxReferences
   Empty,              // Ring::restore_latest: no slot was ever written
   SequenceExhausted,  // Ring::save: the newest record's sequence is the last a ring writes
+  // (result_text() keeps its texts in this order, up to the last one above.)
 };
 
 // A short English description of `result`, for logs.

@@ -152,12 +152,18 @@ inline std::int64_t clock_reading(const std::uint8_t* readings, std::uint32_t cl
 // unless it holds `never` (compared in the same width). Both runtimes rebase with it.
 inline void rebase_time(std::uint8_t* p, std::size_t size, std::int64_t never,
                         std::uint64_t delta) {
-  std::uint64_t value = 0;
-  for (std::size_t i = size; i-- > 0;) value = (value << 8) | p[i];
-  const std::uint64_t mask = size >= 8 ? ~std::uint64_t{0} : (std::uint64_t{1} << (8 * size)) - 1;
-  if (value == (static_cast<std::uint64_t>(never) & mask)) return;
-  value = (value + delta) & mask;
-  for (std::size_t i = 0; i < size; ++i) p[i] = static_cast<std::uint8_t>(value >> (8 * i));
+  // Byte by byte, low byte first: no 64-bit shift by a variable count (a dozen instructions each
+  // on a 32-bit microcontroller).
+  std::uint64_t n = static_cast<std::uint64_t>(never);
+  bool is_never = true;
+  for (std::size_t i = 0; i < size; ++i, n >>= 8) is_never &= p[i] == static_cast<std::uint8_t>(n);
+  if (is_never) return;
+  unsigned carry = 0;
+  for (std::size_t i = 0; i < size; ++i, delta >>= 8) {
+    carry += p[i] + static_cast<std::uint8_t>(delta);
+    p[i] = static_cast<std::uint8_t>(carry);
+    carry >>= 8;
+  }
 }
 
 }  // namespace format
