@@ -7,6 +7,10 @@
 //
 //   <program> --cold-restore N STORE        the parent: N fresh processes per method
 //   <program> --cold-restore-child METHOD STORE    one child (internal)
+//
+// With SYMCR_COLD_COUNTERS=1 in the environment each child also counts its restore call's
+// instructions, cycles, iTLB, dTLB and L1i misses (user mode, perf_event_open), and the parent
+// prints their medians on a line of its own per method.
 #ifndef SYMCR_BENCHMARKS_SPECIMEN_COLD_RESTORE_HPP
 #define SYMCR_BENCHMARKS_SPECIMEN_COLD_RESTORE_HPP
 

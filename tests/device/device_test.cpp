@@ -475,11 +475,11 @@ TEST(DeviceRing, OnBackupSramATornRewriteNeverRevivesADamagedOlderRecord) {
       fill(seed);
       ASSERT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Ok);
     }
-    sram.bytes[512] ^= 0x01;      // save 2's magic
-    sram.bytes[1024] ^= 0x01;     // save 3's magic
-    fill(4);                      // goes after save 1, as sequence 2, into slot 1
+    sram.bytes[512] ^= 0x01;   // save 2's magic
+    sram.bytes[1024] ^= 0x01;  // save 3's magic
+    fill(4);                   // goes after save 1, as sequence 2, into slot 1
     ASSERT_EQ(ring.save(build(), b.record.data(), b.record.size()), Result::Ok);
-    fill(5);                      // goes into slot 2, as sequence 3: save 3's
+    fill(5);  // goes into slot 2, as sequence 3: save 3's
     sram.torn_after = cut;
     ring.save(build(), b.record.data(), b.record.size());
     sram.torn_after = SIZE_MAX;
@@ -553,6 +553,116 @@ TEST(DeviceRing, BadGeometriesAreRefused) {
             Result::NoSpace);  // one slot: no fallback possible
   Flash flash(4 * 512, 512);
   EXPECT_EQ(ring.open(flash.storage(), 300), Result::Unsupported);  // not whole erase units
+}
+
+// Arrays of values that are their bytes (numbers, enums, unions) restore element for element
+// whatever path the decoder takes for them; an array of bools is still checked element by
+// element, and a bad one refuses the record with the roots untouched.
+struct Series {
+  std::int16_t samples[5];
+  Raw raws[2];
+  bool seen[3];
+  Mode modes[2];
+  double levels[2];
+};
+Series series;
+
+const symcr::Schema& series_schema() {
+  enum : std::uint32_t {
+    kI16,
+    kSamples,
+    kRawT,
+    kRaws,
+    kBoolT,
+    kSeen,
+    kU8T,
+    kModeT,
+    kModes2,
+    kF64T,
+    kLevels,
+    kSeries,
+    kCount
+  };
+  static const symcr::FieldInfo fields[] = {field("samples", kSamples, offsetof(Series, samples)),
+                                            field("raws", kRaws, offsetof(Series, raws)),
+                                            field("seen", kSeen, offsetof(Series, seen)),
+                                            field("modes", kModes2, offsetof(Series, modes)),
+                                            field("levels", kLevels, offsetof(Series, levels))};
+  static const symcr::TypeInfo types[kCount] = {
+      scalar("int16", Kind::Int, 2),
+      array("int16[5]", kI16, 5, sizeof(Series::samples), alignof(std::int16_t)),
+      union_of("Raw", sizeof(Raw), alignof(Raw)),
+      array("Raw[2]", kRawT, 2, sizeof(Series::raws), alignof(Raw)),
+      scalar("bool", Kind::Bool, 1),
+      array("bool[3]", kBoolT, 3, sizeof(Series::seen), alignof(bool)),
+      scalar("uint8", Kind::UInt, 1),
+      enumeration("Mode", 1, kU8T, kModes, 2),
+      array("Mode[2]", kModeT, 2, sizeof(Series::modes), alignof(Mode)),
+      scalar("float64", Kind::Float, 8),
+      array("float64[2]", kF64T, 2, sizeof(Series::levels), alignof(double)),
+      record("Series", sizeof(Series), alignof(Series), fields, 5)};
+  static const symcr::RootInfo roots[] = {{"series", kSeries, &series, 0, nullptr}};
+  static const symcr::Schema schema{types, kCount, roots, 1, "device-series"};
+  return schema;
+}
+
+void fill_series() {
+  series = Series{{-7, 300, 0, 32767, -32768},
+                  {},
+                  {true, false, true},
+                  {Mode::Auto, Mode::Stabilize},
+                  {2.5, -1e300}};
+  series.raws[0].word = 0xDEADBEEFu;
+  series.raws[1].real = 0.125f;
+}
+
+TEST(DeviceProfile, ArraysOfNumbersEnumsUnionsAndBoolsRestoreEachElement) {
+  const symcr::Schema& schema = series_schema();
+  const symcr::device::Build series_build{&schema, symcr::detail::schema_blob(schema).hash};
+  fill_series();
+  std::vector<std::uint8_t> record(symcr::device::record_size(schema));
+  std::size_t size = 0;
+  ASSERT_EQ(symcr::device::save(series_build, 1, record.data(), record.size(), &size), Result::Ok);
+  record.resize(size);
+  std::vector<std::uint8_t> scratch(symcr::device::scratch_size(schema));
+  std::memset(static_cast<void*>(&series), 0x5A, sizeof series);
+  ASSERT_EQ(symcr::device::restore(series_build, record.data(), record.size(), scratch.data(),
+                                   scratch.size()),
+            Result::Ok);
+  const std::int16_t samples[] = {-7, 300, 0, 32767, -32768};
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(series.samples[i], samples[i]) << i;
+  EXPECT_EQ(series.raws[0].word, 0xDEADBEEFu);
+  EXPECT_EQ(series.raws[1].real, 0.125f);
+  EXPECT_TRUE(series.seen[0]);
+  EXPECT_FALSE(series.seen[1]);
+  EXPECT_TRUE(series.seen[2]);
+  EXPECT_EQ(series.modes[0], Mode::Auto);
+  EXPECT_EQ(series.modes[1], Mode::Stabilize);
+  EXPECT_EQ(series.levels[0], 2.5);
+  EXPECT_EQ(series.levels[1], -1e300);
+
+  // The payload follows the header: samples (10 bytes), raws (8), then seen[1].
+  constexpr std::size_t kSecondBool = 56 + 10 + 8 + 1;
+  record[kSecondBool] = 2;
+  reseal(record);
+  std::memset(static_cast<void*>(&series), 0x33, sizeof series);
+  std::vector<std::uint8_t> before(sizeof series);
+  std::memcpy(before.data(), &series, sizeof series);
+  EXPECT_EQ(symcr::device::restore(series_build, record.data(), record.size(), scratch.data(),
+                                   scratch.size()),
+            Result::Corrupt);
+  EXPECT_EQ(std::memcmp(before.data(), &series, sizeof series), 0);
+  // The host's first restore of its own checkpoint in a process takes the same decoder.
+  std::vector<std::uint8_t> host;
+  fill_series();
+  ASSERT_TRUE(symcr::checkpoint_to_buffer(schema, host).ok());
+  std::memset(static_cast<void*>(&series), 0x5A, sizeof series);
+  const symcr::Report restored = symcr::restore_from_buffer(schema, host.data(), host.size());
+  ASSERT_TRUE(restored.ok()) << restored.status().message();
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(series.samples[i], samples[i]) << i;
+  EXPECT_EQ(series.raws[0].word, 0xDEADBEEFu);
+  EXPECT_EQ(series.modes[0], Mode::Auto);
+  EXPECT_EQ(series.levels[1], -1e300);
 }
 
 TEST(DeviceProfile, ResultsHaveTexts) {

@@ -116,12 +116,15 @@ TEST(Crc32c, HardwareAndPortableAgreeAtEveryLengthAndAlignment) {
 TEST(Crc32c, HardwareAndPortableAgreeAroundChainBlockBoundaries) {
   if (!crc32c_hardware_available()) GTEST_SKIP() << "no SSE4.2 on this CPU";
   std::mt19937 random(777);
-  std::vector<std::uint8_t> data(3 * 3 * 8192 + 3 * 256 + 64);
+  // Chains of 256 bytes, 8 KiB and 64 KiB, and their mixes.
+  std::vector<std::uint8_t> data(2 * 3 * 65536 + 3 * 8192 + 3 * 256 + 64);
   for (auto& byte : data) byte = static_cast<std::uint8_t>(random());
   std::vector<std::size_t> sizes;
-  for (std::size_t base : {std::size_t{3 * 256}, std::size_t{2 * 3 * 256}, std::size_t{3 * 8192},
-                           std::size_t{3 * 8192 + 3 * 256}, std::size_t{2 * 3 * 8192},
-                           std::size_t{3 * 3 * 8192}}) {
+  for (std::size_t base :
+       {std::size_t{3 * 256}, std::size_t{2 * 3 * 256}, std::size_t{3 * 8192},
+        std::size_t{3 * 8192 + 3 * 256}, std::size_t{2 * 3 * 8192}, std::size_t{3 * 3 * 8192},
+        std::size_t{3 * 65536}, std::size_t{3 * 65536 + 3 * 8192 + 3 * 256},
+        std::size_t{2 * 3 * 65536}}) {
     for (std::size_t delta = 0; delta <= 17; ++delta) {
       sizes.push_back(base + delta);
       if (base >= delta) sizes.push_back(base - delta);
@@ -139,9 +142,9 @@ TEST(Crc32c, HardwareAndPortableAgreeAroundChainBlockBoundaries) {
   // Split anywhere: extending equals one call across block boundaries.
   const std::size_t n = 2 * 3 * 8192 + 5;
   const std::uint32_t whole = crc32c_extend_portable(0, data.data(), n);
-  for (std::size_t split : {std::size_t{0}, std::size_t{1}, std::size_t{767}, std::size_t{768},
-                            std::size_t{769}, std::size_t{24575}, std::size_t{24576},
-                            std::size_t{24577}, n}) {
+  for (std::size_t split :
+       {std::size_t{0}, std::size_t{1}, std::size_t{767}, std::size_t{768}, std::size_t{769},
+        std::size_t{24575}, std::size_t{24576}, std::size_t{24577}, n}) {
     EXPECT_EQ(crc32c_extend_hardware(crc32c_extend_hardware(0, data.data(), split),
                                      data.data() + split, n - split),
               whole)
@@ -168,7 +171,8 @@ TEST(Crc32c, CopyingChecksumsExactlyTheBytesCopied) {
   std::vector<std::uint8_t> source(3 * 3 * 8192 + 3 * 256 + 64);
   for (auto& byte : source) byte = static_cast<std::uint8_t>(random());
   std::vector<std::size_t> sizes = {0, 1, 7, 8, 9, 100};
-  for (std::size_t base : {std::size_t{3 * 256}, std::size_t{3 * 8192}, std::size_t{3 * 3 * 8192}}) {
+  for (std::size_t base :
+       {std::size_t{3 * 256}, std::size_t{3 * 8192}, std::size_t{3 * 3 * 8192}}) {
     for (std::size_t delta : {std::size_t{0}, std::size_t{1}, std::size_t{8}, std::size_t{13}}) {
       sizes.push_back(base + delta);
       sizes.push_back(base - delta - 1);
@@ -188,8 +192,7 @@ TEST(Crc32c, CopyingChecksumsExactlyTheBytesCopied) {
           const std::uint32_t crc =
               hardware ? crc32c_copy_hardware(seed, destination.data() + 8 + to,
                                               source.data() + from, size)
-                       : crc32c_copy(seed, destination.data() + 8 + to, source.data() + from,
-                                     size);
+                       : crc32c_copy(seed, destination.data() + 8 + to, source.data() + from, size);
           ASSERT_EQ(crc, expected) << "size " << size << " from " << from << " to " << to;
           ASSERT_EQ(std::memcmp(destination.data() + 8 + to, source.data() + from, size), 0)
               << "size " << size;
@@ -212,18 +215,27 @@ TEST(Crc32c, LargeCopiesBypassingTheCachesChecksumExactlyTheBytesCopied) {
   std::vector<std::uint8_t> source(kSize + 16);
   for (auto& byte : source) byte = static_cast<std::uint8_t>(random());
   constexpr std::uint8_t kGuard = 0x5A;
-  std::vector<std::uint8_t> destination(kSize + 64);
-  for (std::size_t to : {std::size_t{0}, std::size_t{1}, std::size_t{9}, std::size_t{15}}) {
-    const std::size_t from = 3;
+  constexpr std::size_t kPeriod = 4096;  // the destination's place relative to the source, below
+  std::vector<std::uint8_t> destination(kSize + 2 * kPeriod);
+  const std::uint8_t* from = source.data() + 3;
+  const auto from_address = reinterpret_cast<std::uintptr_t>(from);
+  // Copies of this size take one of two streaming paths, chosen by where the destination lies
+  // past the source modulo 4 KiB (kPeriod): at 0 or far, word chains; just past, folding. Both,
+  // at several alignments of the destination.
+  for (std::size_t lead :
+       {std::size_t{0}, std::size_t{1}, std::size_t{9}, std::size_t{15}, std::size_t{100},
+        std::size_t{511}, std::size_t{512}, std::size_t{2049}, kPeriod - 1}) {
+    const auto base = reinterpret_cast<std::uintptr_t>(destination.data()) + kPeriod;
+    const std::size_t at = kPeriod + ((from_address + lead - base) & (kPeriod - 1));
+    std::uint8_t* into = destination.data() + at;
+    ASSERT_EQ((reinterpret_cast<std::uintptr_t>(into) - from_address) & (kPeriod - 1), lead);
     const std::uint32_t seed = static_cast<std::uint32_t>(random());
-    const std::uint32_t expected = crc32c_extend_portable(seed, source.data() + from, kSize);
+    const std::uint32_t expected = crc32c_extend_portable(seed, from, kSize);
     std::fill(destination.begin(), destination.end(), kGuard);
-    // The vector's data is 16-byte aligned, so `to` is the destination's misalignment.
-    std::uint8_t* into = destination.data() + 16 + to;
-    ASSERT_EQ(crc32c_copy(seed, into, source.data() + from, kSize), expected) << "to " << to;
-    ASSERT_EQ(std::memcmp(into, source.data() + from, kSize), 0) << "to " << to;
-    for (std::size_t i = 0; i < 16 + to; ++i) ASSERT_EQ(destination[i], kGuard) << i;
-    for (std::size_t i = 16 + to + kSize; i < destination.size(); ++i) {
+    ASSERT_EQ(crc32c_copy(seed, into, from, kSize), expected) << "lead " << lead;
+    ASSERT_EQ(std::memcmp(into, from, kSize), 0) << "lead " << lead;
+    for (std::size_t i = 0; i < at; ++i) ASSERT_EQ(destination[i], kGuard) << i;
+    for (std::size_t i = at + kSize; i < destination.size(); ++i) {
       ASSERT_EQ(destination[i], kGuard) << i;
     }
   }

@@ -4,69 +4,6 @@ namespace symcr {
 namespace device {
 namespace detail {
 
-TypeView type_at(const Schema& schema, std::uint32_t t) {
-  TypeView view;
-  if (const DeviceSchema* device = compact(schema)) {
-    const DeviceTypeInfo& type = device->types[t];
-    view.kind = static_cast<Kind>(type.kind);
-    view.size = type.size;
-    const bool is_struct = view.kind == Kind::Struct;
-    view.element = is_struct || type.element == kDeviceNoType ? kNoType : type.element;
-    view.count = is_struct ? 0 : type.count;
-    view.field_count = is_struct ? type.count & 0xFFFFu : 0;
-    view.member_count = view.field_count + (is_struct ? type.count >> 16 : 0);
-    view.validate = type.validator != 0 ? device->validators[type.validator - 1] : nullptr;
-    return view;
-  }
-  const TypeInfo& type = schema.types[t];
-  view.kind = type.kind;
-  view.size = type.size;
-  view.element = type.element;
-  view.count = type.count;
-  view.field_count = type.field_count;
-  view.member_count = type.field_count + type.reference_member_count;
-  view.validate = type.validate;
-  return view;
-}
-
-FieldView field_at(const Schema& schema, std::uint32_t t, std::uint32_t f) {
-  FieldView view;
-  if (const DeviceSchema* device = compact(schema)) {
-    const std::uint32_t index = device->types[t].first_field + f;
-    view.type = device->field_types[index];
-    view.offset = device->field_offsets[index];
-    view.bit_offset = 0;
-    view.bit_width = 0;
-    view.range = nullptr;
-    view.time = nullptr;
-    for (std::uint32_t i = 0; i < device->bit_field_count; ++i) {
-      if (device->bit_fields[i].field == index) {
-        view.bit_offset = device->bit_fields[i].bit_offset;
-        view.bit_width = device->bit_fields[i].bit_width;
-      }
-    }
-    for (std::uint32_t i = 0; i < device->range_count; ++i) {
-      if (device->ranges[i].field == index) view.range = &device->ranges[i].range;
-    }
-    for (std::uint32_t i = 0; i < device->time_count; ++i) {
-      if (device->times[i].field == index && device->times[i].time.clock != nullptr) {
-        view.time = &device->times[i].time;
-      }
-    }
-    return view;
-  }
-  const TypeInfo& type = schema.types[t];
-  const FieldInfo& field =
-      f < type.field_count ? type.fields[f] : type.reference_members[f - type.field_count];
-  view.type = field.type;
-  view.offset = field.offset;
-  view.bit_offset = field.bit_offset;
-  view.bit_width = field.bit_width;
-  view.range = (field.flags & kFieldHasRange) ? field.range : nullptr;
-  view.time = format::field_clock(field) != nullptr ? field.time : nullptr;
-  return view;
-}
-
 namespace {
 
 // Types nest by value only as deep as the source does; the bound guards hand-written tables.
@@ -119,7 +56,11 @@ std::size_t wire_size(const Schema& schema, std::uint32_t t) {
   if (type.kind == Kind::Struct) {
     std::size_t total = 0;
     for (std::uint32_t f = 0; f < type.field_count; ++f) {
-      total += wire_size(schema, field_at(schema, t, f).type);
+      const std::uint32_t member = field_at(schema, t, f).type;
+      const TypeView view = type_at(schema, member);
+      // Built for speed, a field that is neither struct nor array is sized without a call.
+      const bool nests = view.kind == Kind::Struct || view.kind == Kind::Array;
+      total += kBuiltForSize || nests ? wire_size(schema, member) : format::own_wire_size(view);
     }
     return total;
   }

@@ -41,9 +41,6 @@ struct FieldView {
   const FieldRange* range;  // its SYMCR_RANGE, or null
   const FieldTime* time;    // the clock of its times, or null
 };
-// `t` < schema.type_count; `f` < type_at(schema, t).member_count.
-TypeView type_at(const Schema& schema, std::uint32_t t);
-FieldView field_at(const Schema& schema, std::uint32_t t, std::uint32_t f);
 // The compact tables `schema` heads, or null for TypeInfo tables.
 inline const DeviceSchema* compact(const Schema& schema) {
   return schema.types == nullptr && schema.type_count != 0
@@ -51,6 +48,83 @@ inline const DeviceSchema* compact(const Schema& schema) {
              : nullptr;
 }
 static_assert(offsetof(DeviceSchema, schema) == 0, "a DeviceSchema begins with its Schema");
+
+// Built for size (-Os, a microcontroller's flash) the decoder keeps one copy of each step;
+// built for speed it inlines the two accessors below, so that a walk reads only the members it
+// uses, and takes shortcuts for plain numbers: a host's first restore in a fresh process walks
+// every field, and the calls were most of its instructions. Both builds are tested (the
+// Cortex-M4 tests at -Os, the host's at -O2).
+#if defined(__OPTIMIZE_SIZE__)
+constexpr bool kBuiltForSize = true;
+#define SYMCR_DEVICE_ACCESSOR inline __attribute__((noinline))
+#else
+constexpr bool kBuiltForSize = false;
+#define SYMCR_DEVICE_ACCESSOR inline __attribute__((always_inline))
+#endif
+
+// `t` < schema.type_count; `f` < type_at(schema, t).member_count.
+SYMCR_DEVICE_ACCESSOR TypeView type_at(const Schema& schema, std::uint32_t t) {
+  TypeView view;
+  if (const DeviceSchema* device = compact(schema)) {
+    const DeviceTypeInfo& type = device->types[t];
+    view.kind = static_cast<Kind>(type.kind);
+    view.size = type.size;
+    const bool is_struct = view.kind == Kind::Struct;
+    view.element = is_struct || type.element == kDeviceNoType ? kNoType : type.element;
+    view.count = is_struct ? 0 : type.count;
+    view.field_count = is_struct ? type.count & 0xFFFFu : 0;
+    view.member_count = view.field_count + (is_struct ? type.count >> 16 : 0);
+    view.validate = type.validator != 0 ? device->validators[type.validator - 1] : nullptr;
+    return view;
+  }
+  const TypeInfo& type = schema.types[t];
+  view.kind = type.kind;
+  view.size = type.size;
+  view.element = type.element;
+  view.count = type.count;
+  view.field_count = type.field_count;
+  view.member_count = type.field_count + type.reference_member_count;
+  view.validate = type.validate;
+  return view;
+}
+
+SYMCR_DEVICE_ACCESSOR FieldView field_at(const Schema& schema, std::uint32_t t, std::uint32_t f) {
+  FieldView view;
+  if (const DeviceSchema* device = compact(schema)) {
+    const std::uint32_t index = device->types[t].first_field + f;
+    view.type = device->field_types[index];
+    view.offset = device->field_offsets[index];
+    view.bit_offset = 0;
+    view.bit_width = 0;
+    view.range = nullptr;
+    view.time = nullptr;
+    for (std::uint32_t i = 0; i < device->bit_field_count; ++i) {
+      if (device->bit_fields[i].field == index) {
+        view.bit_offset = device->bit_fields[i].bit_offset;
+        view.bit_width = device->bit_fields[i].bit_width;
+      }
+    }
+    for (std::uint32_t i = 0; i < device->range_count; ++i) {
+      if (device->ranges[i].field == index) view.range = &device->ranges[i].range;
+    }
+    for (std::uint32_t i = 0; i < device->time_count; ++i) {
+      if (device->times[i].field == index && device->times[i].time.clock != nullptr) {
+        view.time = &device->times[i].time;
+      }
+    }
+    return view;
+  }
+  const TypeInfo& type = schema.types[t];
+  const FieldInfo& field =
+      f < type.field_count ? type.fields[f] : type.reference_members[f - type.field_count];
+  view.type = field.type;
+  view.offset = field.offset;
+  view.bit_offset = field.bit_offset;
+  view.bit_width = field.bit_width;
+  view.range = (field.flags & kFieldHasRange) ? field.range : nullptr;
+  view.time = format::field_clock(field) != nullptr ? field.time : nullptr;
+  return view;
+}
 inline std::uint32_t root_size(const Schema& schema, std::uint32_t root) {
   return type_at(schema, schema.roots[root].type).size;
 }

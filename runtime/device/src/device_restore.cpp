@@ -106,6 +106,12 @@ class Restorer {
     return type == pointee ? Result::Ok : Result::Corrupt;
   }
 
+  // Kinds whose wire bytes are their memory bytes (Bool is checked, Pointer translated).
+  static bool is_bytes(Kind kind) {
+    return kind == Kind::Int || kind == Kind::UInt || kind == Kind::Enum || kind == Kind::Float ||
+           kind == Kind::Union;
+  }
+
   const std::uint8_t* take(std::size_t n) {
     const std::uint8_t* bytes = payload_ + at_;
     at_ += n;
@@ -126,7 +132,13 @@ class Restorer {
       case Kind::Pointer:
         return pointer(type, stage);
       case Kind::Array: {
-        const std::size_t stride = detail::type_at(schema_, type.element).size;
+        const detail::TypeView element = detail::type_at(schema_, type.element);
+        const std::size_t stride = element.size;
+        // Values that are their bytes, with no time to move: in one copy.
+        if (!detail::kBuiltForSize && time == nullptr && is_bytes(element.kind)) {
+          std::memcpy(stage, take(stride * type.count), stride * type.count);
+          return Result::Ok;
+        }
         for (std::size_t i = 0; i < type.count; ++i) {
           const Result result = value(type.element, stage + i * stride, time);
           if (result != Result::Ok) return result;
@@ -137,10 +149,18 @@ class Restorer {
         for (std::uint32_t f = 0; f < type.field_count; ++f) {
           const detail::FieldView field = detail::field_at(schema_, t, f);
           const std::uint8_t* wire = payload_ + at_;  // a scalar's value, bit-fields' too
-          const Result result = field.bit_width != 0
-                                    ? bit_field(field, stage + field.offset)
-                                    : value(field.type, stage + field.offset, field.time);
-          if (result != Result::Ok) return result;
+          if (field.bit_width != 0) {
+            const Result result = bit_field(field, stage + field.offset);
+            if (result != Result::Ok) return result;
+          } else if (!detail::kBuiltForSize &&
+                     is_bytes(detail::type_at(schema_, field.type).kind)) {
+            // Decoded here rather than by a call (the accessors inlined, one type read): most
+            // fields are numbers.
+            bytes(detail::type_at(schema_, field.type), stage + field.offset, field.time);
+          } else {
+            const Result result = value(field.type, stage + field.offset, field.time);
+            if (result != Result::Ok) return result;
+          }
           if (field.range != nullptr && !in_range(field, wire)) {
             return Result::Rejected;
           }
@@ -149,11 +169,33 @@ class Restorer {
         return type.validate != nullptr && !type.validate(stage) ? Result::Rejected : Result::Ok;
       }
       default:  // Int, UInt, Enum, Float, Union: their bytes
-        std::memcpy(stage, take(type.size), type.size);
-        if (time != nullptr && (type.kind == Kind::Int || type.kind == Kind::UInt)) {
-          format::rebase_time(stage, type.size, time->never, deltas_[time->clock->index]);
-        }
+        bytes(type, stage, time);
         return Result::Ok;
+    }
+  }
+
+  // A value that is its bytes (is_bytes()), an integer time moved by its clock's advance.
+  void bytes(const detail::TypeView& type, std::uint8_t* stage, const FieldTime* time) {
+    const std::uint8_t* wire = take(type.size);
+    // Built for speed, the common sizes are copied by a move each, not by a call of memcpy.
+    switch (detail::kBuiltForSize ? 0 : type.size) {
+      case 1:
+        *stage = *wire;
+        break;
+      case 2:
+        std::memcpy(stage, wire, 2);
+        break;
+      case 4:
+        std::memcpy(stage, wire, 4);
+        break;
+      case 8:
+        std::memcpy(stage, wire, 8);
+        break;
+      default:
+        std::memcpy(stage, wire, type.size);
+    }
+    if (time != nullptr && (type.kind == Kind::Int || type.kind == Kind::UInt)) {
+      format::rebase_time(stage, type.size, time->never, deltas_[time->clock->index]);
     }
   }
 
