@@ -301,6 +301,19 @@ __attribute__((target("sse4.2,pclmul"))) std::uint32_t fold_blocks(std::uint32_t
   return static_cast<std::uint32_t>(c);
 }
 
+// Copies the bytes of `p` to `d` one by one, checksumming them into the raw register `c`, until
+// `d` is a multiple of `alignment` (a power of two, as streamed stores want); advances all three.
+__attribute__((target("sse4.2"))) inline std::uint32_t copy_until_aligned(
+    std::uint32_t c, std::uint8_t*& d, const std::uint8_t*& p, std::size_t& size,
+    std::uintptr_t alignment) {
+  while ((reinterpret_cast<std::uintptr_t>(d) & (alignment - 1)) != 0) {
+    *d++ = *p;
+    c = _mm_crc32_u8(c, *p++);
+    --size;
+  }
+  return c;
+}
+
 // crc32c_extend_hardware, and with kCopy crc32c_copy_hardware: the bytes of `p` copied to `d`.
 template <bool kCopy>
 __attribute__((target("sse4.2"))) std::uint32_t extend_hardware(std::uint32_t crc, std::uint8_t* d,
@@ -320,11 +333,7 @@ __attribute__((target("sse4.2"))) std::uint32_t extend_hardware(std::uint32_t cr
         (kAliasingPeriod - 1);
     if (lead == 0 || lead >= kAliasingReach || !carryless_multiply_available()) {
       // A streamed store that straddles two cache lines is many times slower: `d` word-aligned.
-      while ((reinterpret_cast<std::uintptr_t>(d) & 7) != 0) {
-        *d++ = *p;
-        c = _mm_crc32_u8(c, *p++);
-        --size;
-      }
+      c = copy_until_aligned(c, d, p, size, 8);
       while (size >= 3 * kHugeBlock) {
         c = three_chains<kCopy, true>(c, d, p, kHugeBlock, kHugeBlockShift);
         p += 3 * kHugeBlock;
@@ -332,11 +341,7 @@ __attribute__((target("sse4.2"))) std::uint32_t extend_hardware(std::uint32_t cr
         size -= 3 * kHugeBlock;
       }
     } else {
-      while ((reinterpret_cast<std::uintptr_t>(d) & 15) != 0) {
-        *d++ = *p;
-        c = _mm_crc32_u8(c, *p++);
-        --size;
-      }
+      c = copy_until_aligned(c, d, p, size, 16);
       c = fold_blocks<kCopy, true>(c, d, p, size);
     }
     _mm_sfence();  // the streamed stores are ordered before any later store
