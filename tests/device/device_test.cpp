@@ -665,6 +665,198 @@ TEST(DeviceProfile, ArraysOfNumbersEnumsUnionsAndBoolsRestoreEachElement) {
   EXPECT_EQ(series.levels[1], -1e300);
 }
 
+// Structs whose fields are all plain numbers, in arrays, restore by the same few copies per
+// element when the decoder is built for speed: what lies between their fields (padding, bytes
+// no field names) keeps its live value, and a range, a validator or a bool among the fields
+// still decides the record. A struct of more separate runs than the decoder copies at once goes
+// field by field, to the same values.
+struct Sample {
+  std::uint16_t a, b, c;  // then two bytes of padding
+  std::uint32_t d;
+  float level;  // ranged [0, 1]
+};
+struct Pair {  // validated: x <= y
+  std::int32_t x, y;
+};
+struct Switch {
+  std::uint8_t u;
+  bool on;
+  std::int16_t v;
+};
+struct Gappy {  // ten fields at the even offsets: ten runs
+  std::uint8_t bytes[20];
+};
+struct Table {
+  Sample samples[3];
+  Pair pairs[2];
+  Switch switches[2];
+  Gappy gappy[2];
+};
+Table table;
+
+const symcr::FieldRange kUnit{0.0, 1.0};
+bool ordered_pair(const void* object) {
+  const Pair& pair = *static_cast<const Pair*>(object);
+  return pair.x <= pair.y;
+}
+
+const symcr::Schema& table_schema() {
+  enum : std::uint32_t {
+    kU16,
+    kU32,
+    kF32,
+    kSample,
+    kSamples,
+    kI32,
+    kPair,
+    kPairs,
+    kU8,
+    kBool,
+    kI16,
+    kSwitch,
+    kSwitches,
+    kGappy,
+    kGappies,
+    kTable,
+    kCount
+  };
+  static const symcr::FieldInfo sample_fields[] = {
+      field("a", kU16, offsetof(Sample, a)), field("b", kU16, offsetof(Sample, b)),
+      field("c", kU16, offsetof(Sample, c)), field("d", kU32, offsetof(Sample, d)),
+      ranged("level", kF32, offsetof(Sample, level), kUnit)};
+  static const symcr::FieldInfo pair_fields[] = {field("x", kI32, offsetof(Pair, x)),
+                                                 field("y", kI32, offsetof(Pair, y))};
+  static const symcr::FieldInfo switch_fields[] = {field("u", kU8, offsetof(Switch, u)),
+                                                   field("on", kBool, offsetof(Switch, on)),
+                                                   field("v", kI16, offsetof(Switch, v))};
+  static const symcr::FieldInfo gappy_fields[] = {
+      field("b0", kU8, 0),   field("b2", kU8, 2),   field("b4", kU8, 4),   field("b6", kU8, 6),
+      field("b8", kU8, 8),   field("b10", kU8, 10), field("b12", kU8, 12), field("b14", kU8, 14),
+      field("b16", kU8, 16), field("b18", kU8, 18)};
+  static const symcr::FieldInfo table_fields[] = {
+      field("samples", kSamples, offsetof(Table, samples)),
+      field("pairs", kPairs, offsetof(Table, pairs)),
+      field("switches", kSwitches, offsetof(Table, switches)),
+      field("gappy", kGappies, offsetof(Table, gappy))};
+  static const symcr::TypeInfo types[kCount] = {
+      scalar("uint16", Kind::UInt, 2),
+      scalar("uint32", Kind::UInt, 4),
+      scalar("float32", Kind::Float, 4),
+      record("Sample", sizeof(Sample), alignof(Sample), sample_fields, 5),
+      array("Sample[3]", kSample, 3, sizeof(Table::samples), alignof(Sample)),
+      scalar("int32", Kind::Int, 4),
+      record("Pair", sizeof(Pair), alignof(Pair), pair_fields, 2, nullptr, ordered_pair),
+      array("Pair[2]", kPair, 2, sizeof(Table::pairs), alignof(Pair)),
+      scalar("uint8", Kind::UInt, 1),
+      scalar("bool", Kind::Bool, 1),
+      scalar("int16", Kind::Int, 2),
+      record("Switch", sizeof(Switch), alignof(Switch), switch_fields, 3),
+      array("Switch[2]", kSwitch, 2, sizeof(Table::switches), alignof(Switch)),
+      record("Gappy", sizeof(Gappy), alignof(Gappy), gappy_fields, 10),
+      array("Gappy[2]", kGappy, 2, sizeof(Table::gappy), alignof(Gappy)),
+      record("Table", sizeof(Table), alignof(Table), table_fields, 4)};
+  static const symcr::RootInfo roots[] = {{"table", kTable, &table, 0, nullptr}};
+  static const symcr::Schema schema{types, kCount, roots, 1, "device-table"};
+  return schema;
+}
+
+void fill_table() {
+  std::memset(static_cast<void*>(&table), 0, sizeof table);
+  for (int i = 0; i < 3; ++i) {
+    table.samples[i] =
+        Sample{static_cast<std::uint16_t>(100 + i), static_cast<std::uint16_t>(200 + i),
+               static_cast<std::uint16_t>(300 + i), 70000u + static_cast<std::uint32_t>(i),
+               0.25f * static_cast<float>(i)};
+  }
+  table.pairs[0] = Pair{-5, 5};
+  table.pairs[1] = Pair{7, 7};
+  table.switches[0] = Switch{9, true, -300};
+  table.switches[1] = Switch{250, false, 12345};
+  for (int g = 0; g < 2; ++g) {
+    for (int b = 0; b < 20; ++b) table.gappy[g].bytes[b] = static_cast<std::uint8_t>(g * 20 + b);
+  }
+}
+
+// The restored table: fill_table()'s values where a field is, `live` in the bytes between them.
+void expect_table(std::uint8_t live) {
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(table.samples[i].a, 100 + i) << i;
+    EXPECT_EQ(table.samples[i].b, 200 + i) << i;
+    EXPECT_EQ(table.samples[i].c, 300 + i) << i;
+    EXPECT_EQ(table.samples[i].d, 70000u + static_cast<std::uint32_t>(i)) << i;
+    EXPECT_EQ(table.samples[i].level, 0.25f * static_cast<float>(i)) << i;
+    const auto* padding = reinterpret_cast<const std::uint8_t*>(&table.samples[i]) + 6;
+    EXPECT_EQ(padding[0], live) << i;
+    EXPECT_EQ(padding[1], live) << i;
+  }
+  EXPECT_EQ(table.pairs[0].x, -5);
+  EXPECT_EQ(table.pairs[1].y, 7);
+  EXPECT_EQ(table.switches[0].u, 9);
+  EXPECT_TRUE(table.switches[0].on);
+  EXPECT_EQ(table.switches[0].v, -300);
+  EXPECT_EQ(table.switches[1].u, 250);
+  EXPECT_FALSE(table.switches[1].on);
+  EXPECT_EQ(table.switches[1].v, 12345);
+  for (int g = 0; g < 2; ++g) {
+    for (int b = 0; b < 20; ++b) {
+      EXPECT_EQ(table.gappy[g].bytes[b], b % 2 == 0 ? g * 20 + b : live) << g << " " << b;
+    }
+  }
+}
+
+TEST(DeviceProfile, StructsOfNumbersInArraysRestoreByRunsAndKeepTheirChecks) {
+  static_assert(offsetof(Sample, d) == 8, "two bytes of padding after Sample::c");
+  const symcr::Schema& schema = table_schema();
+  const symcr::device::Build table_build{&schema, symcr::detail::schema_blob(schema).hash};
+  std::vector<std::uint8_t> scratch(symcr::device::scratch_size(schema));
+  const auto save = [&] {
+    std::vector<std::uint8_t> record(symcr::device::record_size(schema));
+    std::size_t size = 0;
+    EXPECT_EQ(symcr::device::save(table_build, 1, record.data(), record.size(), &size), Result::Ok);
+    record.resize(size);
+    return record;
+  };
+  const auto restore = [&](const std::vector<std::uint8_t>& record) {
+    return symcr::device::restore(table_build, record.data(), record.size(), scratch.data(),
+                                  scratch.size());
+  };
+  const auto refused = [&](const std::vector<std::uint8_t>& record, Result expected) {
+    std::memset(static_cast<void*>(&table), 0x33, sizeof table);
+    std::vector<std::uint8_t> before(sizeof table);
+    std::memcpy(before.data(), &table, sizeof table);
+    EXPECT_EQ(restore(record), expected);
+    EXPECT_EQ(std::memcmp(before.data(), &table, sizeof table), 0);
+  };
+  fill_table();
+  const std::vector<std::uint8_t> good = save();
+  std::memset(static_cast<void*>(&table), 0x5A, sizeof table);
+  ASSERT_EQ(restore(good), Result::Ok);
+  expect_table(0x5A);
+
+  fill_table();
+  table.samples[2].level = 1.5f;  // out of its range
+  refused(save(), Result::Rejected);
+  fill_table();
+  table.pairs[1] = Pair{8, 7};  // refused by its validator
+  refused(save(), Result::Rejected);
+  // The payload follows the header: samples (3 x 14 bytes), pairs (2 x 8), then switches[1].on.
+  constexpr std::size_t kSecondSwitchOn = 56 + 3 * 14 + 2 * 8 + 4 + 1;
+  std::vector<std::uint8_t> bad_bool = good;
+  ASSERT_EQ(bad_bool[kSecondSwitchOn], 0);
+  bad_bool[kSecondSwitchOn] = 2;
+  reseal(bad_bool);
+  refused(bad_bool, Result::Corrupt);
+
+  // The host's first restore of its own checkpoint in a process takes the same decoder.
+  std::vector<std::uint8_t> host;
+  fill_table();
+  ASSERT_TRUE(symcr::checkpoint_to_buffer(schema, host).ok());
+  std::memset(static_cast<void*>(&table), 0x6B, sizeof table);
+  const symcr::Report restored = symcr::restore_from_buffer(schema, host.data(), host.size());
+  ASSERT_TRUE(restored.ok()) << restored.status().message();
+  expect_table(0x6B);
+}
+
 TEST(DeviceProfile, ResultsHaveTexts) {
   EXPECT_STREQ(symcr::device::result_text(Result::Ok), "ok");
   EXPECT_STREQ(symcr::device::result_text(Result::OtherSchema), "record of another build's schema");

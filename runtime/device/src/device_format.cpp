@@ -53,6 +53,19 @@ std::uint32_t first_unheld_type(const Schema& schema) {
 // value's own bytes.
 std::size_t wire_size(const Schema& schema, std::uint32_t t) {
   const TypeView type = type_at(schema, t);
+  if (!kBuiltForSize && type.kind == Kind::Struct && schema.types != nullptr) {
+    // Built for speed, over a host's TypeInfo tables: read straight from them (a host's first
+    // restore sizes every root before it decodes).
+    const TypeInfo* const types = schema.types;
+    std::size_t total = 0;
+    for (std::uint32_t f = 0; f < type.field_count; ++f) {
+      const std::uint32_t member = types[t].fields[f].type;
+      const Kind kind = types[member].kind;
+      total += kind == Kind::Struct || kind == Kind::Array ? wire_size(schema, member)
+                                                           : format::own_wire_size(types[member]);
+    }
+    return total;
+  }
   if (type.kind == Kind::Struct) {
     std::size_t total = 0;
     for (std::uint32_t f = 0; f < type.field_count; ++f) {
@@ -96,7 +109,13 @@ const ClockInfo* clocks_walk(const Schema& schema, std::uint32_t index, std::uin
     const TypeView type = type_at(schema, t);
     if (type.kind != Kind::Struct) continue;
     for (std::uint32_t f = 0; f < type.field_count; ++f) {
-      const FieldTime* time = field_at(schema, t, f).time;
+      // Built for speed, a host's TypeInfo tables are read straight (every restore counts the
+      // clocks).
+      const FieldTime* time =
+          !kBuiltForSize && schema.types != nullptr
+              ? (format::field_clock(schema.types[t].fields[f]) ? schema.types[t].fields[f].time
+                                                                : nullptr)
+              : field_at(schema, t, f).time;
       if (time == nullptr) continue;
       if (time->clock->index == index) return time->clock;
       if (time->clock->index >= *count) *count = time->clock->index + 1;
@@ -114,6 +133,10 @@ std::uint32_t clock_count(const Schema& schema) {
 const ClockInfo* clock_at(const Schema& schema, std::uint32_t index) {
   std::uint32_t ignored = 0;
   return clocks_walk(schema, index, &ignored);
+}
+
+PayloadShape payload_shape(const Schema& schema) {
+  return PayloadShape{values_size(schema), clock_count(schema)};
 }
 
 std::size_t values_size(const Schema& schema) {

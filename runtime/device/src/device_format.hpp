@@ -135,10 +135,18 @@ std::uint32_t first_unheld_type(const Schema& schema);
 // bytes of all roots' values. Only for schemas first_unheld_type() accepts.
 std::size_t wire_size(const Schema& schema, std::uint32_t type);
 std::size_t values_size(const Schema& schema);
-// restore_payload() for a schema first_unheld_type() already accepted (the host checks that
-// once per schema, not once per restore).
+// What every payload of a schema holds before and after its reference table: the values'
+// bytes (values_size()) and the clocks whose readings end it (clock_count()).
+struct PayloadShape {
+  std::size_t values;
+  std::uint32_t clocks;
+};
+PayloadShape payload_shape(const Schema& schema);
+// restore_payload() for a schema first_unheld_type() already accepted. `shape`: its
+// payload_shape(), found once per schema by a host, or null to find it here.
 Result restore_held_payload(const Schema& schema, const std::uint8_t* payload, std::size_t size,
-                            std::uint8_t* scratch, std::size_t scratch_capacity);
+                            std::uint8_t* scratch, std::size_t scratch_capacity,
+                            const PayloadShape* shape = nullptr);
 // The cross-version executor (device_plan.cpp), weak: null unless the firmware links it (see
 // Build). The plan image `build` embeds for checkpoints of the build whose schema hashes to
 // `writer_hash` (device_plan.hpp), or null.

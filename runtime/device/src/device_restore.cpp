@@ -17,10 +17,12 @@ class Restorer {
   Restorer(const Schema& schema, const std::uint8_t* payload, std::size_t size, std::uint8_t* stage)
       : schema_(schema), payload_(payload), size_(size), stage_(stage) {}
 
-  Result run() {
+  Result run(const detail::PayloadShape* shape) {
     // The values have a fixed size: the tables behind them can be found, and checked, first.
-    const std::size_t values = detail::values_size(schema_);
-    const std::uint32_t clocks = detail::clock_count(schema_);
+    // Built for size (a device, which has no shape kept), the walks are the only code.
+    const bool kept = !detail::kBuiltForSize && shape != nullptr;
+    const std::size_t values = kept ? shape->values : detail::values_size(schema_);
+    const std::uint32_t clocks = kept ? shape->clocks : detail::clock_count(schema_);
     if (clocks > kMaxClocks) return Result::Unsupported;
     const std::size_t readings = format::clock_readings_size(clocks);
     const std::size_t counts = format::kHeapCountSize + format::kReferenceCountSize;
@@ -139,6 +141,22 @@ class Restorer {
           std::memcpy(stage, take(stride * type.count), stride * type.count);
           return Result::Ok;
         }
+        // Structs of plain numbers: each element by the same few copies.
+        CopyRun runs[kMaxCopyRuns];
+        std::size_t run_count = 0;
+        if (!detail::kBuiltForSize && time == nullptr && element.kind == Kind::Struct &&
+            plain_runs(type.element, runs, &run_count)) {
+          const std::uint8_t* wire = payload_ + at_;
+          for (std::size_t i = 0; i < type.count; ++i) {
+            std::uint8_t* to = stage + i * stride;
+            for (std::size_t r = 0; r < run_count; ++r) {
+              copy_value(to + runs[r].offset, wire, runs[r].size);
+              wire += runs[r].size;
+            }
+          }
+          at_ = static_cast<std::size_t>(wire - payload_);
+          return Result::Ok;
+        }
         for (std::size_t i = 0; i < type.count; ++i) {
           const Result result = value(type.element, stage + i * stride, time);
           if (result != Result::Ok) return result;
@@ -147,6 +165,10 @@ class Restorer {
       }
       case Kind::Struct: {
         for (std::uint32_t f = 0; f < type.field_count; ++f) {
+          if (!detail::kBuiltForSize) {
+            f = plain_fields(t, f, type.field_count, stage);
+            if (f == type.field_count) break;
+          }
           const detail::FieldView field = detail::field_at(schema_, t, f);
           const std::uint8_t* wire = payload_ + at_;  // a scalar's value, bit-fields' too
           if (field.bit_width != 0) {
@@ -174,26 +196,91 @@ class Restorer {
     }
   }
 
+  // A plain number is a field that plain_fields() copies as it is.
+  static bool is_plain(const FieldInfo& field, const TypeInfo& member) {
+    return is_bytes(member.kind) && field.bit_width == 0 &&
+           (field.flags & (kFieldHasRange | kFieldClockTime)) == 0;
+  }
+
+  // Bytes of a struct that are its wire bytes in one copy: `size` at `offset` in the value.
+  struct CopyRun {
+    std::uint32_t offset;
+    std::uint32_t size;
+  };
+  static constexpr std::size_t kMaxCopyRuns = 8;
+
+  // Built for speed, over a host's TypeInfo tables: struct `t` as at most kMaxCopyRuns runs of
+  // bytes, in its fields' order, when every field is a plain number and no validator checks it
+  // (fields adjacent in memory share a run). False otherwise.
+  bool plain_runs(std::uint32_t t, CopyRun* runs, std::size_t* run_count) const {
+    const TypeInfo* const types = schema_.types;
+    if (types == nullptr || types[t].validate != nullptr) return false;
+    std::size_t count = 0;
+    for (std::uint32_t f = 0; f < types[t].field_count; ++f) {
+      const FieldInfo& field = types[t].fields[f];
+      const TypeInfo& member = types[field.type];
+      if (!is_plain(field, member)) return false;
+      if (count != 0 && runs[count - 1].offset + runs[count - 1].size == field.offset) {
+        runs[count - 1].size += member.size;
+        continue;
+      }
+      if (count == kMaxCopyRuns) return false;
+      runs[count++] = CopyRun{field.offset, member.size};
+    }
+    *run_count = count;
+    return true;
+  }
+
+  // Built for speed, over a host's TypeInfo tables: the fields of struct `t` from `f` on that
+  // are numbers with no bit-field, range or time, each copied straight from the tables and the
+  // payload held in locals (a store through `stage` may alias any member, which the compiler
+  // would otherwise load again). Returns the first field it did not decode. A first restore in a
+  // fresh process decodes every field: most of its instructions were these fields' steps.
+  std::uint32_t plain_fields(std::uint32_t t, std::uint32_t f, std::uint32_t count,
+                             std::uint8_t* stage) {
+    const TypeInfo* const types = schema_.types;
+    if (types == nullptr) return f;  // compact tables: the general steps
+    const FieldInfo* const fields = types[t].fields;
+    const std::uint8_t* wire = payload_ + at_;
+    for (; f < count; ++f) {
+      const FieldInfo& field = fields[f];
+      const TypeInfo& member = types[field.type];
+      if (!is_plain(field, member)) break;
+      copy_value(stage + field.offset, wire, member.size);
+      wire += member.size;
+    }
+    at_ = static_cast<std::size_t>(wire - payload_);
+    return f;
+  }
+
+  // Built for speed, up to 16 bytes are copied by two moves (overlapping unless the size is a
+  // power of two), not by a call of memcpy.
+  static void copy_value(std::uint8_t* to, const std::uint8_t* from, std::size_t size) {
+    if (detail::kBuiltForSize || size > 16) {
+      std::memcpy(to, from, size);
+    } else if (size >= 8) {
+      copy_twice<8>(to, from, size);
+    } else if (size >= 4) {
+      copy_twice<4>(to, from, size);
+    } else if (size >= 2) {
+      copy_twice<2>(to, from, size);
+    } else if (size == 1) {
+      *to = *from;
+    }
+  }
+  // `size` bytes, `kMove` <= size <= 2 * kMove: the first kMove and the last kMove.
+  template <std::size_t kMove>
+  static void copy_twice(std::uint8_t* to, const std::uint8_t* from, std::size_t size) {
+    std::uint8_t head[kMove], tail[kMove];
+    std::memcpy(head, from, kMove);
+    std::memcpy(tail, from + size - kMove, kMove);
+    std::memcpy(to, head, kMove);
+    std::memcpy(to + size - kMove, tail, kMove);
+  }
+
   // A value that is its bytes (is_bytes()), an integer time moved by its clock's advance.
   void bytes(const detail::TypeView& type, std::uint8_t* stage, const FieldTime* time) {
-    const std::uint8_t* wire = take(type.size);
-    // Built for speed, the common sizes are copied by a move each, not by a call of memcpy.
-    switch (detail::kBuiltForSize ? 0 : type.size) {
-      case 1:
-        *stage = *wire;
-        break;
-      case 2:
-        std::memcpy(stage, wire, 2);
-        break;
-      case 4:
-        std::memcpy(stage, wire, 4);
-        break;
-      case 8:
-        std::memcpy(stage, wire, 8);
-        break;
-      default:
-        std::memcpy(stage, wire, type.size);
-    }
+    copy_value(stage, take(type.size), type.size);
     if (time != nullptr && (type.kind == Kind::Int || type.kind == Kind::UInt)) {
       format::rebase_time(stage, type.size, time->never, deltas_[time->clock->index]);
     }
@@ -324,13 +411,13 @@ Result restore_payload(const Schema& schema, const std::uint8_t* payload, std::s
 
 Result detail::restore_held_payload(const Schema& schema, const std::uint8_t* payload,
                                     std::size_t size, std::uint8_t* scratch,
-                                    std::size_t scratch_capacity) {
+                                    std::size_t scratch_capacity, const PayloadShape* shape) {
   if (payload == nullptr && size != 0) return Result::Corrupt;
   if (scratch == nullptr || scratch_capacity < scratch_size(schema)) return Result::NoSpace;
   const std::uintptr_t misalignment =
       reinterpret_cast<std::uintptr_t>(scratch) % detail::kStageAlign;
   std::uint8_t* stage = scratch + (misalignment ? detail::kStageAlign - misalignment : 0);
-  const Result result = Restorer(schema, payload, size, stage).run();
+  const Result result = Restorer(schema, payload, size, stage).run(shape);
   if (result != Result::Ok) return result;
   for (std::uint32_t r = 0; r < schema.root_count; ++r) {
     const std::size_t root_size = detail::root_size(schema, r);

@@ -81,6 +81,16 @@ std::size_t RestoreTables::bytes() const {
   return total;
 }
 
+void RestoreTables::reserve_first_records() {
+  constexpr std::size_t kRecords = 16;  // a specimen's restore (a few pointers and modes) fits
+  frames.reserve(kRecords);
+  slots.reserve(kRecords);
+  refs.reserve(kRecords);
+  steps.reserve(kRecords);
+  mapped.reserve(kRecords);
+  applied_slots.reserve(kRecords);
+}
+
 void RestoreTables::clear() {
   frames.clear();
   rejection_counts.clear();
@@ -114,6 +124,10 @@ RestoreTablesLease::RestoreTablesLease() : kept_(!kept_tables_leased) {
   tables_ = kept_ ? &kept_tables : new RestoreTables();
   kept_tables_leased = true;
   tables_->clear();
+}
+
+void RestoreTablesLease::prepare_thread_tables() {
+  if (!kept_tables_leased) kept_tables.reserve_first_records();
 }
 
 std::size_t RestoreTablesLease::table_bytes() const {
@@ -210,11 +224,20 @@ bool restore_same_build(const Schema& schema, std::uint64_t hash, const std::uin
   const SchemaCacheEntry& entry = schema_cache_entry(schema);
   if (!entry.first_same_build_restore() || !entry.device_holdable()) return false;
   // Once per schema and process: not kept, and not zero-filled (the decoder stages every root's
-  // bytes before it reads them).
+  // bytes before it reads them). Through std::allocator, as containers allocate: in a fresh
+  // process new[] and delete[] are often not bound yet, and binding them lazily cost more than a
+  // tenth of this restore.
   const std::size_t scratch_size = device::scratch_size(schema);
-  const std::unique_ptr<std::uint8_t[]> scratch(new std::uint8_t[scratch_size]);
-  if (device::detail::restore_held_payload(schema, payload, size, scratch.get(), scratch_size) !=
-      device::Result::Ok) {
+  struct Free {
+    std::size_t size;
+    void operator()(std::uint8_t* bytes) const {
+      std::allocator<std::uint8_t>().deallocate(bytes, size);
+    }
+  };
+  const std::unique_ptr<std::uint8_t, Free> scratch(
+      std::allocator<std::uint8_t>().allocate(scratch_size), Free{scratch_size});
+  if (device::detail::restore_held_payload(schema, payload, size, scratch.get(), scratch_size,
+                                           &entry.held_shape()) != device::Result::Ok) {
     return false;
   }
   ReportAccess::set_source(report, std::make_shared<SameBuildReport>(schema, hash));
@@ -308,6 +331,7 @@ void prepare_restore(const Schema& writer, std::uint64_t writer_hash, const Sche
   }
   Status ignored;
   plan_for(writer, writer_hash, reader, ignored, std::move(writer_owner));
+  restoring::RestoreTablesLease::prepare_thread_tables();
 }
 
 Report plan_payload(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,

@@ -192,6 +192,8 @@ struct RestoreTables {
   // Capacity in bytes (thread_scratch_bytes).
   std::size_t bytes() const;
   void clear();
+  // Room for the records of a small first restore (prepare_restore).
+  void reserve_first_records();
 };
 
 constexpr std::size_t kKeptRestoreTableBytes = std::size_t{64} * 1024;
@@ -209,6 +211,10 @@ class RestoreTablesLease {
   const RestoreTables& tables() const { return *tables_; }
   // The tables' bytes(), counted once: asked for thread_scratch_bytes, and again at the end.
   std::size_t table_bytes() const;
+  // Makes this thread's kept set ahead of its first restore (prepare_restore): its first use
+  // registers its destruction at thread exit (a call bound lazily), and a first restore's records
+  // would grow each vector from nothing.
+  static void prepare_thread_tables();
 
  private:
   static constexpr std::size_t kNotCounted = ~std::size_t{0};

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "crc32c.hpp"
+#include "device_format.hpp"
 #include "schema_blob.hpp"
 #include "schema_sizes.hpp"
 #include "symcr/device.hpp"
@@ -62,9 +63,12 @@ struct SchemaCacheEntry {
       // Times of clocks are rebased value by value, which that decoder leaves to the device.
       device_holdable_ =
           device::check_schema(*schema) == device::Result::Ok && schema_clocks(*schema).empty();
+      if (device_holdable_) held_shape_ = device::detail::payload_shape(*schema);
     });
     return device_holdable_;
   }
+  // What each payload of a device_holdable() schema holds, for that decoder.
+  const device::detail::PayloadShape& held_shape() const { return held_shape_; }
   // The blob's share of a record's CRC (crc32c_span), computed at its first use: every
   // standalone record of this schema carries the blob inline, checked without reading it twice.
   const Crc32cSpan& blob_crc() const {
@@ -82,6 +86,7 @@ struct SchemaCacheEntry {
   mutable SchemaFacts facts_;
   mutable std::once_flag device_checked_;
   mutable bool device_holdable_ = false;
+  mutable device::detail::PayloadShape held_shape_{};
   mutable std::atomic<bool> restored_{false};
   mutable std::once_flag blob_crc_computed_;
   mutable Crc32cSpan blob_crc_;
