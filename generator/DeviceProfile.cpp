@@ -3,6 +3,7 @@
 
 #include "DeviceProfile.h"
 
+#include <cmath>
 #include <set>
 
 namespace symcr_gen {
@@ -86,12 +87,39 @@ private:
     if (Type.Kind == symcr::Kind::Array)
       visit(Type.Element, Path + "[]", Where);
     if (Type.Kind == symcr::Kind::Struct)
-      for (const FieldModel &Field : Type.Fields)
-        visit(Field.Type,
-              Path + ((Field.Flags & symcr::kFieldBase)
-                          ? ".(" + Field.Name + ")"
-                          : "." + Field.Name),
-              Where);
+      for (const FieldModel &Field : Type.Fields) {
+        const std::string FieldPath =
+            Path + ((Field.Flags & symcr::kFieldBase) ? ".(" + Field.Name + ")"
+                                                      : "." + Field.Name);
+        checkRange(Field, FieldPath, Where);
+        visit(Field.Type, FieldPath, Where);
+      }
+  }
+
+  /// The device checks a range as doubles, which hold every integer up to
+  /// 2^53 exactly: a 64-bit integer's bound beyond that would let a value
+  /// just past it round onto it.
+  void checkRange(const FieldModel &Field, const std::string &Path,
+                  const Location &Where) {
+    if (!(Field.Flags & symcr::kFieldHasRange) ||
+        Field.Type >= Program.Types.size())
+      return;
+    const TypeModel &Type = Program.Types[Field.Type];
+    const bool Integer = Type.Kind == symcr::Kind::Int ||
+                         Type.Kind == symcr::Kind::UInt ||
+                         Type.Kind == symcr::Kind::Enum;
+    constexpr double Exact = 9007199254740992.0; // 2^53
+    if (!Integer || Type.Size < 8 ||
+        (std::fabs(Field.RangeMin) < Exact &&
+         std::fabs(Field.RangeMax) < Exact))
+      return;
+    Diags.error(Where, "'" + Path +
+                           "' has a SYMCR_RANGE bound beyond 2^53 in "
+                           "magnitude, which the device profile cannot "
+                           "compare exactly with a 64-bit integer: keep both "
+                           "bounds within -9007199254740991 and "
+                           "9007199254740991, or build with the host profile");
+    Clean = false;
   }
 
   const ProgramModel &Program;

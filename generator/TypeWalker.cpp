@@ -714,6 +714,22 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
       Field.RangeMax = It->second.second;
       Field.Flags |= symcr::kFieldHasRange;
     }
+    if (Field.Flags & symcr::kFieldHasRange) {
+      // Restore checks a range on a number; on anything else it would be
+      // ignored without a word.
+      const TypeModel &Ranged = Program.Types[Field.Type];
+      const symcr::Kind K = Ranged.Kind;
+      if (K != symcr::Kind::Bool && K != symcr::Kind::Int &&
+          K != symcr::Kind::UInt && K != symcr::Kind::Float &&
+          K != symcr::Kind::Enum) {
+        Sink->error(F.Where, "SYMCR_RANGE on '" + F.Path + "', a " +
+                                 Ranged.Name +
+                                 ": a range checks one number; put it on a "
+                                 "numeric member, or check the elements or "
+                                 "members in a symcr_validate hook");
+        Ok = false;
+      }
+    }
     const auto TimeDirective = Lookup(Select.FieldTimes, Name);
     if (!fieldTime(FD,
                    TimeDirective != Select.FieldTimes.end()

@@ -857,6 +857,63 @@ TEST(DeviceProfile, StructsOfNumbersInArraysRestoreByRunsAndKeepTheirChecks) {
   expect_table(0x6B);
 }
 
+// A 64-bit integer just past its range is refused: as a double, 2^53 + 1 rounds onto a bound
+// of 2^53. The device refuses the record; a host's first restore (the same decoder) then goes
+// the general way, which rejects that value alone.
+struct Odometer {
+  std::uint64_t total;  // ranged [0, 2^53]
+  std::int64_t debt;    // ranged [-2^53, 0]
+};
+Odometer odometer;
+const symcr::FieldRange kUpTo2To53{0, 9007199254740992.0};
+const symcr::FieldRange kDownTo2To53{-9007199254740992.0, 0};
+
+const symcr::Schema& odometer_schema() {
+  static const symcr::FieldInfo fields[] = {
+      ranged("total", 0, offsetof(Odometer, total), kUpTo2To53),
+      ranged("debt", 1, offsetof(Odometer, debt), kDownTo2To53)};
+  static const symcr::TypeInfo types[] = {
+      scalar("uint64", Kind::UInt, 8), scalar("int64", Kind::Int, 8),
+      record("Odometer", sizeof(Odometer), alignof(Odometer), fields, 2)};
+  static const symcr::RootInfo roots[] = {{"odometer", 2, &odometer, 0, nullptr}};
+  static const symcr::Schema schema{types, 3, roots, 1, "device-odometer"};
+  return schema;
+}
+
+TEST(DeviceProfile, ASixtyFourBitIntegerJustPastItsRangeIsRefused) {
+  const symcr::Schema& schema = odometer_schema();
+  const symcr::device::Build odometer_build{&schema, symcr::detail::schema_blob(schema).hash};
+  std::vector<std::uint8_t> scratch(symcr::device::scratch_size(schema));
+  const std::uint64_t two53 = std::uint64_t{1} << 53;
+  const auto restored = [&](std::uint64_t total, std::int64_t debt) {
+    odometer = Odometer{total, debt};
+    std::vector<std::uint8_t> record(symcr::device::record_size(schema));
+    std::size_t size = 0;
+    EXPECT_EQ(symcr::device::save(odometer_build, 1, record.data(), record.size(), &size),
+              Result::Ok);
+    odometer = Odometer{7, -7};
+    return symcr::device::restore(odometer_build, record.data(), size, scratch.data(),
+                                  scratch.size());
+  };
+  EXPECT_EQ(restored(two53, -static_cast<std::int64_t>(two53)), Result::Ok);
+  EXPECT_EQ(odometer.total, two53);
+  EXPECT_EQ(restored(two53 + 1, 0), Result::Rejected);
+  EXPECT_EQ(odometer.total, 7u);
+  EXPECT_EQ(restored(0, -static_cast<std::int64_t>(two53) - 1), Result::Rejected);
+  EXPECT_EQ(odometer.debt, -7);
+
+  // The host's first restore of its own checkpoint in this process.
+  odometer = Odometer{two53 + 1, -5};
+  std::vector<std::uint8_t> host;
+  ASSERT_TRUE(symcr::checkpoint_to_buffer(schema, host).ok());
+  odometer = Odometer{7, -7};
+  const symcr::Report report = symcr::restore_from_buffer(schema, host.data(), host.size());
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(odometer.total, 7u);
+  EXPECT_EQ(odometer.debt, -5);
+  EXPECT_EQ(report.count(symcr::Decision::Rejected), 1u);
+}
+
 TEST(DeviceProfile, ResultsHaveTexts) {
   EXPECT_STREQ(symcr::device::result_text(Result::Ok), "ok");
   EXPECT_STREQ(symcr::device::result_text(Result::OtherSchema), "record of another build's schema");

@@ -3,6 +3,7 @@
 // host's WireSizes and the device profile's wire_size both apply it.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <random>
@@ -159,6 +160,56 @@ TEST(FormatCore, ClockReadingsTrailer) {
   format::store16(time, 0);
   format::rebase_time(time, 2, 0, 0x20);
   EXPECT_EQ(format::load16(time), 0);
+}
+
+// Integers meet SYMCR_RANGE's double bounds exactly: 2^53 + 1 would round onto a bound of 2^53
+// as a double. Non-integral bounds, bounds past the integer's range and NaN bounds too.
+TEST(FormatCore, IntegersAreComparedWithTheirRangeExactly) {
+  using symcr::format::integer_in_range;
+  const double two53 = 9007199254740992.0;
+  const std::uint64_t above = (std::uint64_t{1} << 53) + 1;
+  EXPECT_TRUE(integer_in_range(above - 1, false, 0, two53));
+  EXPECT_FALSE(integer_in_range(above, false, 0, two53));
+  EXPECT_FALSE(integer_in_range(above, true, 0, two53));
+  const std::int64_t below = -static_cast<std::int64_t>(above);
+  EXPECT_FALSE(integer_in_range(static_cast<std::uint64_t>(below), true, -two53, 0));
+  EXPECT_TRUE(integer_in_range(static_cast<std::uint64_t>(below + 1), true, -two53, 0));
+  // Non-integral bounds: [-2.5, 3.5] holds -2 .. 3.
+  for (std::int64_t v = -4; v <= 5; ++v) {
+    EXPECT_EQ(integer_in_range(static_cast<std::uint64_t>(v), true, -2.5, 3.5), v >= -2 && v <= 3)
+        << v;
+  }
+  for (std::uint64_t v = 0; v <= 5; ++v) {
+    EXPECT_EQ(integer_in_range(v, false, 0.5, 3.5), v >= 1 && v <= 3) << v;
+  }
+  // Bounds past the integer's range.
+  const std::uint64_t max_u64 = ~std::uint64_t{0};
+  EXPECT_TRUE(integer_in_range(max_u64, false, -1e300, 1e300));
+  EXPECT_FALSE(integer_in_range(max_u64, false, 0, 18446744073709549568.0));  // 2^64 - 2048
+  EXPECT_TRUE(integer_in_range(max_u64, true, -1e300, 1e300));                // -1
+  EXPECT_TRUE(integer_in_range(std::uint64_t{1} << 63, true, -9223372036854775808.0, 0));
+  EXPECT_FALSE(integer_in_range(0, true, 9223372036854775808.0, 1e300));
+  EXPECT_FALSE(integer_in_range(0, false, -5, -1));
+  // Zeros of both signs, fractions below one, subnormals, infinities.
+  using symcr::format::compare_integer;
+  EXPECT_EQ(compare_integer(0, true, -0.0), 0);
+  EXPECT_EQ(compare_integer(0, false, 0.0), 0);
+  EXPECT_EQ(compare_integer(0, true, 0.25), -1);
+  EXPECT_EQ(compare_integer(0, true, -0.25), 1);
+  EXPECT_EQ(compare_integer(static_cast<std::uint64_t>(-1), true, -0.25), -1);
+  EXPECT_EQ(compare_integer(1, false, 4.9e-324), 1);
+  EXPECT_EQ(compare_integer(0, false, 4.9e-324), -1);
+  EXPECT_EQ(compare_integer(max_u64, false, HUGE_VAL), -1);
+  EXPECT_EQ(compare_integer(std::uint64_t{1} << 63, true, -HUGE_VAL), 1);
+  EXPECT_EQ(compare_integer(std::uint64_t{1} << 63, true, -9223372036854775808.0), 0);
+  EXPECT_EQ(compare_integer(std::uint64_t{1} << 63, false, 9223372036854775808.0), 0);
+  EXPECT_EQ(compare_integer(5, true, -5.0), 1);
+  EXPECT_EQ(compare_integer(static_cast<std::uint64_t>(-5), true, 5.0), -1);
+  EXPECT_EQ(compare_integer(3, false, std::nan("")), 2);
+  // NaN bounds and an empty range hold nothing.
+  EXPECT_FALSE(integer_in_range(0, true, std::nan(""), 1));
+  EXPECT_FALSE(integer_in_range(0, false, 0, std::nan("")));
+  EXPECT_FALSE(integer_in_range(1, false, 2, 1));
 }
 
 }  // namespace

@@ -232,7 +232,11 @@ class PlanRunner {
       const std::uint64_t low_bits = entry(target_index + 1), high_bits = entry(target_index + 2);
       std::memcpy(&low, &low_bits, 8);
       std::memcpy(&high, &high_bits, 8);
-      if (!(as_real >= low && as_real <= high)) return Result::Rejected;  // NaN is outside
+      // Built for size, an integer is compared as a double too (see in_range, device_restore).
+      const bool inside = from_float || detail::kBuiltForSize
+                              ? as_real >= low && as_real <= high  // NaN is outside
+                              : format::integer_in_range(raw, is_signed, low, high);
+      if (!inside) return Result::Rejected;
     }
     std::uint64_t out = 0;
     if (to_kind == p::kFloat) {

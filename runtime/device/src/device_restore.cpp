@@ -341,8 +341,16 @@ class Restorer {
       if (number.kind == Kind::Int && number.size < 8) {
         raw = detail::bits_at(raw, 0, 8 * number.size, true);  // sign-extended
       }
-      v = number.kind == Kind::Int ? static_cast<double>(static_cast<std::int64_t>(raw))
-                                   : static_cast<double>(raw);
+      // Built for size, compared as a double: exact because symcr-gen refuses, under the device
+      // profile, a 64-bit integer's bound beyond 2^53 in magnitude (the exact comparison takes
+      // 400 bytes of Thumb code).
+      if (detail::kBuiltForSize) {
+        v = number.kind == Kind::Int ? static_cast<double>(static_cast<std::int64_t>(raw))
+                                     : static_cast<double>(raw);
+      } else {
+        return format::integer_in_range(raw, number.kind == Kind::Int, field.range->min,
+                                        field.range->max);
+      }
     } else {
       return true;  // a range on anything else is not the generator's
     }

@@ -15,6 +15,7 @@
 #include "payload_error.hpp"
 #include "report_access.hpp"
 #include "restore_traversal.hpp"
+#include "symcr/format/payload.hpp"
 #include "unicode.hpp"
 
 namespace symcr::detail::restoring {
@@ -560,7 +561,13 @@ bool Traversal<Pass>::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t
   }
   if (ranged) {
     const long double v = out.as_long_double();
-    if (std::isnan(v) || v < field->range_min || v > field->range_max) {
+    const bool inside =
+        out.tag == Number::Tag::Floating
+            ? !std::isnan(v) && v >= field->range_min && v <= field->range_max
+            : format::integer_in_range(
+                  out.tag == Number::Tag::Signed ? static_cast<std::uint64_t>(out.s) : out.u,
+                  out.tag == Number::Tag::Signed, field->range_min, field->range_max);
+    if (!inside) {
       char text[64];
       format_number(out, text, sizeof text);
       reject_value(counter, "%s outside [%g, %g]", text, field->range_min, field->range_max);

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 
 #include "symcr/format/bytes.hpp"
 #include "symcr/generated.hpp"
@@ -164,6 +165,50 @@ inline void rebase_time(std::uint8_t* p, std::size_t size, std::int64_t never,
     p[i] = static_cast<std::uint8_t>(carry);
     carry >>= 8;
   }
+}
+
+// How the integer `raw` (two's complement when `is_signed`) compares with `d`: -1, 0 or 1,
+// exactly (as a double, 2^53 + 1 would round onto 2^53), or 2 when `d` is NaN. By `d`'s bits
+// and integer operations alone: a microcontroller without a double-precision unit would call a
+// library routine for each conversion.
+inline int compare_integer(std::uint64_t raw, bool is_signed, double d) {
+  std::uint64_t bits = 0;
+  std::memcpy(&bits, &d, sizeof bits);
+  const bool d_negative = (bits >> 63) != 0;
+  const unsigned exponent = static_cast<unsigned>(bits >> 52) & 0x7FFu;
+  const std::uint64_t fraction = bits & ((std::uint64_t{1} << 52) - 1);
+  if (exponent == 0x7FFu && fraction != 0) return 2;
+  const bool negative = is_signed && (raw >> 63) != 0;
+  const std::uint64_t magnitude = negative ? 0 - raw : raw;  // 2^63 for the least int64
+  const bool d_zero = exponent == 0 && fraction == 0;
+  if (negative != d_negative) {
+    if (magnitude == 0 && d_zero) return 0;  // 0 and -0.0
+    return negative ? -1 : 1;
+  }
+  int order;  // |raw| against |d|
+  if (exponent == 0x7FFu) {
+    order = -1;                  // infinity
+  } else if (exponent < 1023) {  // |d| < 1
+    order = magnitude != 0 ? 1 : d_zero ? 0 : -1;
+  } else {
+    const unsigned e = exponent - 1023;  // |d| = (2^52 + fraction) * 2^(e - 52)
+    const std::uint64_t m = fraction | (std::uint64_t{1} << 52);
+    if (e >= 64) {
+      order = -1;
+    } else {
+      const std::uint64_t whole = e >= 52 ? m << (e - 52) : m >> (52 - e);
+      const bool part = e < 52 && (m & ((std::uint64_t{1} << (52 - e)) - 1)) != 0;
+      order = magnitude < whole ? -1 : magnitude > whole ? 1 : part ? -1 : 0;
+    }
+  }
+  return negative ? -order : order;
+}
+
+// Whether the integer `raw` lies in SYMCR_RANGE's [low, high], exactly (compare_integer). A NaN
+// bound holds nothing. Both runtimes check integers with it.
+inline bool integer_in_range(std::uint64_t raw, bool is_signed, double low, double high) {
+  const int from_low = compare_integer(raw, is_signed, low);
+  return from_low >= 0 && from_low != 2 && compare_integer(raw, is_signed, high) <= 0;
 }
 
 }  // namespace format
