@@ -428,7 +428,7 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
         return false;
       }
     }
-    if (Bounds[0] > Bounds[1]) {
+    if (!(Bounds[0] <= Bounds[1])) { // NaN too
       Diags.error(D.Arguments[1].Where, "range(...) needs lo <= hi, got '" +
                                             D.Arguments[1].Text + "' and '" +
                                             D.Arguments[2].Text + "'");

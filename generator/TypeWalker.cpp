@@ -692,7 +692,7 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
       Field.RangeMin = std::strtod(Lo.c_str(), &End1);
       Field.RangeMax = std::strtod(Hi.c_str(), &End2);
       if (Lo.empty() || Hi.empty() || *End1 || *End2 ||
-          Field.RangeMin > Field.RangeMax) {
+          !(Field.RangeMin <= Field.RangeMax)) { // NaN too
         Sink->error(F.Where,
                     "SYMCR_RANGE needs two numeric bounds lo <= hi, got '" +
                         Range.str() + "'");
