@@ -12,8 +12,11 @@
 #include "llvm/Support/MemoryBuffer.h"
 #include "llvm/Support/Path.h"
 #include "llvm/Support/raw_ostream.h"
+#include "symcr/format/payload.hpp"
 
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 #include <fcntl.h>
@@ -171,6 +174,35 @@ void Diagnostics::flushUnrestorable() {
     List += (List.empty() ? "skip(" : ", ") + Fix;
   note(Location(),
        "these skip lines remove every unrestorable value above: " + List + ")");
+}
+
+std::string inexactRangeBound(const std::string &Text, double Value) {
+  llvm::StringRef Digits = llvm::StringRef(Text).trim();
+  const bool Negative = Digits.consume_front("-");
+  if (!Negative)
+    Digits.consume_front("+");
+  const unsigned Radix =
+      Digits.consume_front("0x") || Digits.consume_front("0X") ? 16 : 10;
+  unsigned long long Magnitude = 0;
+  if (Digits.empty() || Digits.getAsInteger(Radix, Magnitude))
+    return ""; // not an integer literal: a double as written
+  const double Held = std::fabs(Value);
+  if (symcr::format::compare_integer(Magnitude, false, Held) == 0)
+    return "";
+  // The two doubles around the literal: the one strtod chose and its neighbour.
+  const bool RoundedDown =
+      symcr::format::compare_integer(Magnitude, false, Held) > 0;
+  const double Other = std::nextafter(Held, RoundedDown ? HUGE_VAL : 0.0);
+  const double Low = RoundedDown ? Held : Other;
+  const double High = RoundedDown ? Other : Held;
+  char Nearest[128];
+  std::snprintf(Nearest, sizeof Nearest, "%s%.0f or %s%.0f",
+                Negative ? "-" : "", Negative ? High : Low, Negative ? "-" : "",
+                Negative ? Low : High);
+  return "range bound " + Text +
+         " is not a number a double holds exactly (ranges hold doubles, so it "
+         "would be another number): use " +
+         Nearest;
 }
 
 bool parseTimeArguments(const std::vector<std::string> &Arguments,
@@ -425,6 +457,11 @@ bool parseDirectiveText(const std::string &Text, const Location &Where,
       Bounds[B] = std::strtod(A.Text.c_str(), &End);
       if (*End != '\0') {
         Diags.error(A.Where, "range bound '" + A.Text + "' is not a number");
+        return false;
+      }
+      const std::string Inexact = inexactRangeBound(A.Text, Bounds[B]);
+      if (!Inexact.empty()) {
+        Diags.error(A.Where, Inexact);
         return false;
       }
     }

@@ -46,6 +46,12 @@ enum class DirectiveKind {
 bool parseTimeArguments(const std::vector<std::string> &Arguments,
                         TimeSpec &Out, std::string &Error);
 
+/// A range bound's text and value (its strtod): when the text is an integer
+/// literal (an optional sign, then decimal or 0x digits) that no double holds
+/// exactly, the error that names the two nearest a double holds; else empty.
+/// Ranges hold doubles, so such a bound would silently be another number.
+std::string inexactRangeBound(const std::string &Text, double Value);
+
 struct DirectiveArgument {
   /// "Copter::mission", whitespace removed outside quotes; the quotes of a
   /// quoted argument are removed.

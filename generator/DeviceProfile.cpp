@@ -97,7 +97,7 @@ private:
   }
 
   /// The device checks a range as doubles, which hold every integer up to
-  /// 2^53 exactly: a 64-bit integer's bound beyond that would let a value
+  /// 2^53 exactly: a 64-bit integer's bound from 2^53 on would let a value
   /// just past it round onto it.
   void checkRange(const FieldModel &Field, const std::string &Path,
                   const Location &Where) {
@@ -114,7 +114,7 @@ private:
          std::fabs(Field.RangeMax) < Exact))
       return;
     Diags.error(Where, "'" + Path +
-                           "' has a SYMCR_RANGE bound beyond 2^53 in "
+                           "' has a SYMCR_RANGE bound of 2^53 or more in "
                            "magnitude, which the device profile cannot "
                            "compare exactly with a 64-bit integer: keep both "
                            "bounds within -9007199254740991 and "

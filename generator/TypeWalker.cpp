@@ -5,6 +5,7 @@
 //
 //===----------------------------------------------------------------------===//
 #include "TypeWalker.h"
+#include "Annotations.h"
 #include "NameIndex.h"
 
 #include "clang/AST/ASTContext.h"
@@ -697,6 +698,15 @@ bool TypeWalker::fillFields(const RecordDecl *RD, TypeModel &Model,
                     "SYMCR_RANGE needs two numeric bounds lo <= hi, got '" +
                         Range.str() + "'");
         Ok = false;
+      }
+      for (const auto &[Text, Value] :
+           {std::pair{Lo, Field.RangeMin}, std::pair{Hi, Field.RangeMax}}) {
+        const std::string Inexact = inexactRangeBound(Text, Value);
+        if (!Inexact.empty()) {
+          Sink->error(F.Where,
+                      "member '" + F.Path + "': SYMCR_RANGE's " + Inexact);
+          Ok = false;
+        }
       }
       Field.Flags |= symcr::kFieldHasRange;
     }

@@ -342,7 +342,7 @@ class Restorer {
         raw = detail::bits_at(raw, 0, 8 * number.size, true);  // sign-extended
       }
       // Built for size, compared as a double: exact because symcr-gen refuses, under the device
-      // profile, a 64-bit integer's bound beyond 2^53 in magnitude (the exact comparison takes
+      // profile, a 64-bit integer's bound of 2^53 or more in magnitude (the exact comparison takes
       // 400 bytes of Thumb code).
       if (detail::kBuiltForSize) {
         v = number.kind == Kind::Int ? static_cast<double>(static_cast<std::int64_t>(raw))
