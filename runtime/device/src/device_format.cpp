@@ -53,27 +53,10 @@ std::uint32_t first_unheld_type(const Schema& schema) {
 // value's own bytes.
 std::size_t wire_size(const Schema& schema, std::uint32_t t) {
   const TypeView type = type_at(schema, t);
-  if (!kBuiltForSize && type.kind == Kind::Struct && schema.types != nullptr) {
-    // Built for speed, over a host's TypeInfo tables: read straight from them (a host's first
-    // restore sizes every root before it decodes).
-    const TypeInfo* const types = schema.types;
-    std::size_t total = 0;
-    for (std::uint32_t f = 0; f < type.field_count; ++f) {
-      const std::uint32_t member = types[t].fields[f].type;
-      const Kind kind = types[member].kind;
-      total += kind == Kind::Struct || kind == Kind::Array ? wire_size(schema, member)
-                                                           : format::own_wire_size(types[member]);
-    }
-    return total;
-  }
   if (type.kind == Kind::Struct) {
     std::size_t total = 0;
     for (std::uint32_t f = 0; f < type.field_count; ++f) {
-      const std::uint32_t member = field_at(schema, t, f).type;
-      const TypeView view = type_at(schema, member);
-      // Built for speed, a field that is neither struct nor array is sized without a call.
-      const bool nests = view.kind == Kind::Struct || view.kind == Kind::Array;
-      total += kBuiltForSize || nests ? wire_size(schema, member) : format::own_wire_size(view);
+      total += wire_size(schema, field_at(schema, t, f).type);
     }
     return total;
   }
@@ -109,13 +92,7 @@ const ClockInfo* clocks_walk(const Schema& schema, std::uint32_t index, std::uin
     const TypeView type = type_at(schema, t);
     if (type.kind != Kind::Struct) continue;
     for (std::uint32_t f = 0; f < type.field_count; ++f) {
-      // Built for speed, a host's TypeInfo tables are read straight (every restore counts the
-      // clocks).
-      const FieldTime* time =
-          !kBuiltForSize && schema.types != nullptr
-              ? (format::field_clock(schema.types[t].fields[f]) ? schema.types[t].fields[f].time
-                                                                : nullptr)
-              : field_at(schema, t, f).time;
+      const FieldTime* time = field_at(schema, t, f).time;
       if (time == nullptr) continue;
       if (time->clock->index == index) return time->clock;
       if (time->clock->index >= *count) *count = time->clock->index + 1;
