@@ -84,8 +84,7 @@ constexpr std::size_t kFlagWire = 4 + 8;
 std::shared_ptr<const symcr::detail::Plan> same_build_plan() {
   const symcr::Schema& schema = segmented_schema();
   symcr::Status status;
-  return symcr::detail::plan_for(schema, symcr::detail::schema_blob(schema).hash, schema,
-                                 status);
+  return symcr::detail::plan_for(schema, symcr::detail::schema_blob(schema).hash, schema, status);
 }
 
 TEST(CopySegments, AStructWithAPointerAndATimeIsCopiedAroundThem) {
@@ -170,6 +169,133 @@ TEST(CopySegments, ATimeBetweenSegmentsIsRebasedInAnotherProcess) {
   EXPECT_EQ(segmented.c, 300);
   EXPECT_EQ(segmented.target, &segmented.a);
   EXPECT_EQ(segmented.d[3], 1003);
+}
+
+// An array whose elements are copy-only but too many to be one copy program (each padded
+// element is two runs): its elements are checked, then copied, in one loop each.
+struct Cell {
+  std::int32_t id;
+  bool on;
+  double level;  // after 3 bytes of padding: a second run
+};
+template <std::size_t kCount>
+struct GridOf {
+  std::int32_t head;
+  Cell cells[kCount];
+};
+template <std::size_t kCount>
+GridOf<kCount> grid_of;
+
+constexpr std::size_t kCells = 600;  // 1,200 runs: more than one copy program holds
+
+// The build of `grid_of<kCount>`, root "grid", whose array type is named `array_name`.
+template <std::size_t kCount>
+const symcr::Schema& grid_schema(const char* array_name) {
+  static const symcr::FieldInfo cell_fields[] = {field("id", 0, offsetof(Cell, id)),
+                                                 field("on", 1, offsetof(Cell, on)),
+                                                 field("level", 2, offsetof(Cell, level))};
+  static const symcr::FieldInfo grid_fields[] = {
+      field("head", 0, offsetof(GridOf<kCount>, head)),
+      field("cells", 4, offsetof(GridOf<kCount>, cells))};
+  static const symcr::TypeInfo types[] = {
+      scalar("int32", Kind::Int, 4),
+      scalar("bool", Kind::Bool, 1),
+      scalar("double", Kind::Float, 8),
+      record("Cell", sizeof(Cell), alignof(Cell), cell_fields, 3),
+      array(array_name, 3, kCount, sizeof(Cell) * kCount, alignof(Cell)),
+      record("Grid", sizeof(GridOf<kCount>), alignof(GridOf<kCount>), grid_fields, 2),
+  };
+  static const symcr::RootInfo roots[] = {{"grid", 5, &grid_of<kCount>, 0, nullptr}};
+  static const symcr::Schema schema{types, 6, roots, 1, nullptr};
+  return schema;
+}
+const symcr::Schema& cells_schema() { return grid_schema<kCells>("Cell[600]"); }
+
+template <std::size_t kCount>
+void fill_grid(std::int32_t head, std::int32_t first_id, double level_scale) {
+  grid_of<kCount>.head = head;
+  for (std::size_t i = 0; i < kCount; ++i) {
+    Cell& cell = grid_of<kCount>.cells[i];
+    cell.id = first_id + static_cast<std::int32_t>(i);
+    cell.on = i % 3 == 0;
+    cell.level = level_scale * static_cast<double>(i);
+  }
+}
+
+// Wire bytes (values back to back): head, then each cell's id, on and level.
+constexpr std::size_t kCellWire = 4 + 1 + 8;
+constexpr std::size_t cell_on_wire(std::size_t i) { return 4 + i * kCellWire + 4; }
+
+TEST(CopySegments, ArrayElementsTooManyForOneProgramAreCopiedAndChecked) {
+  const symcr::Schema& schema = cells_schema();
+  symcr::Status status;
+  const auto plan =
+      symcr::detail::plan_for(schema, symcr::detail::schema_blob(schema).hash, schema, status);
+  ASSERT_NE(plan, nullptr) << status.message();
+  const symcr::detail::PlanNode& cells = *plan->roots[0].node->fields[1].node;
+  EXPECT_FALSE(cells.copy_only);  // the array as a whole: too many runs
+  ASSERT_NE(cells.element, nullptr);
+  EXPECT_TRUE(cells.element->copy_only);
+  EXPECT_EQ(cells.element->copy_runs.size(), 2u);
+
+  fill_grid<kCells>(-5, 100, 0.5);
+  const Saved saved = save(schema);
+  fill_grid<kCells>(7, -1, -1.0);
+  const symcr::Report report = load(saved, schema, true);
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(grid_of<kCells>.head, -5);
+  for (std::size_t i = 0; i < kCells; ++i) {
+    const Cell& cell = grid_of<kCells>.cells[i];
+    ASSERT_EQ(cell.id, 100 + static_cast<std::int32_t>(i)) << i;
+    ASSERT_EQ(cell.on, i % 3 == 0) << i;
+    ASSERT_EQ(cell.level, 0.5 * static_cast<double>(i)) << i;
+  }
+}
+
+TEST(CopySegments, AnInvalidBoolInALaterElementIsFoundAndNoElementIsWritten) {
+  fill_grid<kCells>(-5, 100, 0.5);
+  Saved saved = save(cells_schema());
+  saved.payload[cell_on_wire(457)] = 2;
+  fill_grid<kCells>(7, -1, -1.0);
+  const symcr::Report report = load(saved, cells_schema());
+  EXPECT_FALSE(report.ok());
+  EXPECT_NE(std::string(report.status().message()).find("bool value 2"), std::string::npos)
+      << report.status().message();
+  EXPECT_EQ(grid_of<kCells>.head, 7);  // nothing written
+  EXPECT_EQ(grid_of<kCells>.cells[0].id, -1);
+  EXPECT_EQ(grid_of<kCells>.cells[599].level, -599.0);
+}
+
+TEST(CopySegments, AShorterArrayInThisBuildTakesTheFirstElements) {
+  constexpr std::size_t kFewer = 500;
+  fill_grid<kCells>(-5, 100, 0.5);
+  const Saved saved = save(cells_schema());
+  fill_grid<kFewer>(7, -1, -1.0);
+  const symcr::Report report = load(saved, grid_schema<kFewer>("Cell[500]"));
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(grid_of<kFewer>.head, -5);
+  for (std::size_t i = 0; i < kFewer; ++i) {
+    ASSERT_EQ(grid_of<kFewer>.cells[i].id, 100 + static_cast<std::int32_t>(i)) << i;
+    ASSERT_EQ(grid_of<kFewer>.cells[i].on, i % 3 == 0) << i;
+    ASSERT_EQ(grid_of<kFewer>.cells[i].level, 0.5 * static_cast<double>(i)) << i;
+  }
+}
+
+TEST(CopySegments, ALongerArrayInThisBuildKeepsItsLastElements) {
+  constexpr std::size_t kMore = 700;
+  fill_grid<kCells>(-5, 100, 0.5);
+  const Saved saved = save(cells_schema());
+  fill_grid<kMore>(7, -1, -1.0);
+  const symcr::Report report = load(saved, grid_schema<kMore>("Cell[700]"));
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  for (std::size_t i = 0; i < kMore; ++i) {
+    const bool saved_one = i < kCells;
+    ASSERT_EQ(grid_of<kMore>.cells[i].id,
+              saved_one ? 100 + static_cast<std::int32_t>(i) : -1 + static_cast<std::int32_t>(i))
+        << i;
+    ASSERT_EQ(grid_of<kMore>.cells[i].level, (saved_one ? 0.5 : -1.0) * static_cast<double>(i))
+        << i;
+  }
 }
 
 }  // namespace

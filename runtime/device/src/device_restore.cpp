@@ -253,29 +253,13 @@ class Restorer {
     return f;
   }
 
-  // Built for speed, up to 16 bytes are copied by two moves (overlapping unless the size is a
-  // power of two), not by a call of memcpy.
+  // Built for size, one memcpy; built for speed, a small copy takes no call.
   static void copy_value(std::uint8_t* to, const std::uint8_t* from, std::size_t size) {
-    if (detail::kBuiltForSize || size > 16) {
+    if (detail::kBuiltForSize) {
       std::memcpy(to, from, size);
-    } else if (size >= 8) {
-      copy_twice<8>(to, from, size);
-    } else if (size >= 4) {
-      copy_twice<4>(to, from, size);
-    } else if (size >= 2) {
-      copy_twice<2>(to, from, size);
-    } else if (size == 1) {
-      *to = *from;
+    } else {
+      format::copy_bytes(to, from, size);
     }
-  }
-  // `size` bytes, `kMove` <= size <= 2 * kMove: the first kMove and the last kMove.
-  template <std::size_t kMove>
-  static void copy_twice(std::uint8_t* to, const std::uint8_t* from, std::size_t size) {
-    std::uint8_t head[kMove], tail[kMove];
-    std::memcpy(head, from, kMove);
-    std::memcpy(tail, from + size - kMove, kMove);
-    std::memcpy(to, head, kMove);
-    std::memcpy(to + size - kMove, tail, kMove);
   }
 
   // A value that is its bytes (is_bytes()), an integer time moved by its clock's advance.

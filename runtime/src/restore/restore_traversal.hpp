@@ -82,6 +82,11 @@ class Traversal {
   __attribute__((noinline)) bool scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst,
                                         const FieldPlan* field);
   bool array(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
+  // The first `count` elements of an array whose element `e` is copy-only, `stride` bytes apart
+  // in the reader: checked all, then copied, in two loops without a call per element. False,
+  // consuming nothing, as copy() is: the general path then takes every element.
+  bool copy_elements(const PlanNode* e, std::uint64_t count, std::uint8_t* dst,
+                     std::uint32_t stride);
   __attribute__((noinline)) bool string(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
   bool container(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);
   __attribute__((noinline)) bool pointer(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst);

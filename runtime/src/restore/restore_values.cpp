@@ -503,6 +503,28 @@ bool Traversal<Pass>::copy(const PlanNode* n, std::uint8_t* dst) {
 }
 
 template <typename Pass>
+bool Traversal<Pass>::copy_elements(const PlanNode* e, std::uint64_t count, std::uint8_t* dst,
+                                    std::uint32_t stride) {
+  const std::size_t wire = e->copy_wire;
+  if (count > in_.remaining() / wire) return false;
+  const std::uint8_t* base = in_.position();
+  if (pass_.checks_copies() && (!e->copy_bools.empty() || !e->copy_bits.empty())) {
+    for (std::uint64_t i = 0; i < count; ++i) {
+      if (!copy_only_valid(*e, base + i * wire)) {
+        restorer_.copy_refused_ = true;
+        return false;
+      }
+    }
+  }
+  if (dst && Pass::kWrites) {
+    for (std::uint64_t i = 0; i < count; ++i)
+      copy_only_write(*e, base + i * wire, dst + i * stride);
+  }
+  in_.seek(base + count * wire);
+  return true;
+}
+
+template <typename Pass>
 bool Traversal<Pass>::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t* dst,
                              const FieldPlan* field) {
   const std::uint8_t* bytes = nullptr;
@@ -602,9 +624,15 @@ bool Traversal<Pass>::array(const PlanNode* n, const TypeInfo& wt, std::uint8_t*
   // Elements that encode to nothing would let a few bytes of schema drive billions of
   // iterations: such arrays are bounded like containers.
   if (!in_.array(wt)) return false;
+  std::uint64_t i = 0;
+  if (to_reader && !time_ && e->copy_only && e->copy_wire != 0 && !runs_validator(e)) {
+    const std::uint64_t kept = wt.count < n->reader_count ? wt.count : n->reader_count;
+    if (copy_elements(e, kept, dst, n->reader_stride)) i = kept;
+    if (i == wt.count) return true;
+  }
   const std::size_t frame = frames_.size();
   frames_.push_back({PathFrame::Kind::Index, nullptr, 0});
-  for (std::uint64_t i = 0; i < wt.count; ++i) {
+  for (; i < wt.count; ++i) {
     const bool kept = to_reader && i < n->reader_count;
     frames_[frame].index = i;
     std::uint8_t* at = kept && dst ? dst + i * n->reader_stride : nullptr;

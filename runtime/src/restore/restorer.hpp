@@ -19,6 +19,7 @@
 #include "payload_grammar.hpp"
 #include "plan.hpp"
 #include "scalar.hpp"
+#include "symcr/format/bytes.hpp"
 
 namespace symcr::detail::restoring {
 
@@ -110,7 +111,9 @@ inline void copy_bits_to(std::uint8_t* unit, const CopyBits& bits, std::uint64_t
 }
 
 inline void copy_only_write(const PlanNode& n, const std::uint8_t* wire, std::uint8_t* dst) {
-  for (const CopyRun& run : n.copy_runs) std::memcpy(dst + run.dst, wire + run.wire, run.length);
+  for (const CopyRun& run : n.copy_runs) {
+    format::copy_bytes(dst + run.dst, wire + run.wire, run.length);
+  }
   for (const CopyBits& bits : n.copy_bits) {
     copy_bits_to(dst + bits.dst, bits, bit_field_raw(bits, wire));
   }
