@@ -35,13 +35,37 @@ inline int& failures() {
     }                                                                              \
   } while (0)
 
+// XV_STORE=1 (crossversion.<name>.store): v0 saves into a store at <checkpoint> and v1 opens
+// it and restores its latest record, as a vehicle restarted with a patched build does. Opening
+// another build's store prepares the first restore (the device profile's executor, for states
+// of the kinds it holds).
+inline bool in_store() { return std::getenv("XV_STORE") != nullptr; }
+
+inline symcr::Report restore_latest(const char* path, bool strict) {
+  symcr::Store store;
+  const symcr::Status opened = symcr::Store::open(path, symcr::StoreOptions(), store);
+  if (!opened.ok()) {
+    std::fprintf(stderr, "opening %s failed: %s\n", path, opened.message());
+    std::exit(1);
+  }
+  symcr::RestoreOptions options;
+  options.strict = strict;
+  return store.restore_latest(options);
+}
+
+inline symcr::Status save_in_store(const char* path) {
+  symcr::Store store;
+  symcr::Status status = symcr::Store::open(path, symcr::StoreOptions(), store);
+  return status.ok() ? store.save() : status;
+}
+
 // Saves every root into `path`; v0's exit code.
 inline int save(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr, "usage: %s <checkpoint>\n", argv[0]);
     return 2;
   }
-  symcr::Status status = symcr::checkpoint(argv[1]);
+  symcr::Status status = in_store() ? save_in_store(argv[1]) : symcr::checkpoint(argv[1]);
   if (!status.ok()) {
     std::fprintf(stderr, "checkpoint failed: %s\n", status.message());
     return 1;
@@ -128,6 +152,11 @@ inline symcr::Report restore(int argc, char** argv, bool strict = false) {
   }
   if (std::getenv("XV_DEVICE") != nullptr) restore_through_device_and_exit(argv[1]);
   if (std::getenv("XV_DEVICE_PLAN") != nullptr) restore_through_device_plan_and_exit(argv[1]);
+  if (in_store()) {
+    symcr::Report report = restore_latest(argv[1], strict);
+    std::printf("%s\n", report.to_text().c_str());
+    return report;
+  }
   if (xv_check_embedded_plan != nullptr) failures() += xv_check_embedded_plan(argv[1]);
   save_if_asked("XV_INITIAL");
   struct Resave {

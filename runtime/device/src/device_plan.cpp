@@ -368,6 +368,10 @@ class PlanRunner {
         return Result::Corrupt;
       }
     }
+    // The writer's type the steps end at is the one the reference names, as the host checks.
+    if (load32(steps_at + format::kReferenceStepSize * step_count) != writer_type) {
+      return Result::Corrupt;
+    }
     std::size_t offset = 0;
     std::uint32_t reached = kNoType;
     if (!detail::follow_path(reader_, reader_root, steps, step_count, &offset, &reached)) {

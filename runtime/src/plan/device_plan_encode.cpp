@@ -344,6 +344,11 @@ bool device_plan_image_for(const Schema& writer, std::uint64_t writer_hash, cons
   plan.writer = &writer;
   plan.reader = &reader;
   planning::Planner(plan).run();
+  return device_plan_image_of(plan, writer_hash, reader_hash, image, error);
+}
+
+bool device_plan_image_of(const Plan& plan, std::uint64_t writer_hash, std::uint64_t reader_hash,
+                          std::vector<std::uint8_t>& image, std::string& error) {
   return DeviceEncoder(plan).encode(writer_hash, reader_hash, image, error);
 }
 

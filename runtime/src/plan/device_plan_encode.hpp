@@ -19,6 +19,11 @@ bool device_plan_image_for(const Schema& writer, std::uint64_t writer_hash, cons
                            std::uint64_t reader_hash, std::vector<std::uint8_t>& image,
                            std::string& error);
 
+struct Plan;
+// The same for a plan already made (a restore's cached plan, planned or decoded).
+bool device_plan_image_of(const Plan& plan, std::uint64_t writer_hash, std::uint64_t reader_hash,
+                          std::vector<std::uint8_t>& image, std::string& error);
+
 }  // namespace symcr::detail
 
 #endif  // SYMCR_SRC_DEVICE_PLAN_ENCODE_HPP

@@ -4,6 +4,7 @@
 #ifndef SYMCR_SRC_PLAN_HPP
 #define SYMCR_SRC_PLAN_HPP
 
+#include <atomic>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -183,6 +184,14 @@ struct Plan final : ReportSource {
   std::vector<const ClockInfo*> reader_clocks;
   std::vector<std::uint32_t> writer_clock_of;
   Status status;  // Incompatible when nothing can be restored
+
+  // The plan as the device profile's cross-version executor runs it (device_plan_encode.hpp),
+  // for the process's first restore through the plan (restore.cpp). prepare_restore encodes it
+  // once, if that executor holds the plan, and then sets held_image_ready.
+  mutable std::once_flag held_image_made;
+  mutable std::vector<std::uint8_t> held_image;
+  mutable std::atomic<bool> held_image_ready{false};
+  mutable std::atomic<bool> restored{false};  // a restore went through the plan
 
   // Written once by entries() (Planner::build_report).
   mutable std::once_flag report_written;

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "device_format.hpp"
+#include "device_plan_encode.hpp"
 #include "parsed_schema.hpp"
 #include "report_access.hpp"
 #include "restore_payload.hpp"
@@ -212,6 +213,26 @@ struct SameBuildReport final : ReportSource {
   mutable std::shared_ptr<const Plan> plan_;
 };
 
+// Scratch for one of the device profile's decoders: not kept, and not zero-filled (a decoder
+// stages every root's bytes before it reads them). Through std::allocator, as containers
+// allocate: in a fresh process new[] and delete[] are often not bound yet, and binding them
+// lazily cost more than a tenth of a first restore.
+class HeldScratch {
+ public:
+  explicit HeldScratch(const Schema& reader)
+      : size_(device::scratch_size(reader)),
+        bytes_(std::allocator<std::uint8_t>().allocate(size_)) {}
+  ~HeldScratch() { std::allocator<std::uint8_t>().deallocate(bytes_, size_); }
+  HeldScratch(const HeldScratch&) = delete;
+  HeldScratch& operator=(const HeldScratch&) = delete;
+  std::uint8_t* bytes() const { return bytes_; }
+  std::size_t size() const { return size_; }
+
+ private:
+  std::size_t size_;
+  std::uint8_t* bytes_;
+};
+
 // The first restore of a build's own checkpoint in a process, every type one the device
 // profile's decoder holds: that small table-driven decoder restores it with no plan to build,
 // which is what a freshly started build waited for. Later restores use the plan, built once:
@@ -223,26 +244,58 @@ bool restore_same_build(const Schema& schema, std::uint64_t hash, const std::uin
                         std::size_t size, Report& report) {
   const SchemaCacheEntry& entry = schema_cache_entry(schema);
   if (!entry.first_same_build_restore() || !entry.device_holdable()) return false;
-  // Once per schema and process: not kept, and not zero-filled (the decoder stages every root's
-  // bytes before it reads them). Through std::allocator, as containers allocate: in a fresh
-  // process new[] and delete[] are often not bound yet, and binding them lazily cost more than a
-  // tenth of this restore.
-  const std::size_t scratch_size = device::scratch_size(schema);
-  struct Free {
-    std::size_t size;
-    void operator()(std::uint8_t* bytes) const {
-      std::allocator<std::uint8_t>().deallocate(bytes, size);
-    }
-  };
-  const std::unique_ptr<std::uint8_t, Free> scratch(
-      std::allocator<std::uint8_t>().allocate(scratch_size), Free{scratch_size});
-  if (device::detail::restore_held_payload(schema, payload, size, scratch.get(), scratch_size,
+  const HeldScratch scratch(schema);
+  if (device::detail::restore_held_payload(schema, payload, size, scratch.bytes(), scratch.size(),
                                            &entry.held_shape()) != device::Result::Ok) {
     return false;
   }
   ReportAccess::set_source(report, std::make_shared<SameBuildReport>(schema, hash));
   last_restore_scratch = 0;  // no decoding tables
   return true;
+}
+
+// The device profile's cross-version executor (device_plan.cpp) is declared weak, for firmware
+// that has no plans: this reference links it into every host program.
+extern "C" const char symcr_device_plan_executor;
+[[maybe_unused]] __attribute__((used)) const char* const kDevicePlanExecutor =
+    &symcr_device_plan_executor;
+
+// Encodes `plan` for the device profile's cross-version executor, once, when that executor
+// holds it: both builds' types are ones the device profile holds, with no times of clocks (it
+// rebases every time, as after a reset), and it carries out each of the plan's decisions.
+void make_held_image(const Plan& plan, std::uint64_t writer_hash) {
+  std::call_once(plan.held_image_made, [&plan, writer_hash] {
+    const Schema& reader = *plan.reader;
+    if (!plan.status.ok() || plan.wire_sizes.clock_count != 0 ||
+        !schema_cache_entry(reader).device_holdable() ||
+        device::check_schema(*plan.writer) != device::Result::Ok) {
+      return;
+    }
+    std::string refused;
+    if (!device_plan_image_of(plan, writer_hash, schema_blob(reader).hash, plan.held_image,
+                              refused)) {
+      plan.held_image.clear();
+      return;
+    }
+    plan.held_image_ready.store(true, std::memory_order_release);
+  });
+}
+
+// The first restore through a plan in a process, when prepare_restore encoded it for the device
+// profile's cross-version executor: that small executor restores another build's checkpoint as
+// restore_same_build restores the build's own, with far less code to bring into the caches
+// than the two passes, and as all-or-nothing: whatever it refuses goes the general way.
+bool restore_held_across(const Plan& plan, const std::uint8_t* payload, std::size_t size) {
+  if (!plan.held_image_ready.load(std::memory_order_acquire) ||
+      plan.restored.load(std::memory_order_relaxed) || plan.restored.exchange(true)) {
+    return false;
+  }
+  const HeldScratch scratch(*plan.reader);
+  const PlannedSchema planned{0, plan.held_image.data(),
+                              static_cast<std::uint32_t>(plan.held_image.size())};
+  return device::detail::restore_planned_payload(*plan.reader, planned, payload, size,
+                                                 scratch.bytes(),
+                                                 scratch.size()) == device::Result::Ok;
 }
 
 Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,
@@ -275,6 +328,10 @@ Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::u
   if (!plan_only && !strict_refusal && plan->copy_only_payload &&
       restore_copy_only(*plan, payload, size, apply)) {
     last_restore_scratch = 0;  // no decoding tables
+    return report;
+  }
+  if (apply && !plan_only && !options.strict && restore_held_across(*plan, payload, size)) {
+    last_restore_scratch = 0;
     return report;
   }
   std::size_t value_rejections = 0;
@@ -330,8 +387,10 @@ void prepare_restore(const Schema& writer, std::uint64_t writer_hash, const Sche
     return;
   }
   Status ignored;
-  plan_for(writer, writer_hash, reader, ignored, std::move(writer_owner));
+  const std::shared_ptr<const Plan> plan =
+      plan_for(writer, writer_hash, reader, ignored, std::move(writer_owner));
   restoring::RestoreTablesLease::prepare_thread_tables();
+  if (plan) make_held_image(*plan, writer_hash);
 }
 
 Report plan_payload(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,

@@ -1,0 +1,230 @@
+// The first restore through a plan that opening another build's store prepared
+// (prepare_restore): when the device profile's cross-version executor holds the plan, it
+// restores that record instead of the general decoder's two passes. Values and report must be
+// exactly the general decoder's, and whatever the executor refuses goes the general way.
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <deque>
+#include <vector>
+
+#include "engine_test_util.hpp"
+#include "handwritten_schemas.hpp"
+#include "parsed_schema.hpp"
+#include "restore_payload.hpp"
+#include "schema_blob.hpp"
+#include "scratch.hpp"
+
+namespace engine_tests {
+namespace {
+
+// v0: the build that saved.
+enum class Mode0 : std::int32_t { Manual = 0, Auto = 1, Sport = 2 };
+struct Vehicle0 {
+  std::int32_t id;
+  double speed;
+  Mode0 mode;
+  std::int32_t cells[4];
+  std::int32_t* target;  // -> cells[1]
+  std::int16_t removed;
+};
+Vehicle0 vehicle0;
+
+// v1: wider id, a float speed, the modes renumbered, one cell fewer, a field added, one removed.
+enum class Mode1 : std::int32_t { Auto = 5, Manual = 6 };
+struct Vehicle1 {
+  std::int64_t id;
+  float speed;
+  std::int32_t added;
+  Mode1 mode;
+  std::int32_t cells[3];
+  std::int32_t* target;
+};
+Vehicle1 vehicle1;
+
+const symcr::EnumeratorInfo kModes0[] = {{"Manual", 0}, {"Auto", 1}, {"Sport", 2}};
+const symcr::EnumeratorInfo kModes1[] = {{"Auto", 5}, {"Manual", 6}};
+
+const symcr::Schema& schema0() {
+  static const symcr::FieldInfo fields[] = {field("id", 0, offsetof(Vehicle0, id)),
+                                            field("speed", 1, offsetof(Vehicle0, speed)),
+                                            field("mode", 3, offsetof(Vehicle0, mode)),
+                                            field("cells", 4, offsetof(Vehicle0, cells)),
+                                            field("target", 5, offsetof(Vehicle0, target)),
+                                            field("removed", 6, offsetof(Vehicle0, removed))};
+  static const symcr::TypeInfo types[] = {
+      scalar("int32", Kind::Int, 4),
+      scalar("double", Kind::Float, 8),
+      scalar("int16", Kind::Int, 2),
+      enumeration("Mode", 4, 0, kModes0, 3),
+      array("int32[4]", 0, 4, 16, 4),
+      holder("int32*", Kind::Pointer, sizeof(void*), alignof(void*), 0, nullptr),
+      scalar("int16", Kind::Int, 2),
+      record("Vehicle", sizeof(Vehicle0), alignof(Vehicle0), fields, 6),
+  };
+  static const symcr::RootInfo roots[] = {{"vehicle", 7, &vehicle0, 0, nullptr}};
+  static const symcr::Schema schema{types, 8, roots, 1, nullptr};
+  return schema;
+}
+
+// v1's tables, and a reader schema over them per test: plans are cached per reader, and each
+// test needs a plan whose first restore is still to come.
+const symcr::TypeInfo* types1() {
+  static const symcr::FieldInfo fields[] = {
+      field("id", 0, offsetof(Vehicle1, id)),       field("speed", 1, offsetof(Vehicle1, speed)),
+      field("added", 2, offsetof(Vehicle1, added)), field("mode", 3, offsetof(Vehicle1, mode)),
+      field("cells", 4, offsetof(Vehicle1, cells)), field("target", 5, offsetof(Vehicle1, target))};
+  static const symcr::TypeInfo types[] = {
+      scalar("int64", Kind::Int, 8),
+      scalar("float", Kind::Float, 4),
+      scalar("int32", Kind::Int, 4),
+      enumeration("Mode", 4, 2, kModes1, 2),
+      array("int32[3]", 2, 3, 12, 4),
+      holder("int32*", Kind::Pointer, sizeof(void*), alignof(void*), 2, nullptr),
+      record("Vehicle", sizeof(Vehicle1), alignof(Vehicle1), fields, 6),
+  };
+  return types;
+}
+const symcr::RootInfo kRoots1[] = {{"vehicle", 6, &vehicle1, 0, nullptr}};
+const symcr::Schema kReaderMatch{types1(), 7, kRoots1, 1, nullptr};
+const symcr::Schema kReaderRefused{types1(), 7, kRoots1, 1, nullptr};
+const symcr::Schema kReaderUnprepared{types1(), 7, kRoots1, 1, nullptr};
+const symcr::Schema kReaderInexact{types1(), 7, kRoots1, 1, nullptr};
+
+void set_v0(double speed) {
+  vehicle0.id = 4100;
+  vehicle0.speed = speed;
+  vehicle0.mode = Mode0::Auto;
+  for (int i = 0; i < 4; ++i) vehicle0.cells[i] = 10 * (i + 1);
+  vehicle0.target = &vehicle0.cells[1];
+  vehicle0.removed = 3;
+}
+
+void scramble_v1() {
+  vehicle1.id = -1;
+  vehicle1.speed = -1.0f;
+  vehicle1.added = 77;
+  vehicle1.mode = Mode1::Manual;
+  for (int i = 0; i < 3; ++i) vehicle1.cells[i] = -1;
+  vehicle1.target = nullptr;
+}
+
+// One restore of `saved` into `reader`, with the writer parsed from its bytes as a store's
+// schema area is; `decoded_tables`: whether the general decoder's tables were used.
+struct Restored {
+  symcr::Report report;
+  std::vector<std::uint8_t> bytes;  // vehicle1 afterwards
+  bool decoded_tables;
+};
+Restored restore(const Saved& saved, const symcr::Schema& reader, bool prepare) {
+  auto writer = std::make_shared<symcr::detail::ParsedSchema>();
+  EXPECT_TRUE(symcr::detail::parse_schema(saved.schema.data(), saved.schema.size(), *writer).ok());
+  if (prepare) symcr::detail::prepare_restore(writer->schema(), saved.hash, reader, writer);
+  Restored restored;
+  restored.report =
+      symcr::detail::restore_payload(writer->schema(), saved.hash, saved.payload.data(),
+                                     saved.payload.size(), reader, symcr::RestoreOptions(), writer);
+  restored.decoded_tables = symcr::detail::thread_scratch_bytes().restore != 0;
+  const auto* at = reinterpret_cast<const std::uint8_t*>(&vehicle1);
+  restored.bytes.assign(at, at + sizeof vehicle1);
+  return restored;
+}
+
+TEST(FirstRestore, APreparedPlanRestoresThroughTheDeviceExecutorAsTheGeneralDecoderDoes) {
+  set_v0(12.5);
+  const Saved saved = save(schema0());
+  scramble_v1();
+  const Restored first = restore(saved, kReaderMatch, true);
+  ASSERT_TRUE(first.report.ok()) << first.report.to_text();
+  EXPECT_FALSE(first.decoded_tables);  // the executor, not the two passes
+  EXPECT_EQ(vehicle1.id, 4100);
+  EXPECT_EQ(vehicle1.speed, 12.5f);
+  EXPECT_EQ(vehicle1.added, 77);          // not in the checkpoint: kept
+  EXPECT_EQ(vehicle1.mode, Mode1::Auto);  // by name: 1 was Auto, Auto is 5 now
+  EXPECT_EQ(vehicle1.cells[0], 10);
+  EXPECT_EQ(vehicle1.cells[2], 30);
+  EXPECT_EQ(vehicle1.target, &vehicle1.cells[1]);
+
+  scramble_v1();
+  const Restored again = restore(saved, kReaderMatch, true);
+  EXPECT_TRUE(again.decoded_tables);  // later restores: the general decoder
+  EXPECT_EQ(again.report.to_text(), first.report.to_text());
+  EXPECT_EQ(again.bytes, first.bytes);
+}
+
+TEST(FirstRestore, AValueTheExecutorRefusesGoesTheGeneralWayAndIsNamed) {
+  set_v0(1e300);  // no float holds it
+  const Saved saved = save(schema0());
+  scramble_v1();
+  const Restored first = restore(saved, kReaderRefused, true);
+  ASSERT_TRUE(first.report.ok()) << first.report.to_text();
+  EXPECT_TRUE(first.decoded_tables);
+  expect_entry(first.report, "vehicle.speed", symcr::Decision::Rejected);
+  EXPECT_EQ(vehicle1.speed, -1.0f);  // this build's value stays
+  EXPECT_EQ(vehicle1.id, 4100);      // the rest is restored
+  EXPECT_EQ(vehicle1.mode, Mode1::Auto);
+  EXPECT_EQ(vehicle1.target, &vehicle1.cells[1]);
+
+  scramble_v1();
+  const Restored again = restore(saved, kReaderRefused, true);
+  EXPECT_EQ(again.report.to_text(), first.report.to_text());
+  EXPECT_EQ(again.bytes, first.bytes);
+}
+
+TEST(FirstRestore, ADoubleNoFloatHoldsExactlyIsDecidedAsTheGeneralDecoderDecides) {
+  set_v0(0.1);
+  const Saved saved = save(schema0());
+  scramble_v1();
+  const Restored first = restore(saved, kReaderInexact, true);
+  ASSERT_TRUE(first.report.ok()) << first.report.to_text();
+  EXPECT_EQ(vehicle1.id, 4100);
+  scramble_v1();
+  const Restored again = restore(saved, kReaderInexact, true);
+  EXPECT_TRUE(again.decoded_tables);
+  EXPECT_EQ(again.report.to_text(), first.report.to_text());
+  EXPECT_EQ(again.bytes, first.bytes);
+}
+
+// Every byte of the payload damaged four ways: the executor's first restore and the general
+// decoder's second must agree on the outcome, the report and every byte left in the state.
+TEST(FirstRestore, EveryDamagedPayloadIsDecidedAsTheGeneralDecoderDecides) {
+  set_v0(12.5);
+  const Saved saved = save(schema0());
+  std::deque<symcr::Schema> readers;  // a plan of its own per damaged payload
+  int refused = 0;
+  for (std::size_t at = 0; at < saved.payload.size(); ++at) {
+    const std::uint8_t original = saved.payload[at];
+    for (const std::uint8_t value :
+         {std::uint8_t{0}, std::uint8_t{0xFF}, static_cast<std::uint8_t>(original ^ 0x01),
+          static_cast<std::uint8_t>(original ^ 0x80)}) {
+      if (value == original) continue;
+      Saved damaged = saved;
+      damaged.payload[at] = value;
+      readers.emplace_back(symcr::Schema{types1(), 7, kRoots1, 1, nullptr});
+      scramble_v1();
+      const Restored first = restore(damaged, readers.back(), true);
+      scramble_v1();
+      const Restored again = restore(damaged, readers.back(), true);
+      ASSERT_EQ(again.report.to_text(), first.report.to_text()) << "byte " << at << " = " << +value;
+      ASSERT_EQ(again.bytes, first.bytes) << "byte " << at << " = " << +value;
+      if (!first.report.ok()) ++refused;
+    }
+  }
+  EXPECT_GT(refused, 0);  // some damage is found (the rest changes values, as any byte may)
+}
+
+TEST(FirstRestore, WithoutPreparationTheFirstRestoreDecodesAsEveryOther) {
+  set_v0(12.5);
+  const Saved saved = save(schema0());
+  scramble_v1();
+  const Restored first = restore(saved, kReaderUnprepared, false);
+  ASSERT_TRUE(first.report.ok()) << first.report.to_text();
+  EXPECT_TRUE(first.decoded_tables);
+  EXPECT_EQ(vehicle1.id, 4100);
+  EXPECT_EQ(vehicle1.target, &vehicle1.cells[1]);
+}
+
+}  // namespace
+}  // namespace engine_tests
