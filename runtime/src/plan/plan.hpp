@@ -191,7 +191,7 @@ struct Plan final : ReportSource {
   mutable std::once_flag held_image_made;
   mutable std::vector<std::uint8_t> held_image;
   mutable std::atomic<bool> held_image_ready{false};
-  mutable std::atomic<bool> restored{false};  // a restore went through the plan
+  mutable std::atomic<bool> restored{false};  // that first restore has been taken
 
   // Written once by entries() (Planner::build_report).
   mutable std::once_flag report_written;
