@@ -28,19 +28,21 @@ struct Vehicle0 {
   Mode0 mode;
   std::int32_t cells[4];
   std::int32_t* target;  // -> cells[1]
-  std::int16_t removed;
+  std::int16_t level;
 };
 Vehicle0 vehicle0;
 
-// v1: wider id, a float speed, the modes renumbered, one cell fewer, a field added, one removed.
+// v1: wider id, a float speed, a field added, the modes renumbered, one cell more, a wider level.
+// Nothing of v0's is left out: the executor then writes every value the planned path writes.
 enum class Mode1 : std::int32_t { Auto = 5, Manual = 6 };
 struct Vehicle1 {
   std::int64_t id;
   float speed;
   std::int32_t added;
   Mode1 mode;
-  std::int32_t cells[3];
+  std::int32_t cells[5];
   std::int32_t* target;
+  std::int32_t level;
 };
 Vehicle1 vehicle1;
 
@@ -48,12 +50,10 @@ const symcr::EnumeratorInfo kModes0[] = {{"Manual", 0}, {"Auto", 1}, {"Sport", 2
 const symcr::EnumeratorInfo kModes1[] = {{"Auto", 5}, {"Manual", 6}};
 
 const symcr::Schema& schema0() {
-  static const symcr::FieldInfo fields[] = {field("id", 0, offsetof(Vehicle0, id)),
-                                            field("speed", 1, offsetof(Vehicle0, speed)),
-                                            field("mode", 3, offsetof(Vehicle0, mode)),
-                                            field("cells", 4, offsetof(Vehicle0, cells)),
-                                            field("target", 5, offsetof(Vehicle0, target)),
-                                            field("removed", 6, offsetof(Vehicle0, removed))};
+  static const symcr::FieldInfo fields[] = {
+      field("id", 0, offsetof(Vehicle0, id)),         field("speed", 1, offsetof(Vehicle0, speed)),
+      field("mode", 3, offsetof(Vehicle0, mode)),     field("cells", 4, offsetof(Vehicle0, cells)),
+      field("target", 5, offsetof(Vehicle0, target)), field("level", 6, offsetof(Vehicle0, level))};
   static const symcr::TypeInfo types[] = {
       scalar("int32", Kind::Int, 4),
       scalar("double", Kind::Float, 8),
@@ -75,15 +75,16 @@ const symcr::TypeInfo* types1() {
   static const symcr::FieldInfo fields[] = {
       field("id", 0, offsetof(Vehicle1, id)),       field("speed", 1, offsetof(Vehicle1, speed)),
       field("added", 2, offsetof(Vehicle1, added)), field("mode", 3, offsetof(Vehicle1, mode)),
-      field("cells", 4, offsetof(Vehicle1, cells)), field("target", 5, offsetof(Vehicle1, target))};
+      field("cells", 4, offsetof(Vehicle1, cells)), field("target", 5, offsetof(Vehicle1, target)),
+      field("level", 2, offsetof(Vehicle1, level))};
   static const symcr::TypeInfo types[] = {
       scalar("int64", Kind::Int, 8),
       scalar("float", Kind::Float, 4),
       scalar("int32", Kind::Int, 4),
       enumeration("Mode", 4, 2, kModes1, 2),
-      array("int32[3]", 2, 3, 12, 4),
+      array("int32[5]", 2, 5, 20, 4),
       holder("int32*", Kind::Pointer, sizeof(void*), alignof(void*), 2, nullptr),
-      record("Vehicle", sizeof(Vehicle1), alignof(Vehicle1), fields, 6),
+      record("Vehicle", sizeof(Vehicle1), alignof(Vehicle1), fields, 7),
   };
   return types;
 }
@@ -93,13 +94,20 @@ const symcr::Schema kReaderRefused{types1(), 7, kRoots1, 1, nullptr};
 const symcr::Schema kReaderUnprepared{types1(), 7, kRoots1, 1, nullptr};
 const symcr::Schema kReaderInexact{types1(), 7, kRoots1, 1, nullptr};
 
+// Reader schemas made by the tests, each at an address of its own for the whole run: plans are
+// cached by the reader's address, and a plan's first restore is taken once.
+std::deque<symcr::Schema>& fresh_readers() {
+  static std::deque<symcr::Schema> readers;
+  return readers;
+}
+
 void set_v0(double speed) {
   vehicle0.id = 4100;
   vehicle0.speed = speed;
   vehicle0.mode = Mode0::Auto;
   for (int i = 0; i < 4; ++i) vehicle0.cells[i] = 10 * (i + 1);
   vehicle0.target = &vehicle0.cells[1];
-  vehicle0.removed = 3;
+  vehicle0.level = -3;
 }
 
 void scramble_v1() {
@@ -107,8 +115,9 @@ void scramble_v1() {
   vehicle1.speed = -1.0f;
   vehicle1.added = 77;
   vehicle1.mode = Mode1::Manual;
-  for (int i = 0; i < 3; ++i) vehicle1.cells[i] = -1;
+  for (int i = 0; i < 5; ++i) vehicle1.cells[i] = -1;
   vehicle1.target = nullptr;
+  vehicle1.level = 0;
 }
 
 // One restore of `saved` into `reader`, with the writer parsed from its bytes as a store's
@@ -132,6 +141,16 @@ Restored restore(const Saved& saved, const symcr::Schema& reader, bool prepare) 
   return restored;
 }
 
+// restore(), for the smaller pairs below: the report alone.
+symcr::Report restore_small(const Saved& saved, const symcr::Schema& reader) {
+  auto writer = std::make_shared<symcr::detail::ParsedSchema>();
+  EXPECT_TRUE(symcr::detail::parse_schema(saved.schema.data(), saved.schema.size(), *writer).ok());
+  symcr::detail::prepare_restore(writer->schema(), saved.hash, reader, writer);
+  return symcr::detail::restore_payload(writer->schema(), saved.hash, saved.payload.data(),
+                                        saved.payload.size(), reader, symcr::RestoreOptions(),
+                                        writer);
+}
+
 TEST(FirstRestore, APreparedPlanRestoresThroughTheDeviceExecutorAsTheGeneralDecoderDoes) {
   set_v0(12.5);
   const Saved saved = save(schema0());
@@ -144,8 +163,10 @@ TEST(FirstRestore, APreparedPlanRestoresThroughTheDeviceExecutorAsTheGeneralDeco
   EXPECT_EQ(vehicle1.added, 77);          // not in the checkpoint: kept
   EXPECT_EQ(vehicle1.mode, Mode1::Auto);  // by name: 1 was Auto, Auto is 5 now
   EXPECT_EQ(vehicle1.cells[0], 10);
-  EXPECT_EQ(vehicle1.cells[2], 30);
+  EXPECT_EQ(vehicle1.cells[3], 40);
+  EXPECT_EQ(vehicle1.cells[4], -1);  // not in the checkpoint: kept
   EXPECT_EQ(vehicle1.target, &vehicle1.cells[1]);
+  EXPECT_EQ(vehicle1.level, -3);
 
   scramble_v1();
   const Restored again = restore(saved, kReaderMatch, true);
@@ -192,7 +213,7 @@ TEST(FirstRestore, ADoubleNoFloatHoldsExactlyIsDecidedAsTheGeneralDecoderDecides
 TEST(FirstRestore, EveryDamagedPayloadIsDecidedAsTheGeneralDecoderDecides) {
   set_v0(12.5);
   const Saved saved = save(schema0());
-  std::deque<symcr::Schema> readers;  // a plan of its own per damaged payload
+  std::deque<symcr::Schema>& readers = fresh_readers();  // a plan of its own per damage
   int refused = 0;
   for (std::size_t at = 0; at < saved.payload.size(); ++at) {
     const std::uint8_t original = saved.payload[at];
@@ -213,6 +234,119 @@ TEST(FirstRestore, EveryDamagedPayloadIsDecidedAsTheGeneralDecoderDecides) {
     }
   }
   EXPECT_GT(refused, 0);  // some damage is found (the rest changes values, as any byte may)
+}
+
+// Smaller pairs, each a change whose first restore must still be the planned path's: the
+// executor's own rules differ there, or it skips bytes the planned path checks.
+struct Small0 {
+  std::int32_t mode;
+  bool flag;
+  std::int32_t* p;
+};
+struct Small1 {
+  Mode1 mode;  // an int becomes an enum: only its enumerators' values are taken
+  bool flag;
+  std::int32_t* p;
+};
+struct Small2 {
+  Mode1 mode;
+  std::int32_t* p;
+};  // `flag` removed: the executor would skip its bytes, which the planned path checks
+Small0 small0;
+Small1 small1;
+Small2 small2;
+std::int32_t outside_value = 5;  // in no root: a pointer to it is saved as "outside"
+
+const symcr::Schema& small_schema0() {
+  static const symcr::FieldInfo fields[] = {field("mode", 0, offsetof(Small0, mode)),
+                                            field("flag", 1, offsetof(Small0, flag)),
+                                            field("p", 2, offsetof(Small0, p))};
+  static const symcr::TypeInfo types[] = {
+      scalar("int32", Kind::Int, 4), scalar("bool", Kind::Bool, 1),
+      holder("int32*", Kind::Pointer, sizeof(void*), alignof(void*), 0, nullptr),
+      record("Small", sizeof(Small0), alignof(Small0), fields, 3)};
+  static const symcr::RootInfo roots[] = {{"small", 3, &small0, 0, nullptr}};
+  static const symcr::Schema schema{types, 4, roots, 1, nullptr};
+  return schema;
+}
+// The reader types: Small1's, or with `removed_flag` Small2's (each at index 4).
+const symcr::TypeInfo* small_types(bool removed_flag) {
+  static const symcr::FieldInfo fields1[] = {field("mode", 1, offsetof(Small1, mode)),
+                                             field("flag", 3, offsetof(Small1, flag)),
+                                             field("p", 2, offsetof(Small1, p))};
+  static const symcr::FieldInfo fields2[] = {field("mode", 1, offsetof(Small2, mode)),
+                                             field("p", 2, offsetof(Small2, p))};
+  static const symcr::TypeInfo types1[] = {
+      scalar("int32", Kind::Int, 4), enumeration("Mode", 4, 0, kModes1, 2),
+      holder("int32*", Kind::Pointer, sizeof(void*), alignof(void*), 0, nullptr),
+      scalar("bool", Kind::Bool, 1), record("Small", sizeof(Small1), alignof(Small1), fields1, 3)};
+  static const symcr::TypeInfo types2[] = {
+      scalar("int32", Kind::Int, 4), enumeration("Mode", 4, 0, kModes1, 2),
+      holder("int32*", Kind::Pointer, sizeof(void*), alignof(void*), 0, nullptr),
+      scalar("bool", Kind::Bool, 1), record("Small", sizeof(Small2), alignof(Small2), fields2, 2)};
+  return removed_flag ? types2 : types1;
+}
+const symcr::RootInfo kSmallRoots1[] = {{"small", 4, &small1, 0, nullptr}};
+const symcr::RootInfo kSmallRoots2[] = {{"small", 4, &small2, 0, nullptr}};
+
+// Restores `saved` twice into a fresh reader: the first restore through the prepared plan, the
+// second the planned path's, both from the same state; they must be alike in report and bytes.
+// The first report is returned.
+template <typename State>
+symcr::Report expect_alike(const Saved& saved, State& state, bool removed_flag) {
+  std::deque<symcr::Schema>& readers = fresh_readers();
+  readers.emplace_back(symcr::Schema{small_types(removed_flag), 5,
+                                     removed_flag ? kSmallRoots2 : kSmallRoots1, 1, nullptr});
+  state = State{};
+  const symcr::Report first = restore_small(saved, readers.back());
+  const State after_first = state;
+  state = State{};
+  const symcr::Report again = restore_small(saved, readers.back());
+  EXPECT_EQ(again.to_text(), first.to_text());
+  EXPECT_EQ(std::memcmp(&after_first, &state, sizeof state), 0);
+  state = after_first;
+  return first;
+}
+
+TEST(FirstRestore, AnIntegerThatIsNoEnumeratorIsRejectedAsByThePlannedPath) {
+  small0 = Small0{1, true, nullptr};  // 1: no enumerator of Mode1 (5, 6)
+  const symcr::Report report = expect_alike(save(small_schema0()), small1, false);
+  expect_entry(report, "small.mode", symcr::Decision::Rejected);
+  EXPECT_EQ(small1.mode, Mode1{});    // this build's value stays
+  small0 = Small0{5, true, nullptr};  // Auto's value
+  expect_alike(save(small_schema0()), small1, false);
+  EXPECT_EQ(small1.mode, Mode1::Auto);
+  EXPECT_TRUE(small1.flag);
+}
+
+TEST(FirstRestore, APointerOutsideTheStateIsReportedAsKept) {
+  small0 = Small0{5, false, &outside_value};
+  const symcr::Report report = expect_alike(save(small_schema0()), small1, false);
+  expect_entry(report, "small.p", symcr::Decision::Kept);
+}
+
+// The same build's first restore (the device profile's plan-free decoder) reports it too.
+TEST(FirstRestore, APointerOutsideTheStateIsReportedByTheSameBuildsFirstRestore) {
+  small0 = Small0{5, true, &outside_value};
+  const Saved saved = save(small_schema0());
+  const symcr::Schema& schema = small_schema0();
+  const auto restore_same = [&] {
+    small0 = Small0{};
+    return symcr::detail::restore_payload(schema, saved.hash, saved.payload.data(),
+                                          saved.payload.size(), schema, symcr::RestoreOptions());
+  };
+  const symcr::Report first = restore_same();
+  const symcr::Report again = restore_same();
+  EXPECT_EQ(again.to_text(), first.to_text());
+  expect_entry(first, "small.p", symcr::Decision::Kept);
+  EXPECT_EQ(small0.mode, 5);
+}
+
+TEST(FirstRestore, ADamagedValueOfARemovedFieldIsFoundAsByThePlannedPath) {
+  small0 = Small0{5, true, nullptr};
+  Saved saved = save(small_schema0());
+  saved.payload[4] = 2;  // `flag`, after the 4 bytes of `mode`
+  EXPECT_FALSE(expect_alike(saved, small2, true).ok());
 }
 
 TEST(FirstRestore, WithoutPreparationTheFirstRestoreDecodesAsEveryOther) {

@@ -143,10 +143,12 @@ struct PayloadShape {
 };
 PayloadShape payload_shape(const Schema& schema);
 // restore_payload() for a schema first_unheld_type() already accepted. `shape`: its
-// payload_shape(), found once per schema by a host, or null to find it here.
+// payload_shape(), found once per schema by a host, or null to find it here. `as_host`: refuse
+// (Rejected) what a host's general decoder would not restore silently: a pointer to something
+// outside the roots (which it reports as kept), a reference no pointer uses (which it checks).
 Result restore_held_payload(const Schema& schema, const std::uint8_t* payload, std::size_t size,
                             std::uint8_t* scratch, std::size_t scratch_capacity,
-                            const PayloadShape* shape = nullptr);
+                            const PayloadShape* shape = nullptr, bool as_host = false);
 // The cross-version executor (device_plan.cpp), weak: null unless the firmware links it (see
 // Build). The plan image `build` embeds for checkpoints of the build whose schema hashes to
 // `writer_hash` (device_plan.hpp), or null.
@@ -155,7 +157,8 @@ const PlannedSchema* plan_for_writer(const Build& build, std::uint64_t writer_ha
 // restore_held_payload() for a payload of the plan's writer: each value through the plan.
 Result restore_planned_payload(const Schema& reader, const PlannedSchema& planned,
                                const std::uint8_t* payload, std::size_t size, std::uint8_t* scratch,
-                               std::size_t scratch_capacity) __attribute__((weak));
+                               std::size_t scratch_capacity, bool as_host = false)
+    __attribute__((weak));
 // The clocks the schema's time fields name (kFieldClockTime): their count (one more than the
 // greatest ClockInfo::index), and the clock of an index (null when no field names it). A
 // payload of a schema with clocks ends with an epoch and one reading per clock (format §3).

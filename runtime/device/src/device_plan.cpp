@@ -22,20 +22,28 @@ constexpr double kFloatMax = 3.40282346638528859811704183484516925440e+38;
 class PlanRunner {
  public:
   PlanRunner(const Schema& reader, const std::uint8_t* image, std::size_t image_size,
-             const std::uint8_t* payload, std::size_t payload_size, std::uint8_t* stage)
+             const std::uint8_t* payload, std::size_t payload_size, std::uint8_t* stage,
+             bool as_host)
       : reader_(reader),
         image_(image),
         image_size_(image_size),
         payload_(payload),
         payload_size_(payload_size),
-        stage_(stage) {}
+        stage_(stage),
+        as_host_(as_host) {}
 
   Result run() {
     Result result = read_image();
     if (result != Result::Ok) return result;
     result = read_trailer();
     if (result != Result::Ok) return result;
-    return ops(0, op_count_, 0, 0, 0);
+    result = ops(0, op_count_, 0, 0, 0);
+    // A host's general decoder checks every reference, used or not: one no pointer used goes
+    // that way (a writer saves only references its pointers use).
+    if (result == Result::Ok && as_host_ && used_references_ != reference_count_) {
+      return Result::Rejected;
+    }
+    return result;
   }
 
  private:
@@ -318,10 +326,18 @@ class PlanRunner {
       return Result::Corrupt;
     }
     const std::uint32_t code = load32(payload_ + wire);
-    if (code == format::kOutsideCode) return Result::Ok;
+    // The running build's value stays; a host reports that, so it takes its general way.
+    if (code == format::kOutsideCode) return as_host_ ? Result::Rejected : Result::Ok;
     std::uintptr_t target = 0;
     if (code != format::kNullCode) {
       if (code - format::kFirstReference >= reference_count_) return Result::Corrupt;
+      if (as_host_) {
+        const std::uint32_t index = code - format::kFirstReference;
+        if (index >= 32) return Result::Rejected;  // more than the mask below counts
+        const std::uint32_t bit = std::uint32_t{1} << index;
+        if ((used_mask_ & bit) == 0) ++used_references_;
+        used_mask_ |= bit;
+      }
       const Result result =
           reference(code - format::kFirstReference, entry(pointee_index), &target);
       if (result != Result::Ok) return result;
@@ -416,6 +432,8 @@ class PlanRunner {
   std::size_t root_size_ = 0;
   std::uint32_t reference_count_ = 0;
   std::size_t references_ = 0, references_end_ = 0;
+  bool as_host_;
+  std::uint32_t used_mask_ = 0, used_references_ = 0;  // references pointers used (as_host_)
 };
 
 }  // namespace
@@ -448,7 +466,8 @@ const PlannedSchema* detail::plan_for_writer(const Build& build, std::uint64_t w
 
 Result detail::restore_planned_payload(const Schema& reader, const PlannedSchema& planned,
                                        const std::uint8_t* payload, std::size_t size,
-                                       std::uint8_t* scratch, std::size_t scratch_capacity) {
+                                       std::uint8_t* scratch, std::size_t scratch_capacity,
+                                       bool as_host) {
   if (payload == nullptr && size != 0) return Result::Corrupt;
   if (scratch == nullptr || scratch_capacity < scratch_size(reader)) return Result::NoSpace;
   const std::uintptr_t misalignment =
@@ -461,7 +480,8 @@ Result detail::restore_planned_payload(const Schema& reader, const PlannedSchema
     std::memcpy(stage, reader.roots[r].address, root_size);
     stage += detail::stage_size(root_size);
   }
-  const Result result = PlanRunner(reader, planned.image, planned.size, payload, size, first).run();
+  const Result result =
+      PlanRunner(reader, planned.image, planned.size, payload, size, first, as_host).run();
   if (result != Result::Ok) return result;
   stage = first;
   for (std::uint32_t r = 0; r < reader.root_count; ++r) {

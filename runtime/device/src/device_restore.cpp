@@ -14,8 +14,9 @@ using format::load32;
 
 class Restorer {
  public:
-  Restorer(const Schema& schema, const std::uint8_t* payload, std::size_t size, std::uint8_t* stage)
-      : schema_(schema), payload_(payload), size_(size), stage_(stage) {}
+  Restorer(const Schema& schema, const std::uint8_t* payload, std::size_t size, std::uint8_t* stage,
+           bool as_host)
+      : schema_(schema), payload_(payload), size_(size), stage_(stage), as_host_(as_host) {}
 
   Result run(const detail::PayloadShape* shape) {
     // The values have a fixed size: the tables behind them can be found, and checked, first.
@@ -273,7 +274,9 @@ class Restorer {
   Result pointer(const detail::TypeView& type, std::uint8_t* stage) {
     const std::uint32_t code = load32(take(format::kPointerCodeSize));
     std::uintptr_t target = 0;
-    if (code == format::kOutsideCode) return Result::Ok;  // the running build's value stays
+    if (code == format::kOutsideCode) {                 // the running build's value stays
+      return as_host_ ? Result::Rejected : Result::Ok;  // a host reports it: its general way
+    }
     if (code != format::kNullCode) {
       const Result result = reference(code - format::kFirstReference, type.element, &target);
       if (result != Result::Ok) return result;
@@ -345,6 +348,7 @@ class Restorer {
   const std::uint8_t* payload_;
   std::size_t size_;
   std::uint8_t* stage_;
+  bool as_host_;  // detail::restore_held_payload
   std::size_t at_ = 0;
   std::size_t references_ = 0;
   std::uint32_t reference_count_ = 0;
@@ -403,13 +407,14 @@ Result restore_payload(const Schema& schema, const std::uint8_t* payload, std::s
 
 Result detail::restore_held_payload(const Schema& schema, const std::uint8_t* payload,
                                     std::size_t size, std::uint8_t* scratch,
-                                    std::size_t scratch_capacity, const PayloadShape* shape) {
+                                    std::size_t scratch_capacity, const PayloadShape* shape,
+                                    bool as_host) {
   if (payload == nullptr && size != 0) return Result::Corrupt;
   if (scratch == nullptr || scratch_capacity < scratch_size(schema)) return Result::NoSpace;
   const std::uintptr_t misalignment =
       reinterpret_cast<std::uintptr_t>(scratch) % detail::kStageAlign;
   std::uint8_t* stage = scratch + (misalignment ? detail::kStageAlign - misalignment : 0);
-  const Result result = Restorer(schema, payload, size, stage).run(shape);
+  const Result result = Restorer(schema, payload, size, stage, as_host).run(shape);
   if (result != Result::Ok) return result;
   for (std::uint32_t r = 0; r < schema.root_count; ++r) {
     const std::size_t root_size = detail::root_size(schema, r);

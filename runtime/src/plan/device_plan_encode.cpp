@@ -188,6 +188,16 @@ class DeviceEncoder {
         return fail(path, std::string("is an enum none of whose enumerators (") + wt.name +
                               ") is in this build's " + rt.name + kFixes);
       }
+    } else if (rt.kind == Kind::Enum) {
+      // A number becomes an enum only as one of its enumerators' values: each maps to itself.
+      for (std::uint32_t e = 0; e < rt.enumerator_count; ++e) {
+        pairs.push_back(static_cast<std::uint64_t>(rt.enumerators[e].value));
+        pairs.push_back(static_cast<std::uint64_t>(rt.enumerators[e].value));
+      }
+      if (pairs.empty()) {
+        return fail(path, std::string("becomes the enum ") + rt.name +
+                              ", which has no enumerator to hold its values" + kFixes);
+      }
     }
     const bool ranged = field && field->has_range;
     const unsigned width = field ? field->bit_width : 0, offset = field ? field->bit_offset : 0;

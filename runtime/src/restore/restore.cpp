@@ -246,7 +246,8 @@ bool restore_same_build(const Schema& schema, std::uint64_t hash, const std::uin
   if (!entry.first_same_build_restore() || !entry.device_holdable()) return false;
   const HeldScratch scratch(schema);
   if (device::detail::restore_held_payload(schema, payload, size, scratch.bytes(), scratch.size(),
-                                           &entry.held_shape()) != device::Result::Ok) {
+                                           &entry.held_shape(),
+                                           /*as_host=*/true) != device::Result::Ok) {
     return false;
   }
   ReportAccess::set_source(report, std::make_shared<SameBuildReport>(schema, hash));
@@ -260,9 +261,34 @@ extern "C" const char symcr_device_plan_executor;
 [[maybe_unused]] __attribute__((used)) const char* const kDevicePlanExecutor =
     &symcr_device_plan_executor;
 
+// Whether the value of `n` and everything in it is written by the executor exactly as the
+// planned path writes it: nothing left out (a field, an element, a value that changed kind),
+// whose bytes the executor would skip where the planned path checks them, and no validator
+// (the planned path judges a value-initialised staged object, the executor a copy of the
+// running build's). A pointer's target is a reference, not a value decoded here.
+bool written_alike(const PlanNode* n) {
+  if (n == nullptr || n->validated) return false;
+  switch (n->action) {
+    case Action::Scalar:
+    case Action::Union:
+    case Action::Pointer:
+      return true;
+    case Action::Array:
+      return n->element_skip == nullptr && written_alike(n->element);
+    case Action::Struct:
+      for (const FieldPlan& field : n->fields) {
+        if (field.reader_field == kNoType || !written_alike(field.node)) return false;
+      }
+      return true;
+    default:
+      return false;
+  }
+}
+
 // Encodes `plan` for the device profile's cross-version executor, once, when that executor
 // holds it: both builds' types are ones the device profile holds, with no times of clocks (it
-// rebases every time, as after a reset), and it carries out each of the plan's decisions.
+// rebases every time, as after a reset), every root is kept and written alike, and the
+// executor carries out each of the plan's decisions.
 void make_held_image(const Plan& plan, std::uint64_t writer_hash) {
   std::call_once(plan.held_image_made, [&plan, writer_hash] {
     const Schema& reader = *plan.reader;
@@ -270,6 +296,9 @@ void make_held_image(const Plan& plan, std::uint64_t writer_hash) {
         !schema_cache_entry(reader).device_holdable() ||
         device::check_schema(*plan.writer) != device::Result::Ok) {
       return;
+    }
+    for (const RootPlan& root : plan.roots) {
+      if (root.reader_root == kNoType || !written_alike(root.node)) return;
     }
     std::string refused;
     if (!device_plan_image_of(plan, writer_hash, schema_blob(reader).hash, plan.held_image,
@@ -294,8 +323,8 @@ bool restore_held_across(const Plan& plan, const std::uint8_t* payload, std::siz
   const PlannedSchema planned{0, plan.held_image.data(),
                               static_cast<std::uint32_t>(plan.held_image.size())};
   return device::detail::restore_planned_payload(*plan.reader, planned, payload, size,
-                                                 scratch.bytes(),
-                                                 scratch.size()) == device::Result::Ok;
+                                                 scratch.bytes(), scratch.size(),
+                                                 /*as_host=*/true) == device::Result::Ok;
 }
 
 Report run_restore(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,
