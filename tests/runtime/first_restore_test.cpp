@@ -342,6 +342,45 @@ TEST(FirstRestore, APointerOutsideTheStateIsReportedByTheSameBuildsFirstRestore)
   EXPECT_EQ(small0.mode, 5);
 }
 
+// An unsigned 2^64 - 1 has the bits of -1 but is not the enumerator -1.
+enum class Tiny : std::int8_t { M1 = -1, P1 = 1 };
+struct Wide0 {
+  std::uint64_t u;
+};
+struct Wide1 {
+  Tiny u;
+};
+Wide0 wide0;
+Wide1 wide1;
+const symcr::EnumeratorInfo kTiny[] = {{"M1", -1}, {"P1", 1}};
+
+TEST(FirstRestore, AnUnsignedValueWithTheBitsOfANegativeEnumeratorIsNotIt) {
+  static const symcr::FieldInfo fields0[] = {field("u", 0, offsetof(Wide0, u))};
+  static const symcr::TypeInfo types0[] = {scalar("uint64", Kind::UInt, 8),
+                                           record("W", sizeof(Wide0), alignof(Wide0), fields0, 1)};
+  static const symcr::RootInfo roots0[] = {{"w", 1, &wide0, 0, nullptr}};
+  static const symcr::Schema schema0{types0, 2, roots0, 1, nullptr};
+  static const symcr::FieldInfo fields1[] = {field("u", 1, offsetof(Wide1, u))};
+  static const symcr::TypeInfo types1[] = {scalar("int8", Kind::Int, 1),
+                                           enumeration("Tiny", 1, 0, kTiny, 2),
+                                           record("W", sizeof(Wide1), alignof(Wide1), fields1, 1)};
+  static const symcr::RootInfo roots1[] = {{"w", 2, &wide1, 0, nullptr}};
+  std::deque<symcr::Schema>& readers = fresh_readers();
+  for (const std::uint64_t value : {~std::uint64_t{0}, std::uint64_t{1}}) {
+    wide0.u = value;
+    const Saved saved = save(schema0);
+    readers.emplace_back(symcr::Schema{types1, 3, roots1, 1, nullptr});
+    wide1.u = Tiny::P1;
+    const symcr::Report first = restore_small(saved, readers.back());
+    const Tiny after_first = wide1.u;
+    wide1.u = Tiny::P1;
+    const symcr::Report again = restore_small(saved, readers.back());
+    EXPECT_EQ(again.to_text(), first.to_text());
+    EXPECT_EQ(after_first, wide1.u);
+    EXPECT_EQ(after_first, Tiny::P1) << value;  // rejected, or 1 restored as P1
+  }
+}
+
 TEST(FirstRestore, ADamagedValueOfARemovedFieldIsFoundAsByThePlannedPath) {
   small0 = Small0{5, true, nullptr};
   Saved saved = save(small_schema0());

@@ -190,9 +190,16 @@ class DeviceEncoder {
       }
     } else if (rt.kind == Kind::Enum) {
       // A number becomes an enum only as one of its enumerators' values: each maps to itself.
+      // The device compares the writer's bits (sign-extended if it is signed), so a value is
+      // paired only where equal bits mean equal numbers: no negative enumerator for an unsigned
+      // writer, none at 2^63 or more (of an unsigned enum) for a signed one.
+      const bool writer_signed = scalar_of(w_, wt) >> 4 == dp::kSigned;
+      const bool reader_signed = r_.types[rt.element].kind == Kind::Int;
       for (std::uint32_t e = 0; e < rt.enumerator_count; ++e) {
-        pairs.push_back(static_cast<std::uint64_t>(rt.enumerators[e].value));
-        pairs.push_back(static_cast<std::uint64_t>(rt.enumerators[e].value));
+        const std::int64_t value = rt.enumerators[e].value;
+        if (value < 0 && (reader_signed ? !writer_signed : writer_signed)) continue;
+        pairs.push_back(static_cast<std::uint64_t>(value));
+        pairs.push_back(static_cast<std::uint64_t>(value));
       }
       if (pairs.empty()) {
         return fail(path, std::string("becomes the enum ") + rt.name +
