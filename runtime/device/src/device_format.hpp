@@ -144,8 +144,8 @@ struct PayloadShape {
 PayloadShape payload_shape(const Schema& schema);
 // restore_payload() for a schema first_unheld_type() already accepted. `shape`: its
 // payload_shape(), found once per schema by a host, or null to find it here. `as_host`: refuse
-// (Rejected) what a host's general decoder would not restore silently: a pointer to something
-// outside the roots (which it reports as kept), a reference no pointer uses (which it checks).
+// (Rejected) a pointer to something outside the roots, which a host's general decoder restores
+// and reports as kept.
 Result restore_held_payload(const Schema& schema, const std::uint8_t* payload, std::size_t size,
                             std::uint8_t* scratch, std::size_t scratch_capacity,
                             const PayloadShape* shape = nullptr, bool as_host = false);
@@ -155,6 +155,7 @@ Result restore_held_payload(const Schema& schema, const std::uint8_t* payload, s
 const PlannedSchema* plan_for_writer(const Build& build, std::uint64_t writer_hash)
     __attribute__((weak));
 // restore_held_payload() for a payload of the plan's writer: each value through the plan.
+// `as_host` also refuses a reference no pointer used, which a host's general decoder checks.
 Result restore_planned_payload(const Schema& reader, const PlannedSchema& planned,
                                const std::uint8_t* payload, std::size_t size, std::uint8_t* scratch,
                                std::size_t scratch_capacity, bool as_host = false)
