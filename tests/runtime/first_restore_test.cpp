@@ -127,28 +127,24 @@ struct Restored {
   std::vector<std::uint8_t> bytes;  // vehicle1 afterwards
   bool decoded_tables;
 };
-Restored restore(const Saved& saved, const symcr::Schema& reader, bool prepare) {
+// The report of one restore of `saved` into `reader`, with the writer parsed from its bytes as
+// a store's schema area is.
+symcr::Report restore_report(const Saved& saved, const symcr::Schema& reader, bool prepare) {
   auto writer = std::make_shared<symcr::detail::ParsedSchema>();
   EXPECT_TRUE(symcr::detail::parse_schema(saved.schema.data(), saved.schema.size(), *writer).ok());
   if (prepare) symcr::detail::prepare_restore(writer->schema(), saved.hash, reader, writer);
+  return symcr::detail::restore_payload(writer->schema(), saved.hash, saved.payload.data(),
+                                        saved.payload.size(), reader, symcr::RestoreOptions(),
+                                        writer);
+}
+
+Restored restore(const Saved& saved, const symcr::Schema& reader, bool prepare) {
   Restored restored;
-  restored.report =
-      symcr::detail::restore_payload(writer->schema(), saved.hash, saved.payload.data(),
-                                     saved.payload.size(), reader, symcr::RestoreOptions(), writer);
+  restored.report = restore_report(saved, reader, prepare);
   restored.decoded_tables = symcr::detail::thread_scratch_bytes().restore != 0;
   const auto* at = reinterpret_cast<const std::uint8_t*>(&vehicle1);
   restored.bytes.assign(at, at + sizeof vehicle1);
   return restored;
-}
-
-// restore(), for the smaller pairs below: the report alone.
-symcr::Report restore_small(const Saved& saved, const symcr::Schema& reader) {
-  auto writer = std::make_shared<symcr::detail::ParsedSchema>();
-  EXPECT_TRUE(symcr::detail::parse_schema(saved.schema.data(), saved.schema.size(), *writer).ok());
-  symcr::detail::prepare_restore(writer->schema(), saved.hash, reader, writer);
-  return symcr::detail::restore_payload(writer->schema(), saved.hash, saved.payload.data(),
-                                        saved.payload.size(), reader, symcr::RestoreOptions(),
-                                        writer);
 }
 
 TEST(FirstRestore, APreparedPlanRestoresThroughTheDeviceExecutorAsTheGeneralDecoderDoes) {
@@ -298,10 +294,10 @@ symcr::Report expect_alike(const Saved& saved, State& state, bool removed_flag) 
   readers.emplace_back(symcr::Schema{small_types(removed_flag), 5,
                                      removed_flag ? kSmallRoots2 : kSmallRoots1, 1, nullptr});
   state = State{};
-  const symcr::Report first = restore_small(saved, readers.back());
+  const symcr::Report first = restore_report(saved, readers.back(), true);
   const State after_first = state;
   state = State{};
-  const symcr::Report again = restore_small(saved, readers.back());
+  const symcr::Report again = restore_report(saved, readers.back(), true);
   EXPECT_EQ(again.to_text(), first.to_text());
   EXPECT_EQ(std::memcmp(&after_first, &state, sizeof state), 0);
   state = after_first;
@@ -371,10 +367,10 @@ TEST(FirstRestore, AnUnsignedValueWithTheBitsOfANegativeEnumeratorIsNotIt) {
     const Saved saved = save(schema0);
     readers.emplace_back(symcr::Schema{types1, 3, roots1, 1, nullptr});
     wide1.u = Tiny::P1;
-    const symcr::Report first = restore_small(saved, readers.back());
+    const symcr::Report first = restore_report(saved, readers.back(), true);
     const Tiny after_first = wide1.u;
     wide1.u = Tiny::P1;
-    const symcr::Report again = restore_small(saved, readers.back());
+    const symcr::Report again = restore_report(saved, readers.back(), true);
     EXPECT_EQ(again.to_text(), first.to_text());
     EXPECT_EQ(after_first, wide1.u);
     EXPECT_EQ(after_first, Tiny::P1) << value;  // rejected, or 1 restored as P1

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "crc32c.hpp"
+#include "first_time.hpp"
 #include "parsed_schema.hpp"
 #include "payload_grammar.hpp"
 #include "report_access.hpp"
@@ -191,7 +192,7 @@ struct Plan final : ReportSource {
   mutable std::once_flag held_image_made;
   mutable std::vector<std::uint8_t> held_image;
   mutable std::atomic<bool> held_image_ready{false};
-  mutable std::atomic<bool> restored{false};  // that first restore has been taken
+  mutable FirstTime restored;  // that first restore has been taken
 
   // Written once by entries() (Planner::build_report).
   mutable std::once_flag report_written;

@@ -315,8 +315,7 @@ void make_held_image(const Plan& plan, std::uint64_t writer_hash) {
 // restore_same_build restores the build's own, with far less code to bring into the caches
 // than the two passes, and as all-or-nothing: whatever it refuses goes the general way.
 bool restore_held_across(const Plan& plan, const std::uint8_t* payload, std::size_t size) {
-  if (!plan.held_image_ready.load(std::memory_order_acquire) ||
-      plan.restored.load(std::memory_order_relaxed) || plan.restored.exchange(true)) {
+  if (!plan.held_image_ready.load(std::memory_order_acquire) || !plan.restored.claim()) {
     return false;
   }
   const HeldScratch scratch(*plan.reader);

@@ -3,13 +3,13 @@
 #ifndef SYMCR_SRC_SCHEMA_FACTS_HPP
 #define SYMCR_SRC_SCHEMA_FACTS_HPP
 
-#include <atomic>
 #include <cstdint>
 #include <mutex>
 #include <vector>
 
 #include "crc32c.hpp"
 #include "device_format.hpp"
+#include "first_time.hpp"
 #include "schema_blob.hpp"
 #include "schema_sizes.hpp"
 #include "symcr/device.hpp"
@@ -76,10 +76,7 @@ struct SchemaCacheEntry {
     return blob_crc_;
   }
   // True the first time it is asked: the process's first restore of this schema into itself.
-  // Read before it is written: every later restore then costs a load, not an atomic exchange.
-  bool first_same_build_restore() const {
-    return !restored_.load(std::memory_order_relaxed) && !restored_.exchange(true);
-  }
+  bool first_same_build_restore() const { return restored_.claim(); }
 
  private:
   mutable std::once_flag facts_computed_;
@@ -87,7 +84,7 @@ struct SchemaCacheEntry {
   mutable std::once_flag device_checked_;
   mutable bool device_holdable_ = false;
   mutable device::detail::PayloadShape held_shape_{};
-  mutable std::atomic<bool> restored_{false};
+  mutable FirstTime restored_;
   mutable std::once_flag blob_crc_computed_;
   mutable Crc32cSpan blob_crc_;
 };
