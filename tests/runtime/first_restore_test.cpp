@@ -6,8 +6,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <algorithm>
 #include <cstring>
 #include <deque>
+#include <iterator>
+#include <memory>
 #include <vector>
 
 #include "engine_test_util.hpp"
@@ -15,7 +18,9 @@
 #include "parsed_schema.hpp"
 #include "restore_payload.hpp"
 #include "schema_blob.hpp"
+#include "schema_facts.hpp"
 #include "scratch.hpp"
+#include "symcr/device.hpp"
 
 namespace engine_tests {
 namespace {
@@ -393,6 +398,98 @@ TEST(FirstRestore, WithoutPreparationTheFirstRestoreDecodesAsEveryOther) {
   EXPECT_TRUE(first.decoded_tables);
   EXPECT_EQ(vehicle1.id, 4100);
   EXPECT_EQ(vehicle1.target, &vehicle1.cells[1]);
+}
+
+// Opening a store prepares the scratch of the process's first restore into the build (written
+// there, so that restore meets no page the process has not touched yet); that restore, through
+// one of the device profile's decoders, takes it.
+std::uint8_t* take_prepared(const symcr::Schema& reader) {
+  return symcr::detail::schema_cache_entry(reader).take_first_scratch();
+}
+void free_prepared(std::uint8_t* scratch, const symcr::Schema& reader) {
+  std::allocator<std::uint8_t>().deallocate(scratch, symcr::device::scratch_size(reader));
+}
+
+TEST(FirstRestore, OpeningTheBuildsOwnStorePreparesTheScratchItsFirstRestoreTakes) {
+  set_v0(8.25);
+  std::deque<symcr::Schema>& readers = fresh_readers();
+  readers.push_back(schema0());
+  const symcr::Schema& looked_at = readers.back();
+  const Saved saved = save(looked_at);
+  symcr::detail::prepare_restore(looked_at, saved.hash, looked_at, nullptr);
+  std::uint8_t* prepared = take_prepared(looked_at);
+  ASSERT_NE(prepared, nullptr);
+  const std::size_t size = symcr::device::scratch_size(looked_at);
+  EXPECT_EQ(std::count(prepared, prepared + size, 0), static_cast<std::ptrdiff_t>(size));
+  free_prepared(prepared, looked_at);
+  EXPECT_EQ(take_prepared(looked_at), nullptr);  // taken once
+
+  readers.push_back(schema0());
+  const symcr::Schema& restored = readers.back();
+  symcr::detail::prepare_restore(restored, saved.hash, restored, nullptr);
+  vehicle0 = Vehicle0{};
+  const symcr::Report report =
+      symcr::detail::restore_payload(restored, saved.hash, saved.payload.data(),
+                                     saved.payload.size(), restored, symcr::RestoreOptions());
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(symcr::detail::thread_scratch_bytes().restore, 0u);  // the device's decoder
+  EXPECT_EQ(take_prepared(restored), nullptr);                   // which took the scratch
+  EXPECT_EQ(vehicle0.id, 4100);
+  EXPECT_EQ(vehicle0.speed, 8.25);
+  EXPECT_EQ(vehicle0.cells[3], 40);
+  EXPECT_EQ(vehicle0.target, &vehicle0.cells[1]);
+}
+
+TEST(FirstRestore, OpeningAnotherBuildsStorePreparesTheScratchOnlyForTheExecutor) {
+  set_v0(2.5);
+  const Saved saved = save(schema0());
+  auto v0 = std::make_shared<symcr::detail::ParsedSchema>();
+  ASSERT_TRUE(symcr::detail::parse_schema(saved.schema.data(), saved.schema.size(), *v0).ok());
+  std::deque<symcr::Schema>& readers = fresh_readers();
+  readers.emplace_back(symcr::Schema{types1(), 7, kRoots1, 1, nullptr});
+  symcr::detail::prepare_restore(v0->schema(), saved.hash, readers.back(), v0);
+  std::uint8_t* prepared = take_prepared(readers.back());
+  ASSERT_NE(prepared, nullptr);
+  free_prepared(prepared, readers.back());
+
+  readers.emplace_back(symcr::Schema{types1(), 7, kRoots1, 1, nullptr});
+  scramble_v1();
+  const Restored first = restore(saved, readers.back(), true);
+  ASSERT_TRUE(first.report.ok()) << first.report.to_text();
+  EXPECT_FALSE(first.decoded_tables);
+  EXPECT_EQ(take_prepared(readers.back()), nullptr);  // the executor took it
+  EXPECT_EQ(vehicle1.speed, 2.5f);
+
+  // A plan the executor does not hold (a field removed) prepares nothing.
+  small0 = Small0{5, true, nullptr};
+  const Saved small = save(small_schema0());
+  auto writer = std::make_shared<symcr::detail::ParsedSchema>();
+  ASSERT_TRUE(symcr::detail::parse_schema(small.schema.data(), small.schema.size(), *writer).ok());
+  readers.emplace_back(symcr::Schema{small_types(true), 5, kSmallRoots2, 1, nullptr});
+  symcr::detail::prepare_restore(writer->schema(), small.hash, readers.back(), writer);
+  EXPECT_EQ(take_prepared(readers.back()), nullptr);
+}
+
+// A large state's scratch is not kept waiting for a restore that may never come.
+std::int32_t big_cells[20000];
+TEST(FirstRestore, ALargeStatesScratchIsNotPreparedAndItsFirstRestoreStillSucceeds) {
+  static const symcr::TypeInfo types[] = {scalar("int32", Kind::Int, 4),
+                                          array("int32[20000]", 0, 20000, sizeof big_cells, 4)};
+  static const symcr::RootInfo roots[] = {{"cells", 1, big_cells, 0, nullptr}};
+  static const symcr::Schema schema{types, 2, roots, 1, nullptr};
+  ASSERT_GT(symcr::device::scratch_size(schema), 64u * 1024u);
+  for (int i = 0; i < 20000; ++i) big_cells[i] = i * 3;
+  const Saved saved = save(schema);
+  symcr::detail::prepare_restore(schema, saved.hash, schema, nullptr);
+  EXPECT_EQ(take_prepared(schema), nullptr);
+  std::fill(std::begin(big_cells), std::end(big_cells), -1);
+  const symcr::Report report =
+      symcr::detail::restore_payload(schema, saved.hash, saved.payload.data(), saved.payload.size(),
+                                     schema, symcr::RestoreOptions());
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(symcr::detail::thread_scratch_bytes().restore, 0u);
+  EXPECT_EQ(big_cells[0], 0);
+  EXPECT_EQ(big_cells[19999], 19999 * 3);
 }
 
 }  // namespace

@@ -213,15 +213,17 @@ struct SameBuildReport final : ReportSource {
   mutable std::shared_ptr<const Plan> plan_;
 };
 
-// Scratch for one of the device profile's decoders: not kept, and not zero-filled (a decoder
-// stages every root's bytes before it reads them). Through std::allocator, as containers
-// allocate: in a fresh process new[] and delete[] are often not bound yet, and binding them
-// lazily cost more than a tenth of a first restore.
+// Scratch for one of the device profile's decoders restoring into `reader`: the one prepared
+// when the store was opened, if it is still there, or else allocated. Not kept, and not
+// zero-filled (a decoder stages every root's bytes before it reads them). Through
+// std::allocator, as containers allocate: in a fresh process new[] and delete[] are often not
+// bound yet, and binding them lazily cost more than a tenth of a first restore.
 class HeldScratch {
  public:
-  explicit HeldScratch(const Schema& reader)
-      : size_(device::scratch_size(reader)),
-        bytes_(std::allocator<std::uint8_t>().allocate(size_)) {}
+  explicit HeldScratch(const SchemaCacheEntry& reader)
+      : size_(device::scratch_size(*reader.schema)), bytes_(reader.take_first_scratch()) {
+    if (bytes_ == nullptr) bytes_ = std::allocator<std::uint8_t>().allocate(size_);
+  }
   ~HeldScratch() { std::allocator<std::uint8_t>().deallocate(bytes_, size_); }
   HeldScratch(const HeldScratch&) = delete;
   HeldScratch& operator=(const HeldScratch&) = delete;
@@ -244,7 +246,7 @@ bool restore_same_build(const Schema& schema, std::uint64_t hash, const std::uin
                         std::size_t size, Report& report) {
   const SchemaCacheEntry& entry = schema_cache_entry(schema);
   if (!entry.first_same_build_restore() || !entry.device_holdable()) return false;
-  const HeldScratch scratch(schema);
+  const HeldScratch scratch(entry);
   if (device::detail::restore_held_payload(schema, payload, size, scratch.bytes(), scratch.size(),
                                            &entry.held_shape(),
                                            /*as_host=*/true) != device::Result::Ok) {
@@ -318,7 +320,7 @@ bool restore_held_across(const Plan& plan, const std::uint8_t* payload, std::siz
   if (!plan.held_image_ready.load(std::memory_order_acquire) || !plan.restored.claim()) {
     return false;
   }
-  const HeldScratch scratch(*plan.reader);
+  const HeldScratch scratch(schema_cache_entry(*plan.reader));
   const PlannedSchema planned{0, plan.held_image.data(),
                               static_cast<std::uint32_t>(plan.held_image.size())};
   return device::detail::restore_planned_payload(*plan.reader, planned, payload, size,
@@ -410,15 +412,18 @@ Report restore_payload(const Schema& writer, std::uint64_t writer_hash, const st
 
 void prepare_restore(const Schema& writer, std::uint64_t writer_hash, const Schema& reader,
                      std::shared_ptr<const ParsedSchema> writer_owner) {
+  const SchemaCacheEntry& entry = schema_cache_entry(reader);
   if (&writer == &reader) {
-    schema_cache_entry(reader).device_holdable();
+    if (entry.device_holdable()) entry.prepare_first_scratch();
     return;
   }
   Status ignored;
   const std::shared_ptr<const Plan> plan =
       plan_for(writer, writer_hash, reader, ignored, std::move(writer_owner));
   restoring::RestoreTablesLease::prepare_thread_tables();
-  if (plan) make_held_image(*plan, writer_hash);
+  if (!plan) return;
+  make_held_image(*plan, writer_hash);
+  if (plan->held_image_ready.load(std::memory_order_acquire)) entry.prepare_first_scratch();
 }
 
 Report plan_payload(const Schema& writer, std::uint64_t writer_hash, const std::uint8_t* payload,

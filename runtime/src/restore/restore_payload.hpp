@@ -23,9 +23,9 @@ Report restore_payload(const Schema& writer, std::uint64_t writer_hash, const st
                        std::shared_ptr<const ParsedSchema> writer_owner = nullptr);
 
 // What restore_payload needs to know of the two schemas alone, resolved ahead of it (the plan,
-// cached; for a schema restored into itself, that the same-build decoder holds it), so that a
-// later restore only decodes and writes. Never fails: a refusing plan is cached and reported by
-// the restore.
+// cached; for a schema restored into itself, that the same-build decoder holds it; the first
+// restore's scratch, touched), so that a later restore only decodes and writes. Never fails: a
+// refusing plan is cached and reported by the restore.
 void prepare_restore(const Schema& writer, std::uint64_t writer_hash, const Schema& reader,
                      std::shared_ptr<const ParsedSchema> writer_owner);
 

@@ -3,7 +3,11 @@
 #ifndef SYMCR_SRC_SCHEMA_FACTS_HPP
 #define SYMCR_SRC_SCHEMA_FACTS_HPP
 
+#include <atomic>
+#include <cstddef>
 #include <cstdint>
+#include <cstring>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -77,6 +81,25 @@ struct SchemaCacheEntry {
   }
   // True the first time it is asked: the process's first restore of this schema into itself.
   bool first_same_build_restore() const { return restored_.claim(); }
+  // The scratch of the process's first restore into this schema through one of the device
+  // profile's decoders (restore.cpp), allocated and written when a store is opened
+  // (prepare_restore): in a fresh process a page fault costs as much as half that restore,
+  // and freshly allocated scratch meets one or two. Only small scratch is prepared, as it is
+  // kept until taken.
+  void prepare_first_scratch() const {
+    std::call_once(first_scratch_made_, [this] {
+      const std::size_t size = device::scratch_size(*schema);
+      if (size > kMaxPreparedScratch) return;
+      std::uint8_t* bytes = std::allocator<std::uint8_t>().allocate(size);
+      std::memset(bytes, 0, size);
+      first_scratch_.store(bytes, std::memory_order_release);
+    });
+  }
+  // The prepared scratch (device::scratch_size(*schema) bytes from std::allocator, the
+  // caller's to free) to its first taker; nullptr when none was prepared or it is taken.
+  std::uint8_t* take_first_scratch() const {
+    return first_scratch_.exchange(nullptr, std::memory_order_acq_rel);
+  }
 
  private:
   mutable std::once_flag facts_computed_;
@@ -85,6 +108,9 @@ struct SchemaCacheEntry {
   mutable bool device_holdable_ = false;
   mutable device::detail::PayloadShape held_shape_{};
   mutable FirstTime restored_;
+  static constexpr std::size_t kMaxPreparedScratch = 64 * 1024;
+  mutable std::once_flag first_scratch_made_;
+  mutable std::atomic<std::uint8_t*> first_scratch_{nullptr};
   mutable std::once_flag blob_crc_computed_;
   mutable Crc32cSpan blob_crc_;
 };
