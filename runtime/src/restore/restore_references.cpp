@@ -76,6 +76,7 @@ bool Restorer::inside_reader_root(std::uintptr_t address) const {
 // type, lends its object to the heap object it now refers to (once; never an object in a root).
 void Restorer::claim_live_objects() {
   claimed_.assign(heap_.size(), nullptr);
+  if (heap_.empty()) return;  // most states: pointers into the roots only
   std::unordered_set<std::uintptr_t> taken;
   for (const SlotRecord& slot : slots_) {
     if (!slot.node || slot.shared || slot.code < kFirstReference || !slot.live) continue;
@@ -95,6 +96,10 @@ void Restorer::claim_live_objects() {
 // pointers in dropped fields. A shared_ptr object must be reached through a shared_ptr: with
 // no restored owner it would die at once and leave raw pointers to it dangling.
 void Restorer::decide_materialisation() {
+  if (heap_.empty()) {
+    materialisable_.clear();
+    return;
+  }
   const std::uint32_t roots = writer_.root_count;
   const std::size_t objects = roots + heap_.size();
   std::vector<bool> creatable(heap_.size(), false);
