@@ -21,6 +21,55 @@ namespace {
 
 constexpr int kRounds = 60;
 
+// Opening a store of the build's own schema prepares the scratch of the process's first
+// restore (written there, so that that restore meets no fresh page): the opens below prepare
+// it, then one thread's first restore takes it while another thread opens stores again. It is
+// taken once and freed once, and each restore is whole. First in this file: under
+// ThreadSanitizer all Threads tests share one process, and only its first restore of the frame
+// takes the prepared scratch.
+TEST(Threads, OpeningStoresWhileAnotherThreadRestoresForTheFirstTimeDoesNotRace) {
+  file_tests::TempDir dir;
+  symcr::StoreOptions options;
+  options.slots = 2;
+  options.slot_size = 32 * 1024;
+  std::vector<std::string> paths;
+  for (int i = 0; i < 4; ++i) {
+    paths.push_back(dir.file("opened" + std::to_string(i) + ".store"));
+    fill_frame(static_cast<std::uint64_t>(100 + i));
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(paths.back().c_str(), frame_schema(), options, store).ok());
+    ASSERT_TRUE(store.save().ok());
+  }
+  fill_frame(7);
+  std::vector<std::uint8_t> buffer;
+  ASSERT_TRUE(symcr::checkpoint_to_buffer(frame_schema(), buffer).ok());
+  frame = Frame{};
+
+  std::atomic<int> go{0};
+  std::atomic<int> failures{0};
+  std::thread opener([&] {
+    while (go.load() == 0) std::this_thread::yield();
+    for (int round = 0; round < 20; ++round) {
+      symcr::Store store;
+      const std::string& path = paths[static_cast<std::size_t>(round) % paths.size()];
+      if (!symcr::Store::open(path.c_str(), frame_schema(), options, store).ok()) ++failures;
+    }
+  });
+  std::thread restorer([&] {
+    while (go.load() == 0) std::this_thread::yield();
+    for (int round = 0; round < 20; ++round) {
+      frame.sequence = 0;
+      const symcr::Report report =
+          symcr::restore_from_buffer(frame_schema(), buffer.data(), buffer.size());
+      if (!report.ok() || !frame_is(7)) ++failures;
+    }
+  });
+  go.store(1);
+  opener.join();
+  restorer.join();
+  EXPECT_EQ(failures.load(), 0);
+}
+
 TEST(Threads, ThreadsCheckpointingTheirOwnStateConcurrentlyDoNotRace) {
   file_tests::TempDir dir;
   const std::string store_path = dir.file("frames.store");
