@@ -108,7 +108,7 @@ struct SchemaCacheEntry {
   mutable bool device_holdable_ = false;
   mutable device::detail::PayloadShape held_shape_{};
   mutable FirstTime restored_;
-  static constexpr std::size_t kMaxPreparedScratch = 64 * 1024;
+  static constexpr std::size_t kMaxPreparedScratch = std::size_t{64} * 1024;
   mutable std::once_flag first_scratch_made_;
   mutable std::atomic<std::uint8_t*> first_scratch_{nullptr};
   mutable std::once_flag blob_crc_computed_;
