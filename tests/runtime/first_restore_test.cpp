@@ -11,6 +11,7 @@
 #include <deque>
 #include <iterator>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "engine_test_util.hpp"
@@ -490,6 +491,45 @@ TEST(FirstRestore, ALargeStatesScratchIsNotPreparedAndItsFirstRestoreStillSuccee
   EXPECT_EQ(symcr::detail::thread_scratch_bytes().restore, 0u);
   EXPECT_EQ(big_cells[0], 0);
   EXPECT_EQ(big_cells[19999], 19999 * 3);
+}
+
+// A validator reading a member the checkpoint does not hold: the planned path judges a
+// value-initialised staged object (max_speed 0 here), so the process's first restore must not
+// judge a copy of the running state (max_speed 1000) and accept what every later one rejects.
+struct Limits {
+  std::int32_t speed;
+  std::int32_t max_speed;  // not checkpointed
+};
+Limits limits;
+bool speed_within_limit(const void* object) {
+  const auto* l = static_cast<const Limits*>(object);
+  return l->speed <= l->max_speed;
+}
+const symcr::Lifecycle kLimitsLifecycle = {
+    []() -> void* { return new Limits(); },
+    [](void* object) { delete static_cast<Limits*>(object); }, nullptr};
+
+TEST(FirstRestore, AValidatorJudgesTheSameStagedObjectOnTheSameBuildsFirstRestore) {
+  static const symcr::FieldInfo fields[] = {field("speed", 0, offsetof(Limits, speed))};
+  static const symcr::TypeInfo types[] = {
+      scalar("int32", Kind::Int, 4), record("Limits", sizeof(Limits), alignof(Limits), fields, 1,
+                                            &kLimitsLifecycle, speed_within_limit)};
+  static const symcr::RootInfo roots[] = {{"limits", 1, &limits, 0, nullptr}};
+  static const symcr::Schema schema{types, 2, roots, 1, nullptr};
+  limits = Limits{500, 1000};
+  const Saved saved = save(schema);
+  std::vector<std::string> reports;
+  for (int round = 0; round < 2; ++round) {
+    symcr::detail::prepare_restore(schema, saved.hash, schema, nullptr);
+    limits = Limits{7, 1000};
+    const symcr::Report report =
+        symcr::detail::restore_payload(schema, saved.hash, saved.payload.data(),
+                                       saved.payload.size(), schema, symcr::RestoreOptions());
+    expect_entry(report, "limits", symcr::Decision::Rejected);
+    EXPECT_EQ(limits.speed, 7) << "round " << round;  // this build's value stays
+    reports.push_back(report.to_text());
+  }
+  EXPECT_EQ(reports[0], reports[1]);
 }
 
 }  // namespace

@@ -51,6 +51,14 @@ struct SchemaFacts {
 
 SchemaFacts compute_schema_facts(const Schema& schema);
 
+// Whether any type of `schema` has a symcr_validate.
+inline bool any_validator(const Schema& schema) {
+  for (std::uint32_t t = 0; t < schema.type_count; ++t) {
+    if (schema.types[t].validate != nullptr) return true;
+  }
+  return false;
+}
+
 // The blob and facts of `schema`, each computed on its first use (a restore needs only the
 // blob; saving needs the facts). Both live as long as the process.
 struct SchemaCacheEntry {
@@ -60,13 +68,16 @@ struct SchemaCacheEntry {
     std::call_once(facts_computed_, [this] { facts_ = compute_schema_facts(*schema); });
     return facts_;
   }
-  // Every type reachable from the roots is one the device profile's decoder holds, so a
-  // checkpoint of this very schema can be restored without a plan (restore.cpp).
+  // Every type reachable from the roots is one the device profile's decoder holds, and that
+  // decoder restores it as the planned path does, so a checkpoint of this very schema can be
+  // restored without a plan (restore.cpp).
   bool device_holdable() const {
     std::call_once(device_checked_, [this] {
-      // Times of clocks are rebased value by value, which that decoder leaves to the device.
-      device_holdable_ =
-          device::check_schema(*schema) == device::Result::Ok && schema_clocks(*schema).empty();
+      // Times of clocks are rebased value by value, which that decoder leaves to the device. A
+      // validator judges a value-initialised staged object on the planned path, a copy of the
+      // running state (its skipped members included) in that decoder.
+      device_holdable_ = device::check_schema(*schema) == device::Result::Ok &&
+                         schema_clocks(*schema).empty() && !any_validator(*schema);
       if (device_holdable_) held_shape_ = device::detail::payload_shape(*schema);
     });
     return device_holdable_;
