@@ -637,6 +637,30 @@ TEST_F(StoreTest, ATruncatedStoreRestoresItsWholeSlotsAndGrowsBackForWriting) {
   expect_a(5);
 }
 
+// A truncation that takes only zero bytes off the newest record: the file grows back to its
+// geometry zero-filled, which makes that record whole again. The first restore after open()
+// (which follows open()'s scan) and every later one must read the file as grown back.
+TEST_F(StoreTest, ATruncationOfTrailingZerosIsReadAsGrownBackByTheFirstRestoreToo) {
+  save_seeds(1, 3);  // sequences 1-3 in slots 0-2
+  StoreFile file(path);
+  const std::uint64_t start = file.slots_offset() + 2 * file.slot_size();
+  const std::uint64_t end = start + file.record_size(2);
+  std::uint64_t cut = end;
+  while (cut > start && file.bytes[cut - 1] == 0) --cut;
+  ASSERT_LT(cut, end) << "the newest record ends in no zero byte";
+  ASSERT_EQ(::truncate(path.c_str(), static_cast<off_t>(cut)), 0);
+  symcr::Store store;
+  open(store);
+  for (int round = 0; round < 2; ++round) {
+    scramble_a();
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(report.sequence(), 3u) << "round " << round;
+    EXPECT_TRUE(report.skipped().empty()) << "round " << round;
+    expect_a(3);
+  }
+}
+
 TEST_F(StoreTest, AReadOnlyStoreFileOpensForRestoring) {
   save_seeds(1, 2);
   ASSERT_EQ(::chmod(path.c_str(), 0400), 0);

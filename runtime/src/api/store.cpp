@@ -1033,15 +1033,17 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
       }
       if (!status.ok()) return status;
     }
-    status = impl.load_areas(fd, schema);
-    if (status.ok()) status = impl.scan_slots(fd);  // slots past a truncation read as empty
-    if (!status.ok()) return status;
     if (can_write && file_size < impl.geometry.file_size()) {
-      // Truncated: the whole slots are kept; the file grows back to its size, zero-filled.
+      // Truncated: the whole slots are kept; the file grows back to its size, zero-filled,
+      // before anything is read from it, so that this open and every later scan read the same
+      // bytes (a record whose lost tail was zeros is whole again for both).
       const int rc =
           detail::file_system().fallocate(fd, static_cast<off_t>(impl.geometry.file_size()));
       if (rc != 0) return detail::io_error("cannot extend the truncated store", path, rc);
     }
+    status = impl.load_areas(fd, schema);
+    if (status.ok()) status = impl.scan_slots(fd);  // slots past a truncation read as empty
+    if (!status.ok()) return status;
     if (can_write && !same_dimensions(impl.geometry, wanted)) {
       // Another geometry: read with the file's, rewrite (a new file renamed over this one) at
       // the first save, so that a crash never leaves less than the old store.
