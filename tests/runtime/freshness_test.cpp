@@ -407,6 +407,29 @@ TEST_F(FreshnessTest, AMissingForgedOrForeignCounterRestoresNothing) {
   expect_a(2);
 }
 
+// A program holding other keys only opens the store: its records do not verify for it, and the
+// counter is not its to create or rewrite; the program holding the store's key still restores.
+TEST_F(FreshnessTest, AnOpenWithOtherKeysLeavesTheCounterAsItIs) {
+  save_seeds(1, 3);
+  const std::string counter = path + ".fresh";
+  const std::vector<std::uint8_t> genuine = read_file(counter);
+  const std::vector<std::uint8_t> other_key(32, 0x33);
+  const symcr::CheckpointKey other{2, other_key.data(), other_key.size()};
+  ASSERT_TRUE(symcr::set_checkpoint_keys(&other, 1).ok());
+  {
+    symcr::Store store;
+    const symcr::Status opened = symcr::Store::open(path.c_str(), schema_a, options, store);
+    ASSERT_TRUE(opened.ok()) << opened.message();
+  }
+  EXPECT_EQ(read_file(counter), genuine);
+  const symcr::CheckpointKey key{1, kKey.data(), kKey.size()};
+  ASSERT_TRUE(symcr::set_checkpoint_keys(&key, 1).ok());
+  const symcr::Report report = restore();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 3u);
+  expect_a(3);
+}
+
 // A counter that exists but cannot be read is a fault to repair, not evidence of an attack:
 // Io, naming the file (a missing or untrustworthy one is RolledBack, above). Nothing is
 // restored either way, and once the counter reads again the newest checkpoint restores.

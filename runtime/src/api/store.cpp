@@ -196,6 +196,14 @@ struct Store::Impl {
     }
     return sequences;
   }
+  // Whether every slot is empty: nothing was ever saved (or all of it is past a truncation).
+  bool holds_no_record() const {
+    for (const Slot& slot : slots) {
+      if (slot.state != StoreSlotState::Empty) return false;
+    }
+    return true;
+  }
+
   std::uint64_t newest_authentic_sequence() const {
     const std::vector<std::uint64_t> sequences = authentic_sequences();
     return sequences.empty() ? 0 : *std::max_element(sequences.begin(), sequences.end());
@@ -1057,10 +1065,11 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
   impl.own_area = impl.area_for_hash(blob.hash);
   impl.distrust_stale_journal();
   if (impl.keys && can_write && impl.read_only_reason.empty() && !counter_read.ok() &&
-      impl.newest_authentic_sequence() == 0 && impl.journal.freshness == 0) {
-    // Nothing authenticated yet: the counter is created now, before the first checkpoint, so
-    // that a crash while it is first written never leaves a checkpoint without a counter. A
-    // counter that cannot be written yet is reported by the first save.
+      impl.holds_no_record() && impl.journal.freshness == 0) {
+    // Nothing saved yet: the counter is created now, before the first checkpoint, so that a
+    // crash while it is first written never leaves a checkpoint without a counter. A counter
+    // that cannot be written yet is reported by the first save. A store holding records this
+    // program cannot verify (other keys) keeps the counter it has: an open changes nothing.
     (void)impl.advance_counter(impl.highest_known_sequence());
   }
   impl.scan_current = impl.newest_scanned >= 0 || impl.newest_valid_slot() < 0;
