@@ -94,9 +94,8 @@ struct SchemaCacheEntry {
   bool first_same_build_restore() const { return restored_.claim(); }
   // The scratch of the process's first restore into this schema through one of the device
   // profile's decoders (restore.cpp), allocated and written when a store is opened
-  // (prepare_restore): in a fresh process a page fault costs as much as half that restore,
-  // and freshly allocated scratch meets one or two. Only small scratch is prepared, as it is
-  // kept until taken.
+  // (prepare_restore): freshly allocated scratch met a page fault in a fresh process, a third
+  // of that restore's time. Only small scratch is prepared, as it is kept until taken.
   void prepare_first_scratch() const {
     std::call_once(first_scratch_made_, [this] {
       const std::size_t size = device::scratch_size(*schema);
