@@ -1375,11 +1375,14 @@ Report Store::restore_latest(const RestoreOptions& options) {
   if (recording) {
     // Nothing restored: the state stays initial and nothing waits for confirmation. After a
     // crash, what is left is given up on, so the checkpoints saved from the initial state are
-    // the next ones restored (with the full depth again).
+    // the next ones restored (with the full depth again). With nothing of that to record, the
+    // journal (and the freshness counter a journal write advances) stays as it is: a program
+    // whose keys verify none of the store's checkpoints must not sign them over.
+    const bool to_record = crashed || journal.unconfirmed != pending;
     if (crashed) journal.give_up(last_sequence_);
     journal.unconfirmed = pending;
     impl.unconfirmed_is_ours = pending != 0;
-    status = impl.write_journal(fd_, options_.durability);
+    status = to_record ? impl.write_journal(fd_, options_.durability) : Status();
     if (!status.ok()) {
       detail::ReportAccess::set_status(report, status);
       return report;
