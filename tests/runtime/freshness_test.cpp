@@ -430,33 +430,6 @@ TEST_F(FreshnessTest, AnOpenWithOtherKeysLeavesTheCounterAsItIs) {
   expect_a(3);
 }
 
-// The same with the crash-loop fallback on: the restore finds nothing it can verify, restores
-// nothing, and has nothing to record, so neither the journal nor the counter is signed over.
-TEST_F(FreshnessTest, ARestoreWithOtherKeysAndTheFallbackOnWritesNothing) {
-  save_seeds(1, 3);
-  const std::string counter = path + ".fresh";
-  const std::vector<std::uint8_t> genuine_counter = read_file(counter);
-  const std::vector<std::uint8_t> genuine_store = read_file(path);
-  const std::vector<std::uint8_t> other_key(32, 0x33);
-  const symcr::CheckpointKey other{2, other_key.data(), other_key.size()};
-  ASSERT_TRUE(symcr::set_checkpoint_keys(&other, 1).ok());
-  options.fallback_depth = 2;
-  for (int start = 0; start < 2; ++start) {
-    const symcr::Report report = restore();
-    EXPECT_EQ(report.status().error(), symcr::Error::NoValidSlot) << report.status().message();
-    expect_untouched();
-  }
-  EXPECT_EQ(read_file(counter), genuine_counter);
-  EXPECT_EQ(read_file(path), genuine_store);
-  const symcr::CheckpointKey key{1, kKey.data(), kKey.size()};
-  ASSERT_TRUE(symcr::set_checkpoint_keys(&key, 1).ok());
-  options.fallback_depth = 0;
-  const symcr::Report report = restore();
-  ASSERT_TRUE(report.ok()) << report.status().message();
-  EXPECT_EQ(report.sequence(), 3u);
-  expect_a(3);
-}
-
 // A counter that exists but cannot be read is a fault to repair, not evidence of an attack:
 // Io, naming the file (a missing or untrustworthy one is RolledBack, above). Nothing is
 // restored either way, and once the counter reads again the newest checkpoint restores.

@@ -1375,14 +1375,11 @@ Report Store::restore_latest(const RestoreOptions& options) {
   if (recording) {
     // Nothing restored: the state stays initial and nothing waits for confirmation. After a
     // crash, what is left is given up on, so the checkpoints saved from the initial state are
-    // the next ones restored (with the full depth again). With nothing of that to record, the
-    // journal (and the freshness counter a journal write advances) stays as it is: a program
-    // whose keys verify none of the store's checkpoints must not sign them over.
-    const bool to_record = crashed || journal.unconfirmed != pending;
+    // the next ones restored (with the full depth again).
     if (crashed) journal.give_up(last_sequence_);
     journal.unconfirmed = pending;
     impl.unconfirmed_is_ours = pending != 0;
-    status = to_record ? impl.write_journal(fd_, options_.durability) : Status();
+    status = impl.write_journal(fd_, options_.durability);
     if (!status.ok()) {
       detail::ReportAccess::set_status(report, status);
       return report;
