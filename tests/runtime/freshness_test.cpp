@@ -362,6 +362,18 @@ TEST_F(FreshnessTest, SequencesNeverWrapEvenFromAnAuthenticSlot) {
               std::string::npos);
     EXPECT_EQ(read_file(path), bytes);  // nothing written
   }
+  // A restore that records itself first (the crash-loop fallback) cannot record it either: it
+  // is refused, and nothing is written or restored.
+  options.fallback_depth = 2;
+  {
+    const symcr::Report report = restore();
+    EXPECT_EQ(report.status().error(), symcr::Error::Corrupt) << report.status().message();
+    EXPECT_NE(std::string(report.status().message()).find("sequence numbers are exhausted"),
+              std::string::npos);
+    expect_untouched();
+    EXPECT_EQ(read_file(path), bytes);
+  }
+  options.fallback_depth = 0;
   // Above the range, a record is damage: without keys it reads as corrupt, never as newest.
   ASSERT_TRUE(symcr::set_checkpoint_keys(nullptr, 0).ok());
   symcr::format::store64(bytes.data() + at + 16, symcr::format::kMaxRecordSequence + 1);
@@ -427,6 +439,41 @@ TEST_F(FreshnessTest, AnOpenWithOtherKeysLeavesTheCounterAsItIs) {
   const symcr::Report report = restore();
   ASSERT_TRUE(report.ok()) << report.status().message();
   EXPECT_EQ(report.sequence(), 3u);
+  expect_a(3);
+}
+
+// The same with the crash-loop fallback on, in a store whose journal its own program wrote: the
+// restore finds nothing it can verify and restores nothing, so neither the journal nor the
+// counter is signed over, and the store's own program trusts its journal still.
+TEST_F(FreshnessTest, ARestoreWithOtherKeysAndTheFallbackOnWritesNothing) {
+  options.fallback_depth = 2;
+  save_seeds(1, 3);
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, options, store).ok());
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    ASSERT_TRUE(store.confirm().ok());
+  }
+  const std::string counter = path + ".fresh";
+  const std::vector<std::uint8_t> genuine_counter = read_file(counter);
+  const std::vector<std::uint8_t> genuine_store = read_file(path);
+  const std::vector<std::uint8_t> other_key(32, 0x33);
+  const symcr::CheckpointKey other{2, other_key.data(), other_key.size()};
+  ASSERT_TRUE(symcr::set_checkpoint_keys(&other, 1).ok());
+  for (int start = 0; start < 2; ++start) {
+    const symcr::Report report = restore();
+    EXPECT_EQ(report.status().error(), symcr::Error::NoValidSlot) << report.status().message();
+    expect_untouched();
+    EXPECT_EQ(read_file(counter), genuine_counter);
+    EXPECT_EQ(read_file(path), genuine_store);
+  }
+  const symcr::CheckpointKey key{1, kKey.data(), kKey.size()};
+  ASSERT_TRUE(symcr::set_checkpoint_keys(&key, 1).ok());
+  const symcr::Report report = restore();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 3u);
+  EXPECT_TRUE(report.warnings().empty()) << report.to_text();
   expect_a(3);
 }
 

@@ -262,7 +262,10 @@ struct Store::Impl {
       const std::uint64_t fresh =
           std::max({highest_known_sequence(), counter_value, recorded.freshness}) + 1;
       if (fresh > format::kMaxRecordSequence) {
-        return Status(Error::Corrupt, "%s: the store's sequence numbers are exhausted",
+        return Status(Error::Corrupt,
+                      "%s: the store's sequence numbers are exhausted (its journal would be "
+                      "numbered past 2^63 - 1, which only damage or forgery produce); nothing "
+                      "was written: save into a new store",
                       path.c_str());
       }
       journal.freshness = fresh;
@@ -1372,7 +1375,11 @@ Report Store::restore_latest(const RestoreOptions& options) {
     unauthenticated += slot.state == StoreSlotState::Unauthenticated;
   }
   report.clear();
-  if (recording) {
+  // A store whose checkpoints all fail this program's keys, and whose journal names no crash
+  // it trusts, is another key holder's: signing its journal (and counter) over with these keys
+  // would leave its own program a store it refuses as rolled back.
+  const bool anothers_store = !crashed && unauthenticated > 0 && impl.newest_first.empty();
+  if (recording && !anothers_store) {
     // Nothing restored: the state stays initial and nothing waits for confirmation. After a
     // crash, what is left is given up on, so the checkpoints saved from the initial state are
     // the next ones restored (with the full depth again).
