@@ -11,15 +11,18 @@
 //
 // Checked beyond the sanitizers: a refused restore changes nothing; both forms give the same
 // result and the same state; an accepted record is also accepted by the host runtime, which
-// restores it to the same state.
+// restores it to the same state; the host's steps of the walk (held_steps()) decode any payload
+// as the walk does.
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <algorithm>
 #include <cstdlib>
 #include <memory>
 #include <vector>
 
 #include "compact_schema.hpp"
+#include "device_format.hpp"
 #include "fuzz_worlds.hpp"
 #include "schema_blob.hpp"
 #include "symcr/device.hpp"
@@ -53,6 +56,59 @@ const symcr::Schema& compact_schema(unsigned world) {
   std::abort();
 }
 
+// The steps of world `world`'s walk (held_steps()), written once; empty when it has none.
+const std::vector<symcr::device::detail::HeldStep>& world_steps(unsigned world) {
+  static std::vector<std::vector<symcr::device::detail::HeldStep>> steps(fuzz::kWorldCount);
+  static std::vector<bool> written(fuzz::kWorldCount);
+  if (!written[world]) {
+    const symcr::Schema& schema = fuzz::world_schema(world);
+    constexpr std::size_t kLimit = 1 << 16;
+    const std::size_t count = symcr::device::detail::held_steps(schema, nullptr, 0, kLimit);
+    if (count <= kLimit) {
+      steps[world].resize(count);
+      symcr::device::detail::held_steps(schema, steps[world].data(), count, kLimit);
+    }
+    written[world] = true;
+  }
+  return steps[world];
+}
+
+// A host's first restore runs the walk as those steps: over the record's payload as it is
+// (its checksum holding or not), the steps decide and stage exactly as the walk does.
+void check_steps_against_walk(unsigned world, const std::vector<std::uint8_t>& record) {
+  const std::vector<symcr::device::detail::HeldStep>& steps = world_steps(world);
+  symcr::format::RecordHeader h;
+  if (steps.empty() ||
+      symcr::format::decode_record_header(record.data(), record.size(), &h) !=
+          symcr::format::HeaderFault::None ||
+      std::size_t{h.header_size} + h.schema_size > record.size()) {
+    return;
+  }
+  const std::size_t at = std::size_t{h.header_size} + h.schema_size;
+  const std::size_t size = std::min<std::size_t>(h.payload_size, record.size() - at);
+  const symcr::Schema& schema = fuzz::world_schema(world);
+  const symcr::device::detail::PayloadShape walked = symcr::device::detail::payload_shape(schema);
+  symcr::device::detail::PayloadShape stepped = walked;
+  stepped.steps = steps.data();
+  stepped.step_count = steps.size();
+  std::vector<std::uint8_t> scratch(symcr::device::scratch_size(schema));
+  symcr::device::Result results[2];
+  std::vector<std::uint8_t> states[2];
+  for (int form = 0; form < 2; ++form) {
+    fuzz::reset_world(world);
+    results[form] = symcr::device::detail::restore_held_payload(
+        schema, record.data() + at, size, scratch.data(), scratch.size(),
+        form == 0 ? &walked : &stepped);
+    states[form] = fuzz::world_snapshot(world);
+  }
+  if (results[0] != results[1]) {
+    fail("the walk's steps and the walk restored with different results", world,
+         symcr::device::result_text(results[1]));
+  }
+  if (states[0] != states[1]) fail("the walk's steps and the walk restored different states", world);
+  fuzz::reset_world(world);
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -82,6 +138,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (fuzz::world_snapshot(world) != after) {
     fail("the compact tables and the TypeInfo tables restored different states", world);
   }
+  check_steps_against_walk(world, record);
   if (result != symcr::device::Result::Ok) {
     if (after != before) fail("a refused device restore modified the live state", world);
     return 0;

@@ -9,9 +9,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <iterator>
 #include <vector>
 
 #include "crc32c.hpp"
+#include "device_format.hpp"
 #include "encode.hpp"
 #include "parsed_schema.hpp"
 #include "record.hpp"
@@ -912,6 +914,87 @@ TEST(DeviceProfile, ASixtyFourBitIntegerJustPastItsRangeIsRefused) {
   EXPECT_EQ(odometer.total, 7u);
   EXPECT_EQ(odometer.debt, -5);
   EXPECT_EQ(report.count(symcr::Decision::Rejected), 1u);
+}
+
+// A host's first restore in a fresh process runs the walk of the decoder as the steps a store's
+// open wrote (held_steps()): runs of bytes in one copy, every other value decoded as the walk
+// decodes it. Over the test vehicle without its validator (which the steps do not take), every
+// payload byte damaged four ways must be decided, and staged, as the walk decides it.
+TEST(DeviceProfile, TheStepsOfTheWalkDecodeEveryPayloadAsTheWalkDoes) {
+  using symcr::device::detail::HeldStep;
+  EXPECT_EQ(symcr::device::detail::held_steps(kSchema, nullptr, 0, 1000), 0u);  // a validator
+  symcr::TypeInfo types[kTypeCount];
+  std::copy(std::begin(kTypes), std::end(kTypes), types);
+  types[kVehicle].validate = nullptr;
+  const symcr::Schema schema{types, kTypeCount, kRoots, 1, "device-test"};
+
+  std::vector<HeldStep> steps(symcr::device::detail::held_steps(schema, nullptr, 0, 1000));
+  ASSERT_EQ(symcr::device::detail::held_steps(schema, steps.data(), steps.size(), 1000),
+            steps.size());
+  constexpr std::uint32_t kCopy = symcr::kNoType;
+  std::vector<HeldStep> expected = {
+      {offsetof(Vehicle, flying), 0, kBool, kCopy},
+      {offsetof(Vehicle, mode), 1, kCopy, kCopy},
+      {0, 0, kVehicle, 2},  // altitude: ranged
+      // ticks, battery and raw: one run
+      {offsetof(Vehicle, ticks), offsetof(Vehicle, flags) - offsetof(Vehicle, ticks), kCopy, kCopy},
+      {offsetof(Vehicle, flags), 0, kFlags, 0},  // bit-fields
+      {offsetof(Vehicle, flags), 0, kFlags, 1},
+      {offsetof(Vehicle, flags), 0, kFlags, 2}};
+  // The route: the first point's x; each y with the next point's x, which follows it; the last y.
+  static_assert(offsetof(Point, x) == 0 && offsetof(Point, y) == 8 && sizeof(Point) == 16, "");
+  const std::size_t route = offsetof(Vehicle, route);
+  expected.push_back({route, 4, kCopy, kCopy});
+  for (std::size_t i = 0; i < 3; ++i) expected.push_back({route + i * 16 + 8, 12, kCopy, kCopy});
+  expected.push_back({route + 3 * 16 + 8, 8, kCopy, kCopy});
+  expected.push_back({offsetof(Vehicle, target), 0, kPointPtr, kCopy});
+  expected.push_back({offsetof(Vehicle, constant), 0, kIntPtr, kCopy});
+  expected.push_back({offsetof(Vehicle, nothing), 0, kPointPtr, kCopy});
+  ASSERT_EQ(steps.size(), expected.size());
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    EXPECT_EQ(steps[i].stage, expected[i].stage) << i;
+    EXPECT_EQ(steps[i].size, expected[i].size) << i;
+    EXPECT_EQ(steps[i].type, expected[i].type) << i;
+    EXPECT_EQ(steps[i].field, expected[i].field) << i;
+  }
+  // Past the limit, the count stops: a caller keeping no more than that many knows to walk.
+  EXPECT_GT(symcr::device::detail::held_steps(schema, nullptr, 0, 3), 3u);
+
+  fill(4);
+  std::vector<std::uint8_t> record(symcr::device::record_size(schema));
+  std::size_t size = 0;
+  const symcr::device::Build schema_build{&schema, symcr::detail::schema_blob(schema).hash};
+  ASSERT_EQ(symcr::device::save(schema_build, 1, record.data(), record.size(), &size), Result::Ok);
+  const std::vector<std::uint8_t> payload(record.begin() + 56, record.begin() + size);
+  const symcr::device::detail::PayloadShape walked = symcr::device::detail::payload_shape(schema);
+  symcr::device::detail::PayloadShape stepped = walked;
+  stepped.steps = steps.data();
+  stepped.step_count = steps.size();
+  std::vector<std::uint8_t> scratch(symcr::device::scratch_size(schema));
+  const auto restore_as = [&](const std::vector<std::uint8_t>& bytes,
+                              const symcr::device::detail::PayloadShape& shape,
+                              std::vector<std::uint8_t>& state) {
+    scramble();
+    const Result result = symcr::device::detail::restore_held_payload(
+        schema, bytes.data(), bytes.size(), scratch.data(), scratch.size(), &shape);
+    state = snapshot();
+    return result;
+  };
+  std::vector<std::uint8_t> by_walk, by_steps;
+  ASSERT_EQ(restore_as(payload, stepped, by_steps), Result::Ok);
+  expect_filled(4);
+  int refused = 0;
+  for (std::size_t at = 0; at < payload.size(); ++at) {
+    for (const std::uint8_t value : {0x00, 0x01, 0x80, 0xFF}) {
+      std::vector<std::uint8_t> damaged = payload;
+      damaged[at] = value;
+      const Result walk_result = restore_as(damaged, walked, by_walk);
+      EXPECT_EQ(restore_as(damaged, stepped, by_steps), walk_result) << at << " " << int{value};
+      EXPECT_TRUE(by_steps == by_walk) << at << " " << int{value};
+      refused += walk_result != Result::Ok;
+    }
+  }
+  EXPECT_GT(refused, 20);  // bools, bit-fields, ranges and references among them
 }
 
 TEST(DeviceProfile, ResultsHaveTexts) {

@@ -403,7 +403,8 @@ TEST(FirstRestore, WithoutPreparationTheFirstRestoreDecodesAsEveryOther) {
 
 // Opening a store prepares the scratch of the process's first restore into the build (written
 // there, so that restore meets no page the process has not touched yet); that restore, through
-// one of the device profile's decoders, takes it.
+// one of the device profile's decoders, takes it. Opening the build's own store also writes the
+// steps of that decoder's walk, which its first restore runs.
 std::uint8_t* take_prepared(const symcr::Schema& reader) {
   return symcr::detail::schema_cache_entry(reader).take_first_scratch();
 }
@@ -417,7 +418,13 @@ TEST(FirstRestore, OpeningTheBuildsOwnStorePreparesTheScratchItsFirstRestoreTake
   readers.push_back(schema0());
   const symcr::Schema& looked_at = readers.back();
   const Saved saved = save(looked_at);
+  const symcr::detail::SchemaCacheEntry& entry = symcr::detail::schema_cache_entry(looked_at);
+  ASSERT_TRUE(entry.device_holdable());
+  EXPECT_EQ(entry.held_shape().steps, nullptr);
   symcr::detail::prepare_restore(looked_at, saved.hash, looked_at, nullptr);
+  // And the steps of its walk (device_test.cpp checks them against the walk).
+  EXPECT_NE(entry.held_shape().steps, nullptr);
+  EXPECT_GT(entry.held_shape().step_count, 0u);
   std::uint8_t* prepared = take_prepared(looked_at);
   ASSERT_NE(prepared, nullptr);
   const std::size_t size = symcr::device::scratch_size(looked_at);

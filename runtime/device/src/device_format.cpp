@@ -113,7 +113,7 @@ const ClockInfo* clock_at(const Schema& schema, std::uint32_t index) {
 }
 
 PayloadShape payload_shape(const Schema& schema) {
-  return PayloadShape{values_size(schema), clock_count(schema)};
+  return PayloadShape{values_size(schema), clock_count(schema), nullptr, 0};
 }
 
 std::size_t values_size(const Schema& schema) {

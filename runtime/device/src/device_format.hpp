@@ -137,11 +137,34 @@ std::size_t wire_size(const Schema& schema, std::uint32_t type);
 std::size_t values_size(const Schema& schema);
 // What every payload of a schema holds before and after its reference table: the values'
 // bytes (values_size()) and the clocks whose readings end it (clock_count()).
+// A host keeps with them the walk of the values as held_steps() wrote it, when it has.
+struct HeldStep;
 struct PayloadShape {
   std::size_t values;
   std::uint32_t clocks;
+  const HeldStep* steps;  // null: the decoder walks the types itself
+  std::size_t step_count;
 };
 PayloadShape payload_shape(const Schema& schema);
+// One step of the walk of a schema's values, from the first value to the last, as the decoder
+// takes it: `size` wire bytes copied to `stage` (the offset in the roots' staged copies, each
+// stage_size() apart) when `type` is kNoType; else a value of `type` staged at `stage` decoded
+// on its own (a bool, a pointer); else, `field` not kNoType, that field of the struct `type`
+// staged at `stage` (a bit-field, or a field with a range). A host's first restore in a fresh
+// process runs the steps a store's open wrote: most values are runs of bytes, and a walk
+// decoding each of them cost that restore most of its instructions.
+struct HeldStep {
+  std::size_t stage;
+  std::size_t size;
+  std::uint32_t type;
+  std::uint32_t field;
+};
+// Writes the first `capacity` steps of `schema` (its TypeInfo tables) into `steps`, returning
+// how many there are; once they pass `limit`, some more than `limit` without counting further.
+// 0 when the schema has a validator or a clock, which the steps do not take: its walk runs
+// itself.
+std::size_t held_steps(const Schema& schema, HeldStep* steps, std::size_t capacity,
+                       std::size_t limit);
 // restore_payload() for a schema first_unheld_type() already accepted. `shape`: its
 // payload_shape(), found once per schema by a host, or null to find it here. `as_host`: refuse
 // (Rejected) a pointer to something outside the roots, which a host's general decoder restores

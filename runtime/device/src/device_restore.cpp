@@ -12,6 +12,12 @@ namespace {
 using format::load16;
 using format::load32;
 
+// Kinds whose wire bytes are their memory bytes (Bool is checked, Pointer translated).
+bool is_bytes(Kind kind) {
+  return kind == Kind::Int || kind == Kind::UInt || kind == Kind::Enum || kind == Kind::Float ||
+         kind == Kind::Union;
+}
+
 class Restorer {
  public:
   Restorer(const Schema& schema, const std::uint8_t* payload, std::size_t size, std::uint8_t* stage,
@@ -35,16 +41,19 @@ class Restorer {
     Result result = check_references();
     if (result != Result::Ok) return result;
     decide_clock_deltas(clocks);
+    const bool stepped = kept && shape->steps != nullptr;
     std::uint8_t* stage = stage_;
     for (std::uint32_t r = 0; r < schema_.root_count; ++r) {
       const RootInfo& root = schema_.roots[r];
       const std::size_t size = detail::root_size(schema_, r);
       std::memcpy(stage, root.address, size);  // what the record does not hold stays as is
-      result = value(root.type, stage, nullptr);
-      if (result != Result::Ok) return result;
+      if (!stepped) {
+        result = value(root.type, stage, nullptr);
+        if (result != Result::Ok) return result;
+      }
       stage += detail::stage_size(size);
     }
-    return Result::Ok;
+    return stepped ? run_steps(shape->steps, shape->step_count) : Result::Ok;
   }
 
  private:
@@ -109,12 +118,6 @@ class Restorer {
     return type == pointee ? Result::Ok : Result::Corrupt;
   }
 
-  // Kinds whose wire bytes are their memory bytes (Bool is checked, Pointer translated).
-  static bool is_bytes(Kind kind) {
-    return kind == Kind::Int || kind == Kind::UInt || kind == Kind::Enum || kind == Kind::Float ||
-           kind == Kind::Union;
-  }
-
   const std::uint8_t* take(std::size_t n) {
     const std::uint8_t* bytes = payload_ + at_;
     at_ += n;
@@ -170,23 +173,8 @@ class Restorer {
             f = plain_fields(t, f, type.field_count, stage);
             if (f == type.field_count) break;
           }
-          const detail::FieldView field = detail::field_at(schema_, t, f);
-          const std::uint8_t* wire = payload_ + at_;  // a scalar's value, bit-fields' too
-          if (field.bit_width != 0) {
-            const Result result = bit_field(field, stage + field.offset);
-            if (result != Result::Ok) return result;
-          } else if (!detail::kBuiltForSize &&
-                     is_bytes(detail::type_at(schema_, field.type).kind)) {
-            // Decoded here rather than by a call (the accessors inlined, one type read): most
-            // fields are numbers.
-            bytes(detail::type_at(schema_, field.type), stage + field.offset, field.time);
-          } else {
-            const Result result = value(field.type, stage + field.offset, field.time);
-            if (result != Result::Ok) return result;
-          }
-          if (field.range != nullptr && !in_range(field, wire)) {
-            return Result::Rejected;
-          }
+          const Result result = field_value(t, f, stage);
+          if (result != Result::Ok) return result;
         }
         // The validator sees the staged value, whose pointers already point at live objects.
         return type.validate != nullptr && !type.validate(stage) ? Result::Rejected : Result::Ok;
@@ -195,6 +183,44 @@ class Restorer {
         bytes(type, stage, time);
         return Result::Ok;
     }
+  }
+
+  // Decodes field `f` of struct `t` into the struct's staged copy at `stage`, and checks its
+  // range.
+  Result field_value(std::uint32_t t, std::uint32_t f, std::uint8_t* stage) {
+    const detail::FieldView field = detail::field_at(schema_, t, f);
+    const std::uint8_t* wire = payload_ + at_;  // a scalar's value, bit-fields' too
+    if (field.bit_width != 0) {
+      const Result result = bit_field(field, stage + field.offset);
+      if (result != Result::Ok) return result;
+    } else if (!detail::kBuiltForSize && is_bytes(detail::type_at(schema_, field.type).kind)) {
+      // Decoded here rather than by a call (the accessors inlined, one type read): most fields
+      // are numbers.
+      bytes(detail::type_at(schema_, field.type), stage + field.offset, field.time);
+    } else {
+      const Result result = value(field.type, stage + field.offset, field.time);
+      if (result != Result::Ok) return result;
+    }
+    return field.range != nullptr && !in_range(field, wire) ? Result::Rejected : Result::Ok;
+  }
+
+  // The walk as held_steps() wrote it: each run of wire bytes in one copy, each other value
+  // decoded as the walk decodes it, in the walk's order (so the first fault found is the same).
+  Result run_steps(const detail::HeldStep* steps, std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+      const detail::HeldStep& step = steps[i];
+      std::uint8_t* stage = stage_ + step.stage;
+      Result result = Result::Ok;
+      if (step.type == kNoType) {
+        copy_value(stage, take(step.size), step.size);
+      } else if (step.field == kNoType) {
+        result = value(step.type, stage, nullptr);
+      } else {
+        result = field_value(step.type, step.field, stage);
+      }
+      if (result != Result::Ok) return result;
+    }
+    return Result::Ok;
   }
 
   // A plain number is a field that plain_fields() copies as it is.
@@ -397,7 +423,89 @@ Result check_record(const Build& build, const std::uint8_t* bytes, std::size_t s
   return Result::Ok;
 }
 
+// Writes held_steps(): the walk of Restorer::value() over a schema's types, with no payload.
+class StepWriter {
+ public:
+  StepWriter(const Schema& schema, detail::HeldStep* steps, std::size_t capacity)
+      : schema_(schema), steps_(steps), capacity_(capacity) {}
+
+  // The values of type `t` staged at `stage`. Stops once the steps pass `limit`.
+  void walk(std::uint32_t t, std::size_t stage, std::size_t limit) {
+    if (count_ > limit) return;
+    const TypeInfo& type = schema_.types[t];
+    switch (type.kind) {
+      case Kind::Bool:
+      case Kind::Pointer:
+        push(detail::HeldStep{stage, 0, t, kNoType});
+        return;
+      case Kind::Array: {
+        const TypeInfo& element = schema_.types[type.element];
+        if (is_bytes(element.kind)) {
+          copy(stage, std::size_t{element.size} * type.count);
+          return;
+        }
+        for (std::size_t i = 0; i < type.count && count_ <= limit; ++i) {
+          walk(type.element, stage + i * element.size, limit);
+        }
+        return;
+      }
+      case Kind::Struct:
+        for (std::uint32_t f = 0; f < type.field_count; ++f) {
+          const FieldInfo& field = type.fields[f];
+          if (field.bit_width != 0 || (field.flags & kFieldHasRange) != 0) {
+            push(detail::HeldStep{stage, 0, t, f});
+          } else {
+            walk(field.type, stage + field.offset, limit);
+          }
+        }
+        return;
+      default:  // Int, UInt, Enum, Float, Union: their bytes
+        copy(stage, type.size);
+    }
+  }
+  // The steps the walk took, of which the first `capacity` are written.
+  std::size_t count() const { return count_; }
+
+ private:
+  // Bytes next in both the wire and the stage extend the copy before them.
+  void copy(std::size_t stage, std::size_t size) {
+    if (size == 0) return;
+    if (count_ != 0 && last_.type == kNoType && last_.stage + last_.size == stage) {
+      last_.size += size;
+      if (count_ <= capacity_) steps_[count_ - 1] = last_;
+      return;
+    }
+    push(detail::HeldStep{stage, size, kNoType, kNoType});
+  }
+  void push(const detail::HeldStep& step) {
+    last_ = step;
+    if (count_ < capacity_) steps_[count_] = step;
+    ++count_;
+  }
+
+  const Schema& schema_;
+  detail::HeldStep* steps_;
+  std::size_t capacity_;
+  std::size_t count_ = 0;
+  detail::HeldStep last_{};
+};
+
 }  // namespace
+
+std::size_t detail::held_steps(const Schema& schema, HeldStep* steps, std::size_t capacity,
+                               std::size_t limit) {
+  if (schema.types == nullptr || clock_count(schema) != 0) return 0;
+  for (std::uint32_t t = 0; t < schema.type_count; ++t) {
+    if (schema.types[t].validate != nullptr) return 0;
+  }
+  StepWriter writer(schema, steps, capacity);
+  std::size_t stage = 0;
+  for (std::uint32_t r = 0; r < schema.root_count; ++r) {
+    writer.walk(schema.roots[r].type, stage, limit);
+    stage += stage_size(root_size(schema, r));
+  }
+  return writer.count();
+}
 
 Result restore_payload(const Schema& schema, const std::uint8_t* payload, std::size_t size,
                        std::uint8_t* scratch, std::size_t scratch_capacity) {

@@ -247,9 +247,9 @@ bool restore_same_build(const Schema& schema, std::uint64_t hash, const std::uin
   const SchemaCacheEntry& entry = schema_cache_entry(schema);
   if (!entry.first_same_build_restore() || !entry.device_holdable()) return false;
   const HeldScratch scratch(entry);
+  const device::detail::PayloadShape shape = entry.held_shape();
   if (device::detail::restore_held_payload(schema, payload, size, scratch.bytes(), scratch.size(),
-                                           &entry.held_shape(),
-                                           /*as_host=*/true) != device::Result::Ok) {
+                                           &shape, /*as_host=*/true) != device::Result::Ok) {
     return false;
   }
   ReportAccess::set_source(report, std::make_shared<SameBuildReport>(schema, hash));
@@ -414,7 +414,10 @@ void prepare_restore(const Schema& writer, std::uint64_t writer_hash, const Sche
                      std::shared_ptr<const ParsedSchema> writer_owner) {
   const SchemaCacheEntry& entry = schema_cache_entry(reader);
   if (&writer == &reader) {
-    if (entry.device_holdable()) entry.prepare_first_scratch();
+    if (entry.device_holdable()) {
+      entry.prepare_held_steps();
+      entry.prepare_first_scratch();
+    }
     return;
   }
   Status ignored;

@@ -82,8 +82,29 @@ struct SchemaCacheEntry {
     });
     return device_holdable_;
   }
-  // What each payload of a device_holdable() schema holds, for that decoder.
-  const device::detail::PayloadShape& held_shape() const { return held_shape_; }
+  // What each payload of a device_holdable() schema holds, for that decoder, with the steps of
+  // its walk once prepare_held_steps() wrote them.
+  device::detail::PayloadShape held_shape() const {
+    device::detail::PayloadShape shape = held_shape_;
+    if (held_steps_ready_.load(std::memory_order_acquire)) {
+      shape.steps = held_steps_.data();
+      shape.step_count = held_steps_.size();
+    }
+    return shape;
+  }
+  // Writes the steps of that decoder's walk (device::detail::held_steps()) for a
+  // device_holdable() schema, when a store is opened (prepare_restore): the process's first
+  // restore into this schema then copies runs of bytes where the walk decoded value by value.
+  // Not at that restore itself: writing the steps costs about what they save once.
+  void prepare_held_steps() const {
+    std::call_once(held_steps_made_, [this] {
+      const std::size_t count = device::detail::held_steps(*schema, nullptr, 0, kMaxHeldSteps);
+      if (count == 0 || count > kMaxHeldSteps) return;
+      held_steps_.resize(count);
+      device::detail::held_steps(*schema, held_steps_.data(), count, kMaxHeldSteps);
+      held_steps_ready_.store(true, std::memory_order_release);
+    });
+  }
   // The blob's share of a record's CRC (crc32c_span), computed at its first use: every
   // standalone record of this schema carries the blob inline, checked without reading it twice.
   const Crc32cSpan& blob_crc() const {
@@ -117,6 +138,11 @@ struct SchemaCacheEntry {
   mutable std::once_flag device_checked_;
   mutable bool device_holdable_ = false;
   mutable device::detail::PayloadShape held_shape_{};
+  // A walk of more steps than this (arrays of structs with bools or pointers) runs itself.
+  static constexpr std::size_t kMaxHeldSteps = 4096;
+  mutable std::once_flag held_steps_made_;
+  mutable std::vector<device::detail::HeldStep> held_steps_;
+  mutable std::atomic<bool> held_steps_ready_{false};
   mutable FirstTime restored_;
   static constexpr std::size_t kMaxPreparedScratch = std::size_t{64} * 1024;
   mutable std::once_flag first_scratch_made_;
