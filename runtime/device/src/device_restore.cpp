@@ -429,8 +429,9 @@ class StepWriter {
   StepWriter(const Schema& schema, detail::HeldStep* steps, std::size_t capacity)
       : schema_(schema), steps_(steps), capacity_(capacity) {}
 
-  // The values of type `t` staged at `stage`. Stops once the steps pass `limit`.
-  void walk(std::uint32_t t, std::size_t stage, std::size_t limit) {
+  // The values of type `t` staged at `stage`. Stops once the steps pass `limit`. Run once per
+  // schema, at open: built small rather than fast.
+  __attribute__((cold, noinline)) void walk(std::uint32_t t, std::size_t stage, std::size_t limit) {
     if (count_ > limit) return;
     const TypeInfo& type = schema_.types[t];
     switch (type.kind) {
