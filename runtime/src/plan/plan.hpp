@@ -6,6 +6,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <cstring>
 #include <deque>
 #include <memory>
 #include <mutex>
@@ -54,12 +55,34 @@ struct FieldPlan {
   const FieldTime* time = nullptr;
 };
 
+// A writer enumerator's value and where it goes. Unmapped when none of the value's names is
+// the reader's, or when its names (aliases) name different reader values: `name` is then one the
+// reader has (reader_enumerator() finds it), so that the two are told apart where said.
 struct EnumMapping {
   std::int64_t writer_value;
   const char* name;
   bool mapped;
   std::int64_t reader_value;
 };
+
+// The enumerator of enum `type` named `name`, or null: enumerators map by name.
+inline const EnumeratorInfo* reader_enumerator(const TypeInfo& type, const char* name) {
+  for (std::uint32_t e = 0; e < type.enumerator_count; ++e) {
+    if (std::strcmp(type.enumerators[e].name ? type.enumerators[e].name : "", name ? name : "") ==
+        0) {
+      return &type.enumerators[e];
+    }
+  }
+  return nullptr;
+}
+// Why `mapping`, unmapped, restores nothing: its name is not the reader's, or its aliases part
+// ways there.
+inline std::string unmapped_enumerator(const TypeInfo& reader, const EnumMapping& mapping) {
+  return std::string(mapping.name ? mapping.name : "") +
+         (reader_enumerator(reader, mapping.name) != nullptr
+              ? " and its aliases name different values in this build"
+              : " not in this build");
+}
 
 // A byte copy of a copy-only value: `length` wire bytes at `wire` go to `dst` in the reader.
 struct CopyRun {

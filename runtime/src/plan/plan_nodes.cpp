@@ -267,12 +267,9 @@ void Planner::fill_scalar(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
       const EnumeratorInfo& writer = wt.enumerators[e];
       EnumMapping mapping{writer.value, writer.name, false, 0};
       if (rt.kind == Kind::Enum) {
-        for (std::uint32_t f = 0; f < rt.enumerator_count; ++f) {
-          if (same_name(writer.name, rt.enumerators[f].name)) {
-            mapping.mapped = true;
-            mapping.reader_value = rt.enumerators[f].value;
-            break;
-          }
+        if (const EnumeratorInfo* reader = reader_enumerator(rt, writer.name)) {
+          mapping.mapped = true;
+          mapping.reader_value = reader->value;
         }
       }
       if (!mapping.mapped || mapping.reader_value != writer.value) n.identical = false;
@@ -294,9 +291,7 @@ void Planner::fill_scalar(PlanNode& n, const TypeInfo& wt, const TypeInfo& rt) {
   if (wt.kind == Kind::Enum && rt.kind == Kind::Enum) {
     n.detail = "enum by name: " + n.detail;
     for (const EnumMapping& mapping : n.enum_map) {
-      if (!mapping.mapped) {
-        n.detail += std::string("; ") + mapping.name + " not in this build";
-      }
+      if (!mapping.mapped) n.detail += "; " + unmapped_enumerator(rt, mapping);
     }
   }
   if (wt.kind == Kind::Float && rt.kind == Kind::Float && rt.size < wt.size) {

@@ -556,7 +556,7 @@ bool Traversal<Pass>::scalar(const PlanNode* n, const TypeInfo& wt, std::uint8_t
       return true;
     }
     if (!mapping->mapped) {
-      reject_value(counter, "enum %s not in this build", mapping->name);
+      reject_value(counter, "enum %s", unmapped_enumerator(rt, *mapping).c_str());
       return true;
     }
     in.tag = Number::Tag::Signed;
