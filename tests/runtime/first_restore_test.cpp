@@ -500,6 +500,29 @@ TEST(FirstRestore, ALargeStatesScratchIsNotPreparedAndItsFirstRestoreStillSuccee
   EXPECT_EQ(big_cells[19999], 19999 * 3);
 }
 
+// A walk of more steps than are kept (each bool is a step of its own) is not written down at
+// open: the first restore walks the types itself, to the same values.
+bool many_flags[6000];
+TEST(FirstRestore, AWalkOfTooManyStepsIsNotKeptAndItsFirstRestoreWalks) {
+  static const symcr::TypeInfo types[] = {scalar("bool", Kind::Bool, 1),
+                                          array("bool[6000]", 0, 6000, sizeof many_flags, 1)};
+  static const symcr::RootInfo roots[] = {{"flags", 1, many_flags, 0, nullptr}};
+  static const symcr::Schema schema{types, 2, roots, 1, nullptr};
+  const symcr::detail::SchemaCacheEntry& entry = symcr::detail::schema_cache_entry(schema);
+  for (int i = 0; i < 6000; ++i) many_flags[i] = i % 3 == 0;
+  const Saved saved = save(schema);
+  symcr::detail::prepare_restore(schema, saved.hash, schema, nullptr);
+  ASSERT_TRUE(entry.device_holdable());
+  EXPECT_EQ(entry.held_shape().steps, nullptr);
+  std::fill(std::begin(many_flags), std::end(many_flags), true);
+  const symcr::Report report =
+      symcr::detail::restore_payload(schema, saved.hash, saved.payload.data(), saved.payload.size(),
+                                     schema, symcr::RestoreOptions());
+  ASSERT_TRUE(report.ok()) << report.to_text();
+  EXPECT_EQ(symcr::detail::thread_scratch_bytes().restore, 0u);  // the device's decoder
+  for (int i = 0; i < 6000; ++i) ASSERT_EQ(many_flags[i], i % 3 == 0) << i;
+}
+
 // A validator reading a member the checkpoint does not hold: the planned path judges a
 // value-initialised staged object (max_speed 0 here), so the process's first restore must not
 // judge a copy of the running state (max_speed 1000) and accept what every later one rejects.

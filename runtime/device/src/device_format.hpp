@@ -135,10 +135,10 @@ std::uint32_t first_unheld_type(const Schema& schema);
 // bytes of all roots' values. Only for schemas first_unheld_type() accepts.
 std::size_t wire_size(const Schema& schema, std::uint32_t type);
 std::size_t values_size(const Schema& schema);
-// What every payload of a schema holds before and after its reference table: the values'
-// bytes (values_size()) and the clocks whose readings end it (clock_count()).
-// A host keeps with them the walk of the values as held_steps() wrote it, when it has.
 struct HeldStep;
+// What every payload of a schema holds before and after its reference table: the values'
+// bytes (values_size()) and the clocks whose readings end it (clock_count()); and, kept by a
+// host that wrote them, the steps of the walk over its values (held_steps()).
 struct PayloadShape {
   std::size_t values;
   std::uint32_t clocks;
