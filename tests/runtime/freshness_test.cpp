@@ -477,6 +477,80 @@ TEST_F(FreshnessTest, ARestoreWithOtherKeysAndTheFallbackOnWritesNothing) {
   expect_a(3);
 }
 
+// Both copies of the store's identity damaged: the checkpoints are bound to it. A program
+// holding other keys that opens and restores writes nothing (no new identity over the lost
+// one); the store's own program takes the identity back from its counter file, whose MAC vouches
+// for it, restores its newest checkpoint and writes both copies again.
+void damage_both_identity_copies(std::vector<std::uint8_t>& bytes) {
+  bytes[symcr::detail::kStoreIdOffset + 10] ^= 0xFF;
+  bytes[symcr::detail::kStoreIdSecondCopy + 10] ^= 0xFF;
+}
+
+TEST_F(FreshnessTest, BothIdentityCopiesDamagedAreTakenBackFromTheCounterFile) {
+  save_seeds(1, 3);
+  std::vector<std::uint8_t> bytes = read_file(path);
+  std::uint8_t genuine_id[symcr::detail::kStoreIdSize];
+  ASSERT_TRUE(symcr::detail::read_store_id(bytes.data(), bytes.size(), genuine_id));
+  damage_both_identity_copies(bytes);
+  write_file(path, bytes);
+  const std::vector<std::uint8_t> counter = read_file(path + ".fresh");
+
+  const std::vector<std::uint8_t> other_key(32, 0x33);
+  const symcr::CheckpointKey other{2, other_key.data(), other_key.size()};
+  ASSERT_TRUE(symcr::set_checkpoint_keys(&other, 1).ok());
+  for (const std::uint32_t depth : {0u, 2u}) {
+    options.fallback_depth = depth;
+    const symcr::Report report = restore();
+    EXPECT_EQ(report.status().error(), symcr::Error::NoValidSlot) << report.status().message();
+    expect_untouched();
+    EXPECT_EQ(read_file(path), bytes);
+    EXPECT_EQ(read_file(path + ".fresh"), counter);
+  }
+
+  const symcr::CheckpointKey key{1, kKey.data(), kKey.size()};
+  ASSERT_TRUE(symcr::set_checkpoint_keys(&key, 1).ok());
+  options.fallback_depth = 0;
+  const symcr::Report report = restore();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 3u);
+  expect_a(3);
+  const std::vector<std::uint8_t> repaired = read_file(path);
+  std::uint8_t id[symcr::detail::kStoreIdSize];
+  bool both = false;
+  ASSERT_TRUE(symcr::detail::read_store_id(repaired.data(), repaired.size(), id, &both));
+  EXPECT_TRUE(both);
+  EXPECT_EQ(std::memcmp(id, genuine_id, sizeof id), 0);
+}
+
+// With a counter that keeps no identity (the program's own FreshnessCounter), nothing gives the
+// lost identity back: its checkpoints no longer verify, so the store is older than its counter
+// (RolledBack), and nothing is written until the next save, which gives the store a new
+// identity and is restored after it.
+TEST_F(FreshnessTest, BothIdentityCopiesDamagedWithoutACounterFileWaitForTheNextSave) {
+  MemoryCounter counter;
+  options.freshness_counter = &counter;
+  save_seeds(1, 3);
+  std::vector<std::uint8_t> bytes = read_file(path);
+  damage_both_identity_copies(bytes);
+  write_file(path, bytes);
+  {
+    const symcr::Report report = restore();
+    EXPECT_EQ(report.status().error(), symcr::Error::RolledBack) << report.status().message();
+    expect_untouched();
+    EXPECT_EQ(read_file(path), bytes);
+  }
+  save_seeds(4, 4);
+  const std::vector<std::uint8_t> saved = read_file(path);
+  std::uint8_t id[symcr::detail::kStoreIdSize];
+  bool both = false;
+  ASSERT_TRUE(symcr::detail::read_store_id(saved.data(), saved.size(), id, &both));
+  EXPECT_TRUE(both);
+  const symcr::Report report = restore();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), last_saved);
+  expect_a(4);
+}
+
 // A counter that exists but cannot be read is a fault to repair, not evidence of an attack:
 // Io, naming the file (a missing or untrustworthy one is RolledBack, above). Nothing is
 // restored either way, and once the counter reads again the newest checkpoint restores.

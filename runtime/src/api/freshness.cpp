@@ -121,6 +121,41 @@ Status freshness_verdict(const char* path, std::uint64_t newest, std::uint64_t a
                 static_cast<unsigned long long>(counted));
 }
 
+namespace {
+
+// Whether the counter copy at `copy` is one, signed with a key of `keys` (its MAC covers the
+// store identity it names); `why` says otherwise.
+bool counter_copy_verifies(const std::uint8_t* copy, const KeyRing& keys, Status& why) {
+  if (std::memcmp(copy, kCounterMagic, sizeof kCounterMagic) != 0) return false;
+  const OwnedKey* key = keys.find(format::load32(copy + format::kCounterKeyIdOffset));
+  if (key == nullptr) {
+    why = Status(Error::RolledBack, "it is signed with key id %u, which this program does not hold",
+                 format::load32(copy + format::kCounterKeyIdOffset));
+    return false;
+  }
+  std::uint8_t mac[format::kSha256Size];
+  store_item_mac(*key, kCounterDomain, copy + format::kCounterStoreIdOffset, copy, kCounterSigned,
+                 mac);
+  if (!format::equal_macs(mac, copy + kCounterSigned, format::kSha256Size)) {
+    why = Status(Error::RolledBack, "its MAC does not verify: it was forged or damaged");
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool store_id_from_counter_file(const std::uint8_t* bytes, std::size_t size, const KeyRing& keys,
+                                std::uint8_t (&id)[kStoreIdSize]) {
+  Status ignored;
+  for (const std::uint64_t at : kCounterCopies) {
+    if (at + kCounterCopySize > size || !counter_copy_verifies(bytes + at, keys, ignored)) continue;
+    std::memcpy(id, bytes + at + format::kCounterStoreIdOffset, kStoreIdSize);
+    return true;
+  }
+  return false;
+}
+
 Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
                            const std::uint8_t* store_id, const KeyRing& keys,
                            std::uint64_t& value) {
@@ -130,22 +165,7 @@ Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
   for (const std::uint64_t at : kCounterCopies) {
     if (at + kCounterCopySize > size) continue;
     const std::uint8_t* copy = bytes + at;
-    if (std::memcmp(copy, kCounterMagic, sizeof kCounterMagic) != 0) continue;
-    const OwnedKey* key = keys.find(format::load32(copy + format::kCounterKeyIdOffset));
-    if (key == nullptr) {
-      why = Status(Error::RolledBack,
-                   "it is signed with key id %u, which this program does not "
-                   "hold",
-                   format::load32(copy + format::kCounterKeyIdOffset));
-      continue;
-    }
-    std::uint8_t mac[format::kSha256Size];
-    store_item_mac(*key, kCounterDomain, copy + format::kCounterStoreIdOffset, copy, kCounterSigned,
-                   mac);
-    if (!format::equal_macs(mac, copy + kCounterSigned, format::kSha256Size)) {
-      why = Status(Error::RolledBack, "its MAC does not verify: it was forged or damaged");
-      continue;
-    }
+    if (!counter_copy_verifies(copy, keys, why)) continue;
     if (std::memcmp(copy + format::kCounterStoreIdOffset, store_id, kStoreIdSize) != 0) {
       why = Status(Error::RolledBack, "it is the counter of another store");
       continue;
@@ -202,9 +222,9 @@ FileFreshnessCounter::FileFreshnessCounter(std::string path,
   std::memcpy(store_id_, store_id, sizeof store_id_);
 }
 
-Status FileFreshnessCounter::read(std::uint64_t& value) {
-  value = 0;
-  if (keys_ == nullptr) return Status(Error::Unauthenticated, "no keys to verify the counter");
+Status FileFreshnessCounter::read_file(std::uint8_t (&bytes)[kCounterFileSize],
+                                       std::size_t& got) const {
+  got = 0;
   FileSystem& files = file_system();
   const int fd = files.open(path_.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK, 0);
   if (fd < 0) {
@@ -213,10 +233,28 @@ Status FileFreshnessCounter::read(std::uint64_t& value) {
     }
     return io_error("cannot open the freshness counter", path_.c_str(), errno);
   }
-  std::uint8_t bytes[kCounterFileSize] = {};
-  std::size_t got = 0;
   Status status = pread_full(fd, bytes, sizeof bytes, 0, got, path_.c_str());
   files.close(fd);
+  return status;
+}
+
+bool FileFreshnessCounter::recover_store_id(std::uint8_t (&id)[kStoreIdSize]) {
+  std::uint8_t bytes[kCounterFileSize] = {};
+  std::size_t got = 0;
+  if (keys_ == nullptr || !read_file(bytes, got).ok() ||
+      !store_id_from_counter_file(bytes, got, *keys_, store_id_)) {
+    return false;
+  }
+  std::memcpy(id, store_id_, sizeof id);
+  return true;
+}
+
+Status FileFreshnessCounter::read(std::uint64_t& value) {
+  value = 0;
+  if (keys_ == nullptr) return Status(Error::Unauthenticated, "no keys to verify the counter");
+  std::uint8_t bytes[kCounterFileSize] = {};
+  std::size_t got = 0;
+  Status status = read_file(bytes, got);
   if (!status.ok()) return status;
   status = decode_counter_file(bytes, got, store_id_, *keys_, value);
   if (!status.ok()) {

@@ -74,8 +74,14 @@ class FileFreshnessCounter final : public FreshnessCounter {
   Status read(std::uint64_t& value) override;
   Status advance(std::uint64_t value) override;
   const std::string& path() const { return path_; }
+  // For a store whose identity copies are both damaged: the identity the counter file names,
+  // vouched for by its MAC with these keys, in `id` and used from now on; false (nothing
+  // changed) when no copy verifies.
+  bool recover_store_id(std::uint8_t (&id)[kStoreIdSize]);
 
  private:
+  Status read_file(std::uint8_t (&bytes)[format::kCounterFileSize], std::size_t& got) const;
+
   std::string path_;
   std::uint8_t store_id_[kStoreIdSize];
   Durability durability_;
@@ -84,6 +90,10 @@ class FileFreshnessCounter final : public FreshnessCounter {
   std::uint64_t value_ = 0;
 };
 
+// The store identity named by a copy of a counter file's bytes whose MAC verifies with `keys`;
+// false when none does.
+bool store_id_from_counter_file(const std::uint8_t* bytes, std::size_t size, const KeyRing& keys,
+                                std::uint8_t (&id)[kStoreIdSize]);
 // Decodes a counter file's bytes (at most 256) for `store_id` with `keys`: the higher value of
 // the copies that verify. Corrupt or Unauthenticated, saying why, when none does.
 Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,

@@ -137,6 +137,9 @@ struct Store::Impl {
   const detail::KeyRing* scanned_with = nullptr;
   const detail::KeyRing* journal_read_with = nullptr;
   std::uint8_t store_id[detail::kStoreIdSize] = {};
+  // A new `store_id` not yet in the file, whose damaged copies name none (Store::open): written
+  // by the first save that signs with it.
+  bool store_id_unwritten = false;
   const detail::SchemaBlob* own_blob = nullptr;  // this build's schema, serialised
   detail::LazySchemaDigest own_blob_digest;
   FreshnessCounter* counter = nullptr;
@@ -144,6 +147,19 @@ struct Store::Impl {
   std::uint64_t counter_value = 0;  // the counter as last read or advanced
   // Why the journal in the file was not trusted (keys set), for the next restore's report.
   std::string journal_distrust;
+
+  // Writes both copies of `store_id` into the header page, synced.
+  Status write_store_id(int fd) {
+    std::uint8_t id_copy[detail::kStoreIdBlockSize];
+    detail::encode_store_id(store_id, id_copy);
+    Status status = detail::pwrite_all(fd, id_copy, sizeof id_copy,
+                                       static_cast<off_t>(detail::kStoreIdOffset), path.c_str());
+    if (status.ok() && detail::file_system().fdatasync(fd) != 0) {
+      status = detail::io_error("cannot fdatasync", path.c_str(), errno);
+    }
+    if (status.ok()) store_id_unwritten = false;
+    return status;
+  }
 
   void take_keys() {
     keys = detail::current_keys();
@@ -980,9 +996,13 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
   impl.fallback_depth = writable ? options.fallback_depth : 0;
   impl.allow_unrecorded_restore = options.allow_unrecorded_restore;
   // A store without an identity (new, or written by an earlier version) gets one before this
-  // Store writes anything into it; one opened read-only keeps the all-zero identity.
+  // Store writes anything into it; one opened read-only keeps the all-zero identity. One whose
+  // identity copies are both damaged takes it back from its counter file (below).
   bool id_whole = false;
   const bool id_missing = !detail::read_store_id(header, got, impl.store_id, &id_whole);
+  const bool id_damaged = id_missing && !created &&
+                          got >= detail::kStoreIdOffset + detail::kStoreIdBlockSize &&
+                          !all_zero(header + detail::kStoreIdOffset, detail::kStoreIdBlockSize);
   if (id_missing && can_write) detail::new_store_id(impl.store_id);
   impl.own_blob = &blob;
   impl.take_keys();
@@ -999,6 +1019,10 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
     impl.own_counter->use_keys(impl.keys.get());
     impl.counter = impl.own_counter.get();
   }
+  // The counter file names the store's identity under a MAC: the store's own checkpoints,
+  // bound to it, verify again, and the damaged copies are written again.
+  const bool id_recovered = id_damaged && impl.own_counter != nullptr &&
+                            impl.own_counter->recover_store_id(impl.store_id);
   // Read for numbering; checked again by each restore.
   const Status counter_read =
       impl.keys ? impl.counter->read(impl.counter_value) : Status(Error::NoValidSlot, "no keys");
@@ -1034,16 +1058,6 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
     if (!status.ok()) return creation_failed(status);
     impl.become_empty(wanted);
   } else if (header_status.ok()) {
-    if (!id_whole && can_write) {  // a new identity, or a damaged copy written again
-      std::uint8_t id_copy[detail::kStoreIdBlockSize];
-      detail::encode_store_id(impl.store_id, id_copy);
-      status = detail::pwrite_all(fd, id_copy, sizeof id_copy,
-                                  static_cast<off_t>(detail::kStoreIdOffset), path);
-      if (status.ok() && detail::file_system().fdatasync(fd) != 0) {
-        status = detail::io_error("cannot fdatasync", path, errno);
-      }
-      if (!status.ok()) return status;
-    }
     if (can_write && file_size < impl.geometry.file_size()) {
       // Truncated: the whole slots are kept; the file grows back to its size, zero-filled,
       // before anything is read from it, so that this open and every later scan read the same
@@ -1055,6 +1069,18 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
     status = impl.load_areas(fd, schema);
     if (status.ok()) status = impl.scan_slots(fd);  // slots past a truncation read as empty
     if (!status.ok()) return status;
+    // A new identity, or a damaged copy written again. A new one replaces damaged copies only
+    // in a store that holds nothing yet: its checkpoints are bound to the identity lost, which
+    // only this program's next save gives up on (a program holding other keys, or none, that
+    // merely opens it must not).
+    if (!id_whole && can_write) {
+      if (id_damaged && !id_recovered && !impl.holds_no_record()) {
+        impl.store_id_unwritten = true;
+      } else {
+        status = impl.write_store_id(fd);
+        if (!status.ok()) return status;
+      }
+    }
     if (can_write && !same_dimensions(impl.geometry, wanted)) {
       // Another geometry: read with the file's, rewrite (a new file renamed over this one) at
       // the first save, so that a crash never leaves less than the old store.
@@ -1121,6 +1147,12 @@ Status Store::save() {
                   "freshness counter names sequence %llu, which only damage or forgery "
                   "produce); nothing was written: save into a new store",
                   impl.path.c_str(), static_cast<unsigned long long>(newest));
+  }
+  // The identity this save signs with, in a store whose copies were damaged and gave none back
+  // (Store::open): written first, or the checkpoint would not verify at the next open.
+  if (impl.keys && impl.store_id_unwritten) {
+    const Status written = impl.write_store_id(fd_);
+    if (!written.ok()) return written;
   }
   const std::uint64_t sequence = newest + 1;
   impl.scan_current = false;

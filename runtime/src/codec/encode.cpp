@@ -1132,8 +1132,8 @@ class Encoder {
       char where[120];
       describe(s_.regions[reference.region], where, sizeof where);
       return fail_unsupported(
-          "a pointer to %s at %p: it lies inside %s but not at a %s "
-          "subobject",
+          "a pointer to %s at %p: it lies inside %s but not at a %s subobject that is saved (a "
+          "SYMCR_SKIP member or padding has no path)",
           types_[reference.type].name, reinterpret_cast<const void*>(reference.address), where,
           types_[reference.type].name);
     }
