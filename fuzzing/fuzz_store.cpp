@@ -38,6 +38,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -281,16 +282,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const bool journal_kept = now.size() >= kJournalEnd && file_before.size() >= kJournalEnd &&
                                   std::equal(now.begin() + kJournalAt, now.begin() + kJournalEnd,
                                              file_before.begin() + kJournalAt);
+        // (A store left without an identity had one drawn for this open alone, which sealed
+        // nothing: its journal is not trusted either.)
         std::string distrust;
         std::uint8_t id[symcr::detail::kStoreIdSize];
-        symcr::detail::read_store_id(now.data(), now.size(), id);
+        const bool id_in_file = symcr::detail::read_store_id(now.data(), now.size(), id);
         symcr::detail::JournalSeal seal;
         seal.keys = keys.get();
         seal.store_id = id;
         (void)symcr::detail::read_restore_journal(now.data(), now.size(), &seal, &distrust);
         const bool recorded_nothing =
             !restored && journal_kept &&
-            (report.status().error() != symcr::Error::NoValidSlot || !distrust.empty());
+            (report.status().error() != symcr::Error::NoValidSlot || (keys && !id_in_file) ||
+             !distrust.empty());
         if (journal.unconfirmed != (restored ? report.sequence() : 0) && !recorded_nothing) {
           fail("the journal does not name the restore as unconfirmed", world, report);
         }
@@ -320,10 +324,32 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return std::equal(file_before.begin() + from, file_before.begin() + to,
                       file_after.begin() + from);
   };
-  // A writable open gives a store without an identity one.
+  // A writable open writes damaged identity copies again.
   std::uint8_t id_before[symcr::detail::kStoreIdSize];
   bool had_id = false;
-  symcr::detail::read_store_id(file_before.data(), file_before.size(), id_before, &had_id);
+  const bool id_held =
+      symcr::detail::read_store_id(file_before.data(), file_before.size(), id_before, &had_id);
+  // Where neither copy held, in a store holding a checkpoint, the identity it writes is only
+  // the one its counter file names (taken back), never a new one.
+  if (restorable && !id_held && !same_range(kIdAt, kPageEnd)) {
+    std::uint8_t id_after[symcr::detail::kStoreIdSize];
+    std::uint8_t named[symcr::detail::kCounterCopyCount][symcr::detail::kStoreIdSize];
+    const std::vector<std::uint8_t> counter_bytes = read_whole(counter_path);
+    const std::size_t count =
+        keys ? symcr::detail::store_ids_in_counter_file(counter_bytes.data(), counter_bytes.size(),
+                                                        *keys, named)
+             : 0;
+    bool from_counter = false;
+    if (symcr::detail::read_store_id(file_after.data(), file_after.size(), id_after)) {
+      for (std::size_t i = 0; i < count; ++i) {
+        from_counter = from_counter || std::memcmp(named[i], id_after, sizeof id_after) == 0;
+      }
+    }
+    if (!from_counter) {
+      std::fprintf(stderr, "symcr fuzz: an open wrote a new identity over a lost one\n");
+      std::abort();
+    }
+  }
   if (restorable && !(same_range(36, kJournalAt) &&
                       (fallback_depth != 0 || same_range(kJournalAt, kJournalEnd)) &&
                       same_range(kJournalEnd, kIdAt) && (!had_id || same_range(kIdAt, kPageEnd)) &&

@@ -481,19 +481,33 @@ TEST_F(FreshnessTest, ARestoreWithOtherKeysAndTheFallbackOnWritesNothing) {
 // holding other keys that opens and restores writes nothing (no new identity over the lost
 // one); the store's own program takes the identity back from its counter file, whose MAC vouches
 // for it, restores its newest checkpoint and writes both copies again.
-void damage_both_identity_copies(std::vector<std::uint8_t>& bytes) {
+// Zeroed copies look like a store no version gave an identity yet: no different.
+void damage_both_identity_copies(std::vector<std::uint8_t>& bytes, bool zeroed = false) {
+  if (zeroed) {
+    std::fill(bytes.begin() + symcr::detail::kStoreIdOffset,
+              bytes.begin() + symcr::detail::kStoreIdOffset + symcr::detail::kStoreIdBlockSize, 0);
+    return;
+  }
   bytes[symcr::detail::kStoreIdOffset + 10] ^= 0xFF;
   bytes[symcr::detail::kStoreIdSecondCopy + 10] ^= 0xFF;
 }
 
-TEST_F(FreshnessTest, BothIdentityCopiesDamagedAreTakenBackFromTheCounterFile) {
+class IdentityDamage : public FreshnessTest, public ::testing::WithParamInterface<bool> {};
+
+TEST_P(IdentityDamage, BothIdentityCopiesLostAreTakenBackFromTheCounterFile) {
   save_seeds(1, 3);
   std::vector<std::uint8_t> bytes = read_file(path);
   std::uint8_t genuine_id[symcr::detail::kStoreIdSize];
   ASSERT_TRUE(symcr::detail::read_store_id(bytes.data(), bytes.size(), genuine_id));
-  damage_both_identity_copies(bytes);
+  damage_both_identity_copies(bytes, GetParam());
   write_file(path, bytes);
   const std::vector<std::uint8_t> counter = read_file(path + ".fresh");
+  {  // a program holding no keys opens it for writing, and saves nothing
+    ASSERT_TRUE(symcr::set_checkpoint_keys(nullptr, 0).ok());
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open(path.c_str(), schema_a, options, store).ok());
+  }
+  EXPECT_EQ(read_file(path), bytes);
 
   const std::vector<std::uint8_t> other_key(32, 0x33);
   const symcr::CheckpointKey other{2, other_key.data(), other_key.size()};
@@ -519,6 +533,43 @@ TEST_F(FreshnessTest, BothIdentityCopiesDamagedAreTakenBackFromTheCounterFile) {
   bool both = false;
   ASSERT_TRUE(symcr::detail::read_store_id(repaired.data(), repaired.size(), id, &both));
   EXPECT_TRUE(both);
+  EXPECT_EQ(std::memcmp(id, genuine_id, sizeof id), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(DamagedOrZeroed, IdentityDamage, ::testing::Bool());
+
+// Another store's genuine counter (the same key) names another identity: none of this store's
+// checkpoints verifies under it, so it is not taken, and nothing is written; with this store's
+// counter back (or one copy of it beside the other store's) the identity comes back.
+TEST_F(FreshnessTest, AnotherStoresCounterDoesNotLendItsIdentity) {
+  save_seeds(1, 3);
+  const std::string other = dir.file("other.store");
+  save_seeds(1, 5, other);
+  std::vector<std::uint8_t> bytes = read_file(path);
+  std::uint8_t genuine_id[symcr::detail::kStoreIdSize];
+  ASSERT_TRUE(symcr::detail::read_store_id(bytes.data(), bytes.size(), genuine_id));
+  damage_both_identity_copies(bytes);
+  write_file(path, bytes);
+  const std::vector<std::uint8_t> own_counter = read_file(path + ".fresh");
+  const std::vector<std::uint8_t> other_counter = read_file(other + ".fresh");
+  write_file(path + ".fresh", other_counter);
+  const symcr::Report refused = restore();
+  EXPECT_FALSE(refused.ok());
+  expect_untouched();
+  EXPECT_EQ(read_file(path), bytes);
+
+  // The other store's first copy, this store's second.
+  std::vector<std::uint8_t> mixed = own_counter;
+  std::copy(other_counter.begin(), other_counter.begin() + symcr::format::kCounterCopySize,
+            mixed.begin() + symcr::format::kCounterFirstCopyOffset);
+  write_file(path + ".fresh", mixed);
+  const symcr::Report report = restore();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 3u);
+  expect_a(3);
+  std::uint8_t id[symcr::detail::kStoreIdSize];
+  const std::vector<std::uint8_t> repaired = read_file(path);
+  ASSERT_TRUE(symcr::detail::read_store_id(repaired.data(), repaired.size(), id));
   EXPECT_EQ(std::memcmp(id, genuine_id, sizeof id), 0);
 }
 

@@ -21,8 +21,8 @@ namespace {
 using format::kCounterMagic;
 using format::kStoreIdMagic;
 constexpr char kCounterDomain[] = "symcr freshness counter";
-constexpr std::uint64_t kCounterCopies[2] = {format::kCounterFirstCopyOffset,
-                                             format::kCounterSecondCopyOffset};
+constexpr std::uint64_t kCounterCopies[kCounterCopyCount] = {format::kCounterFirstCopyOffset,
+                                                             format::kCounterSecondCopyOffset};
 constexpr std::size_t kCounterSigned = format::kCounterMacOffset;  // what precedes the MAC
 constexpr std::size_t kCounterCopySize = format::kCounterCopySize;
 static_assert(kCounterSigned + format::kSha256Size == kCounterCopySize, "an HMAC-SHA-256 ends it");
@@ -145,15 +145,18 @@ bool counter_copy_verifies(const std::uint8_t* copy, const KeyRing& keys, Status
 
 }  // namespace
 
-bool store_id_from_counter_file(const std::uint8_t* bytes, std::size_t size, const KeyRing& keys,
-                                std::uint8_t (&id)[kStoreIdSize]) {
+std::size_t store_ids_in_counter_file(const std::uint8_t* bytes, std::size_t size,
+                                      const KeyRing& keys,
+                                      std::uint8_t (&ids)[kCounterCopyCount][kStoreIdSize]) {
   Status ignored;
+  std::size_t count = 0;
   for (const std::uint64_t at : kCounterCopies) {
     if (at + kCounterCopySize > size || !counter_copy_verifies(bytes + at, keys, ignored)) continue;
-    std::memcpy(id, bytes + at + format::kCounterStoreIdOffset, kStoreIdSize);
-    return true;
+    const std::uint8_t* id = bytes + at + format::kCounterStoreIdOffset;
+    if (count == 1 && std::memcmp(ids[0], id, kStoreIdSize) == 0) continue;
+    std::memcpy(ids[count++], id, kStoreIdSize);
   }
-  return false;
+  return count;
 }
 
 Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,
@@ -238,15 +241,17 @@ Status FileFreshnessCounter::read_file(std::uint8_t (&bytes)[kCounterFileSize],
   return status;
 }
 
-bool FileFreshnessCounter::recover_store_id(std::uint8_t (&id)[kStoreIdSize]) {
+std::size_t FileFreshnessCounter::store_ids(
+    std::uint8_t (&ids)[kCounterCopyCount][kStoreIdSize]) const {
   std::uint8_t bytes[kCounterFileSize] = {};
   std::size_t got = 0;
-  if (keys_ == nullptr || !read_file(bytes, got).ok() ||
-      !store_id_from_counter_file(bytes, got, *keys_, store_id_)) {
-    return false;
-  }
-  std::memcpy(id, store_id_, sizeof id);
-  return true;
+  if (keys_ == nullptr || !read_file(bytes, got).ok()) return 0;
+  return store_ids_in_counter_file(bytes, got, *keys_, ids);
+}
+
+void FileFreshnessCounter::use_store_id(const std::uint8_t (&id)[kStoreIdSize]) {
+  std::memcpy(store_id_, id, sizeof store_id_);
+  known_ = false;
 }
 
 Status FileFreshnessCounter::read(std::uint64_t& value) {

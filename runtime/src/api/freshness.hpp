@@ -26,6 +26,8 @@ inline constexpr std::uint64_t kStoreIdSecondCopy = format::kStoreIdSecondCopyOf
 inline constexpr std::size_t kStoreIdBlockSize =
     kStoreIdSecondCopy + kStoreIdCopySize - kStoreIdOffset;
 inline constexpr std::size_t kStoreHeaderPageRead = kStoreIdOffset + kStoreIdBlockSize;
+// A counter file holds its value in two copies.
+inline constexpr std::size_t kCounterCopyCount = 2;
 
 // Draws a new identity (getrandom, else /dev/urandom, else time and process id mixed).
 void new_store_id(std::uint8_t (&id)[kStoreIdSize]);
@@ -74,10 +76,13 @@ class FileFreshnessCounter final : public FreshnessCounter {
   Status read(std::uint64_t& value) override;
   Status advance(std::uint64_t value) override;
   const std::string& path() const { return path_; }
-  // For a store whose identity copies are both damaged: the identity the counter file names,
-  // vouched for by its MAC with these keys, in `id` and used from now on; false (nothing
-  // changed) when no copy verifies.
-  bool recover_store_id(std::uint8_t (&id)[kStoreIdSize]);
+  // For a store whose identity copies are both lost: the identities the counter file's copies
+  // name under a MAC that verifies with these keys (at most one per copy, each once). Only the
+  // one its checkpoints verify under is the store's: another store's genuine counter names
+  // another.
+  std::size_t store_ids(std::uint8_t (&ids)[kCounterCopyCount][kStoreIdSize]) const;
+  // The identity the counter is bound to from now on.
+  void use_store_id(const std::uint8_t (&id)[kStoreIdSize]);
 
  private:
   Status read_file(std::uint8_t (&bytes)[format::kCounterFileSize], std::size_t& got) const;
@@ -90,10 +95,11 @@ class FileFreshnessCounter final : public FreshnessCounter {
   std::uint64_t value_ = 0;
 };
 
-// The store identity named by a copy of a counter file's bytes whose MAC verifies with `keys`;
-// false when none does.
-bool store_id_from_counter_file(const std::uint8_t* bytes, std::size_t size, const KeyRing& keys,
-                                std::uint8_t (&id)[kStoreIdSize]);
+// The distinct store identities named by the copies of a counter file's bytes whose MAC
+// verifies with `keys`, and their count.
+std::size_t store_ids_in_counter_file(const std::uint8_t* bytes, std::size_t size,
+                                      const KeyRing& keys,
+                                      std::uint8_t (&ids)[kCounterCopyCount][kStoreIdSize]);
 // Decodes a counter file's bytes (at most 256) for `store_id` with `keys`: the higher value of
 // the copies that verify. Corrupt or Unauthenticated, saying why, when none does.
 Status decode_counter_file(const std::uint8_t* bytes, std::size_t size,

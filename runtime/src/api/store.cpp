@@ -148,6 +148,32 @@ struct Store::Impl {
   // Why the journal in the file was not trusted (keys set), for the next restore's report.
   std::string journal_distrust;
 
+  // For a store whose identity copies are both lost (keys set, the default counter file): the
+  // identity its counter file names under a MAC, when a checkpoint of the store verifies under
+  // it (another store's genuine counter names another), in `store_id` with the slots scanned
+  // again under it; `found` says whether one was.
+  Status identity_from_counter(int fd, bool& found) {
+    found = false;
+    std::uint8_t ids[detail::kCounterCopyCount][detail::kStoreIdSize];
+    const std::size_t count = keys && own_counter ? own_counter->store_ids(ids) : 0;
+    if (count == 0) return Status();
+    std::uint8_t drawn[detail::kStoreIdSize];
+    std::memcpy(drawn, store_id, sizeof drawn);
+    for (std::size_t i = 0; i < count && !found; ++i) {
+      std::memcpy(store_id, ids[i], sizeof store_id);
+      const Status status = scan_slots(fd);
+      if (!status.ok()) return status;
+      for (const Slot& slot : slots) found = found || slot.state == StoreSlotState::Valid;
+    }
+    if (!found) {
+      std::memcpy(store_id, drawn, sizeof store_id);
+      const Status status = scan_slots(fd);
+      if (!status.ok()) return status;
+    }
+    own_counter->use_store_id(store_id);
+    return Status();
+  }
+
   // Writes both copies of `store_id` into the header page, synced.
   Status write_store_id(int fd) {
     std::uint8_t id_copy[detail::kStoreIdBlockSize];
@@ -995,15 +1021,13 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
   if (!status.ok()) return creation_failed(status);
   impl.fallback_depth = writable ? options.fallback_depth : 0;
   impl.allow_unrecorded_restore = options.allow_unrecorded_restore;
-  // A store without an identity (new, or written by an earlier version) gets one before this
-  // Store writes anything into it; one opened read-only keeps the all-zero identity. One whose
-  // identity copies are both damaged takes it back from its counter file (below).
+  // A store without an identity (new, written by an earlier version, or its two copies lost)
+  // gets one before this Store writes anything into it; one opened read-only keeps the all-zero
+  // identity. An existing store may take its own back from its counter file (below).
   bool id_whole = false;
   const bool id_missing = !detail::read_store_id(header, got, impl.store_id, &id_whole);
-  const bool id_damaged = id_missing && !created &&
-                          got >= detail::kStoreIdOffset + detail::kStoreIdBlockSize &&
-                          !all_zero(header + detail::kStoreIdOffset, detail::kStoreIdBlockSize);
   if (id_missing && can_write) detail::new_store_id(impl.store_id);
+  const std::size_t page_got = got;
   impl.own_blob = &blob;
   impl.take_keys();
   if (options.freshness_counter != nullptr) {
@@ -1019,10 +1043,6 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
     impl.own_counter->use_keys(impl.keys.get());
     impl.counter = impl.own_counter.get();
   }
-  // The counter file names the store's identity under a MAC: the store's own checkpoints,
-  // bound to it, verify again, and the damaged copies are written again.
-  const bool id_recovered = id_damaged && impl.own_counter != nullptr &&
-                            impl.own_counter->recover_store_id(impl.store_id);
   // Read for numbering; checked again by each restore.
   const Status counter_read =
       impl.keys ? impl.counter->read(impl.counter_value) : Status(Error::NoValidSlot, "no keys");
@@ -1069,12 +1089,21 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
     status = impl.load_areas(fd, schema);
     if (status.ok()) status = impl.scan_slots(fd);  // slots past a truncation read as empty
     if (!status.ok()) return status;
-    // A new identity, or a damaged copy written again. A new one replaces damaged copies only
-    // in a store that holds nothing yet: its checkpoints are bound to the identity lost, which
-    // only this program's next save gives up on (a program holding other keys, or none, that
-    // merely opens it must not).
+    bool id_found = !id_missing;
+    if (id_missing && !created) {
+      status = impl.identity_from_counter(fd, id_found);
+      if (!status.ok()) return status;
+      if (id_found) {  // the journal's seal and the counter are bound to it too
+        impl.adopt_journal(header, page_got);
+        if (impl.keys) (void)impl.counter->read(impl.counter_value);
+      }
+    }
+    // A new identity, or a damaged copy written again. A new one is written at open only into a
+    // store that holds nothing yet: the checkpoints of one are bound to the identity lost, which
+    // only this program's next save with keys gives up on (a program holding other keys, or
+    // none, that merely opens it must not).
     if (!id_whole && can_write) {
-      if (id_damaged && !id_recovered && !impl.holds_no_record()) {
+      if (!id_found && !impl.holds_no_record()) {
         impl.store_id_unwritten = true;
       } else {
         status = impl.write_store_id(fd);
