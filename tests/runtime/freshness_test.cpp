@@ -276,6 +276,25 @@ TEST_F(FreshnessTest, AnOlderGenuineJournalPutBackIsRefusedOrNotTrusted) {
       << report.warnings()[0];
 }
 
+// A store refused as rolled back becomes fresh with the next save, which is saved under a newer
+// journal freshness than the journal in the file (never written without a fallback depth). That
+// journal holds nothing, so reading it as empty changes nothing: no warning at every start.
+TEST_F(FreshnessTest, AnEmptyJournalOlderThanTheNewestCheckpointIsNoWarning) {
+  MemoryCounter counter;
+  options.freshness_counter = &counter;
+  save_seeds(1, 3);
+  counter.value_ = 10;  // ahead of the store: its newest checkpoints lost
+  expect_error(restore(), symcr::Error::RolledBack, "freshness counter says");
+  save_seeds(4, 4);
+  for (int start = 0; start < 2; ++start) {
+    const symcr::Report report = restore();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(report.sequence(), last_saved);
+    expect_a(4);
+    EXPECT_TRUE(report.warnings().empty()) << report.to_text();
+  }
+}
+
 TEST_F(FreshnessTest, ASlotMovedToAnotherSlotOrAnotherStoreDoesNotVerify) {
   const std::string other = dir.file("other.store");
   save_seeds(1, 2);

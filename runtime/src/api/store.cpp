@@ -284,10 +284,15 @@ struct Store::Impl {
       }
     }
     if (journal.freshness < saved_under) {
+      // One that holds nothing reads as it would trusted: only its freshness is raised, with no
+      // warning (a save recovering a store refused as rolled back leaves one behind when no
+      // fallback depth writes the journal).
+      const bool held_nothing = journal.empty();
       distrust_journal(
           "it is older than the journal the newest checkpoint was saved under (an "
           "older copy put back)",
           saved_under);
+      if (held_nothing) journal_distrust.clear();
     }
   }
 
