@@ -53,6 +53,15 @@ class FreshnessTest : public ::testing::Test {
   }
   void TearDown() override { EXPECT_TRUE(symcr::set_checkpoint_keys(nullptr, 0).ok()); }
 
+  // The program holds only key 1 (the store's, as SetUp sets) or only key 2 (another key
+  // holder's).
+  static void hold_only_key(std::uint32_t id) {
+    static const std::vector<std::uint8_t> kOtherKey(32, 0x33);
+    const std::vector<std::uint8_t>& bytes = id == 1 ? kKey : kOtherKey;
+    const symcr::CheckpointKey key{id, bytes.data(), bytes.size()};
+    ASSERT_TRUE(symcr::set_checkpoint_keys(&key, 1).ok());
+  }
+
   // Saves seeds first..last (one save each) into the store at `at`.
   void save_seeds(int first, int last, const std::string& at = "") {
     symcr::Store store;
@@ -444,17 +453,14 @@ TEST_F(FreshnessTest, AnOpenWithOtherKeysLeavesTheCounterAsItIs) {
   save_seeds(1, 3);
   const std::string counter = path + ".fresh";
   const std::vector<std::uint8_t> genuine = read_file(counter);
-  const std::vector<std::uint8_t> other_key(32, 0x33);
-  const symcr::CheckpointKey other{2, other_key.data(), other_key.size()};
-  ASSERT_TRUE(symcr::set_checkpoint_keys(&other, 1).ok());
+  hold_only_key(2);
   {
     symcr::Store store;
     const symcr::Status opened = symcr::Store::open(path.c_str(), schema_a, options, store);
     ASSERT_TRUE(opened.ok()) << opened.message();
   }
   EXPECT_EQ(read_file(counter), genuine);
-  const symcr::CheckpointKey key{1, kKey.data(), kKey.size()};
-  ASSERT_TRUE(symcr::set_checkpoint_keys(&key, 1).ok());
+  hold_only_key(1);
   const symcr::Report report = restore();
   ASSERT_TRUE(report.ok()) << report.status().message();
   EXPECT_EQ(report.sequence(), 3u);
@@ -477,9 +483,7 @@ TEST_F(FreshnessTest, ARestoreWithOtherKeysAndTheFallbackOnWritesNothing) {
   const std::string counter = path + ".fresh";
   const std::vector<std::uint8_t> genuine_counter = read_file(counter);
   const std::vector<std::uint8_t> genuine_store = read_file(path);
-  const std::vector<std::uint8_t> other_key(32, 0x33);
-  const symcr::CheckpointKey other{2, other_key.data(), other_key.size()};
-  ASSERT_TRUE(symcr::set_checkpoint_keys(&other, 1).ok());
+  hold_only_key(2);
   for (int start = 0; start < 2; ++start) {
     const symcr::Report report = restore();
     EXPECT_EQ(report.status().error(), symcr::Error::NoValidSlot) << report.status().message();
@@ -487,8 +491,7 @@ TEST_F(FreshnessTest, ARestoreWithOtherKeysAndTheFallbackOnWritesNothing) {
     EXPECT_EQ(read_file(counter), genuine_counter);
     EXPECT_EQ(read_file(path), genuine_store);
   }
-  const symcr::CheckpointKey key{1, kKey.data(), kKey.size()};
-  ASSERT_TRUE(symcr::set_checkpoint_keys(&key, 1).ok());
+  hold_only_key(1);
   const symcr::Report report = restore();
   ASSERT_TRUE(report.ok()) << report.status().message();
   EXPECT_EQ(report.sequence(), 3u);
@@ -528,9 +531,7 @@ TEST_P(IdentityDamage, BothIdentityCopiesLostAreTakenBackFromTheCounterFile) {
   }
   EXPECT_EQ(read_file(path), bytes);
 
-  const std::vector<std::uint8_t> other_key(32, 0x33);
-  const symcr::CheckpointKey other{2, other_key.data(), other_key.size()};
-  ASSERT_TRUE(symcr::set_checkpoint_keys(&other, 1).ok());
+  hold_only_key(2);
   for (const std::uint32_t depth : {0u, 2u}) {
     options.fallback_depth = depth;
     const symcr::Report report = restore();
@@ -540,8 +541,7 @@ TEST_P(IdentityDamage, BothIdentityCopiesLostAreTakenBackFromTheCounterFile) {
     EXPECT_EQ(read_file(path + ".fresh"), counter);
   }
 
-  const symcr::CheckpointKey key{1, kKey.data(), kKey.size()};
-  ASSERT_TRUE(symcr::set_checkpoint_keys(&key, 1).ok());
+  hold_only_key(1);
   options.fallback_depth = 0;
   const symcr::Report report = restore();
   ASSERT_TRUE(report.ok()) << report.status().message();
