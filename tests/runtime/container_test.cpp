@@ -194,9 +194,8 @@ TEST(WorldT, ValueRejectionsAreCappedPerFieldWithASummary) {
   t1::many.clear();
   const symcr::Report report = load(save(t0::schema()), t1::schema());
   ASSERT_TRUE(report.ok()) << report.status().message();
-  ASSERT_EQ(t1::many.size(), 250u);
-  EXPECT_EQ(t1::many[7], 5);
-  EXPECT_EQ(t1::many[8], 0);  // rejected: the fresh element keeps its value-initialised 0
+  // A rejected element is left out: no value-initialised 0 stands in for it.
+  EXPECT_EQ(t1::many, (std::vector<std::int8_t>{5}));
   std::size_t concrete = 0;
   bool summary = false;
   for (const auto& e : report.entries()) {

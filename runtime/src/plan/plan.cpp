@@ -78,7 +78,7 @@ void Planner::run() {
   }
   map_clocks(plan_);
   decide_migrations();
-  mark_validated_parts(plan_.nodes);
+  mark_judged_parts(plan_);
   for (PlanNode& n : plan_.nodes) compute_copy(n);
   compute_copy_only_payload();
   if (too_deep_) {
@@ -205,15 +205,52 @@ bool decode_embedded_plan(std::uint64_t writer_hash, const Schema& reader, Plan&
 
 }  // namespace
 
-void mark_validated_parts(std::deque<PlanNode>& nodes) {
-  const auto holds = [](const PlanNode* part) { return part && part->holds_validated; };
-  for (PlanNode& n : nodes) n.holds_validated = n.validated;
+namespace {
+
+// Whether restoring `n` itself may reject a value the checkpoint holds (its parts aside).
+bool rejects_values(const PlanNode& n, const Schema& writer, const Schema& reader) {
+  if (n.writer >= writer.type_count || n.reader >= reader.type_count) return false;
+  switch (n.action) {
+    case Action::Scalar:
+      return !n.identical;
+    case Action::String:
+      return writer.types[writer.types[n.writer].element].size !=
+             reader.types[reader.types[n.reader].element].size;
+    case Action::Variant:
+      return std::find(n.alternative_map.begin(), n.alternative_map.end(), kNoType) !=
+             n.alternative_map.end();
+    case Action::Struct:
+      for (std::size_t f = 0; f < n.fields.size(); ++f) {
+        const FieldPlan& field = n.fields[f];
+        if (field.reader_field == kNoType) continue;
+        if (field.has_range) return true;
+        const TypeInfo& written = writer.types[n.writer];
+        const std::uint16_t written_width =
+            f < written.field_count ? written.fields[f].bit_width : 0;
+        if (field.bit_width &&
+            (written_width == 0 || written_width > field.bit_width || !field.node->identical)) {
+          return true;
+        }
+      }
+      return false;
+    default:
+      return false;
+  }
+}
+
+}  // namespace
+
+void mark_judged_parts(Plan& plan) {
+  const auto holds = [](const PlanNode* part) { return part && part->holds_judged; };
+  for (PlanNode& n : plan.nodes) {
+    n.holds_judged = n.validated || rejects_values(n, *plan.writer, *plan.reader);
+  }
   // A least fixed point: a recursive type's answer depends on itself.
   for (bool grew = true; grew;) {
     grew = false;
-    for (auto it = nodes.rbegin(); it != nodes.rend(); ++it) {
+    for (auto it = plan.nodes.rbegin(); it != plan.nodes.rend(); ++it) {
       PlanNode& n = *it;
-      if (n.holds_validated) continue;
+      if (n.holds_judged) continue;
       bool any = false;
       switch (n.action) {
         case Action::Struct:
@@ -232,7 +269,7 @@ void mark_validated_parts(std::deque<PlanNode>& nodes) {
           break;
       }
       if (any) {
-        n.holds_validated = true;
+        n.holds_judged = true;
         grew = true;
       }
     }

@@ -135,9 +135,11 @@ struct PlanNode {
 
   bool validated = false;  // reader type has a symcr_validate
   // This value or a part of it (a field, an element, a contained value; not a pointee, an
-  // object of its own) is validated: a container element holding one is judged as a whole.
-  // Derived from the other nodes (mark_validated_parts), never encoded in a plan image.
-  bool holds_validated = false;
+  // object of its own) may be refused value by value: validated, or converted by a rule that
+  // can reject (a scalar conversion, a bit-field, a range, a re-encoded string, a variant
+  // alternative the reader lacks). A container element holding one is judged as a whole.
+  // Derived from the other nodes (mark_judged_parts), never encoded in a plan image.
+  bool holds_judged = false;
   // Struct: the writer's type differs from the reader's in its values (a field added, removed,
   // renamed or converted, at any depth; see docs/resolution.md), and the reader type has a
   // symcr_migrate hook (or, in a schema file, kTypeMigrated): restore calls `migrate`, which
@@ -247,9 +249,9 @@ void map_clocks(Plan& plan);
 // The reader field a FieldPlan of struct node `n` restores into is a time of a clock.
 const FieldTime* reader_time(const Schema& reader, const PlanNode& n, const FieldPlan& field);
 
-// Sets every node's holds_validated from the nodes' `validated` and their parts: once a plan's
-// nodes are final (planned, or decoded from an image).
-void mark_validated_parts(std::deque<PlanNode>& nodes);
+// Sets every node's holds_judged from the nodes' `validated`, their conversions and their parts:
+// once a plan's nodes are final (planned, or decoded from an image).
+void mark_judged_parts(Plan& plan);
 
 // Sets every struct node's copy_segments (and fills Plan::segment_programs) from the nodes'
 // copy programs, and every FieldPlan::time: once a plan's nodes are final (planned, or decoded

@@ -212,7 +212,7 @@ bool decode_plan_image(const std::uint8_t* image, std::size_t size, std::uint64_
   }
   plan.copy_only_payload = in.u8() != 0;
   plan.copy_only_payload_size = in.u64();
-  mark_validated_parts(plan.nodes);
+  mark_judged_parts(plan);
   const auto error = static_cast<Error>(in.u8());
   const std::string message = in.text();
   if (error != Error::None) plan.status = Status(error, "%s", message.c_str());

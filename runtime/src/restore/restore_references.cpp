@@ -109,7 +109,7 @@ void Restorer::decide_materialisation() {
     const TypeInfo& type = reader_.types[node->reader];
     const bool can_create =
         type.lifecycle != nullptr || (dry_run_ && (type.flags & kTypeCreatable) != 0);
-    // A claimed object keeps this build's values where a validator refused the checkpoint's.
+    // A claimed object keeps this build's values where the checkpoint's were refused.
     creatable[h] =
         claimed_[h] || (!heap_[h].refused && heap_[h].owner == 0 && can_create) ||
         (!heap_[h].refused && heap_[h].owner == 1 && plan_.shared_types[node->reader] != kNoType);
@@ -259,11 +259,13 @@ void Restorer::map_reference(RefRecord& ref) {
   } else if (ref.base == kBaseObject) {
     const std::uint32_t h = ref.a - writer_.root_count;
     if (!materialisable_[h]) {
-      ref.why = std::string("heap object of type ") + writer_.types[heap_[h].type].name +
-                (heap_[h].refused      ? " holds a value its symcr_validate refused"
-                 : heap_[h].owner == 1 ? " has no shared_ptr owner restored in this build"
-                                       : " cannot be created in this build or is not "
-                                         "reached from a restored root");
+      ref.why =
+          std::string("heap object of type ") + writer_.types[heap_[h].type].name +
+          (heap_[h].refused && heap_[h].validator ? " holds a value its symcr_validate refused"
+           : heap_[h].refused                     ? " holds a value this build rejects"
+           : heap_[h].owner == 1 ? " has no shared_ptr owner restored in this build"
+                                 : " cannot be created in this build or is not "
+                                   "reached from a restored root");
       return;
     }
     node = heap_[h].node;

@@ -93,16 +93,18 @@ class Traversal {
 
   // ---- parts judged whole (docs/resolution.md, Validators) ---------------------------------
   // A container element, or the value an optional, unique_ptr or variant holds, in which a
-  // validator refused a value is never inserted, emplaced or made with a value-initialised
-  // stand-in: the element is left out of its container, the holder keeps this build's value.
+  // validator refused a value or a rule rejected one is never inserted, emplaced or made with
+  // a value-initialised stand-in: the element is left out of its container, the holder keeps
+  // this build's value.
   // Pass 1 reserves one verdict per such part before decoding it (stream order, like the
   // validators' verdicts) and settles it after; the later passes read it before the part.
   struct PartMark {
     bool judged = false;
-    std::size_t verdict = 0;      // index in the part verdicts
-    std::size_t own_verdict = 0;  // index in the verdicts of the part's own validator, if any
-    std::uint32_t refusals = 0;   // the pass's refusals before the part
-    std::size_t first_slot = 0;   // slots before the part
+    std::size_t verdict = 0;       // index in the part verdicts
+    std::size_t own_verdict = 0;   // index in the verdicts of the part's own validator, if any
+    std::uint32_t refusals = 0;    // the pass's refusals before the part
+    std::uint32_t rejections = 0;  // and its rejections
+    std::size_t first_slot = 0;    // slots before the part
   };
   // Before a part: whether pass 1 refused it (false in pass 1 itself).
   bool begin_part(const PlanNode* part, PartMark& mark);
@@ -110,8 +112,9 @@ class Traversal {
   // (the container holds what passed); a holder passes them on to what holds it.
   void end_part(const PlanNode* part, const PartMark& mark, bool element);
 
-  // A value-level rejection (pass 1 reports it): the reader keeps its value. Inside an object
-  // whose migration hook runs, the value is the hook's to handle.
+  // A value-level rejection (pass 1 reports and counts it): the reader keeps its value, and a
+  // part holding it is refused. Inside an object whose migration hook runs, the value is the
+  // hook's to handle.
   __attribute__((format(printf, 3, 4), noinline)) void reject_value(std::uint32_t counter,
                                                                     const char* format, ...);
   // A value a validator refused: rejected even inside a migrated object (its hook ran).
@@ -147,7 +150,8 @@ class CheckPass {
   bool heap_object(std::uint32_t h, std::uint32_t type, std::uint8_t owner, std::uint8_t*& dst);
   void heap_object_decoded(std::uint32_t h) {
     // Created, it would hold value-initialised stand-ins where its refused values were.
-    if (refusals != heap_refusals_) r_.heap_[h].refused = true;
+    r_.heap_[h].validator = refusals != heap_refusals_;
+    r_.heap_[h].refused = r_.heap_[h].validator || rejections != heap_rejections_;
   }
   bool container(const PlanNode* n, std::uint32_t count, std::uint32_t ordinal,
                  std::uint32_t object, std::vector<void*>*& addresses);
@@ -164,11 +168,14 @@ class CheckPass {
                                                           const std::vector<PathFrame>& frames,
                                                           const char* format, va_list args);
 
-  std::uint32_t refusals = 0;  // values refused by validators, not yet taken in by a part
+  std::uint32_t refusals = 0;       // values refused by validators, not yet taken in by a part
+  std::uint32_t rejections = 0;     // values rejected by the rules, likewise
+  std::size_t rejection_depth = 0;  // the path depth of the last of them
 
  private:
   Restorer& r_;
   std::uint32_t heap_refusals_ = 0;  // refusals before the heap object being decoded
+  std::uint32_t heap_rejections_ = 0;
 };
 
 // What a pass that keeps no records does at each of the traversal's points: nothing. A pass

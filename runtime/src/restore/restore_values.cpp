@@ -63,8 +63,9 @@ bool CheckPass::heap_object(std::uint32_t h, std::uint32_t type, std::uint8_t ow
                  r_.writer_.types[type].name)
         .ok();
   }
-  r_.heap_.push_back(HeapRecord{type, owner, r_.plan_.heap_nodes[type], false});
+  r_.heap_.push_back(HeapRecord{type, owner, r_.plan_.heap_nodes[type], false, false});
   heap_refusals_ = refusals;
+  heap_rejections_ = rejections;
   dst = nullptr;
   return true;
 }
@@ -162,6 +163,12 @@ Traversal<Pass>::Traversal(const Traversal<Outer>& outer, Pass& pass, const std:
 
 template <typename Pass>
 void Traversal<Pass>::reject_value(std::uint32_t counter, const char* format, ...) {
+  if constexpr (Pass::kJudges) {
+    if (!migrating_) {
+      ++pass_.rejections;
+      pass_.rejection_depth = frames_.size();
+    }
+  }
   va_list args;
   va_start(args, format);
   pass_.report_value(migrating_, counter, frames_, format, args);
@@ -294,7 +301,7 @@ bool Traversal<Pass>::judge(const PlanNode* n, std::uint8_t* dst, const FieldPla
 
 template <typename Pass>
 bool Traversal<Pass>::begin_part(const PlanNode* part, PartMark& mark) {
-  if (!part->holds_validated) return false;
+  if (!part->holds_judged) return false;
   if constexpr (Pass::kJudges) {
     mark.judged = true;
     mark.verdict = restorer_.part_verdicts_.size();
@@ -302,6 +309,7 @@ bool Traversal<Pass>::begin_part(const PlanNode* part, PartMark& mark) {
     ++cursors_.part;
     mark.own_verdict = restorer_.verdicts_.size();
     mark.refusals = pass_.refusals;
+    mark.rejections = pass_.rejections;
     mark.first_slot = restorer_.slots_.size();
     return false;
   } else {
@@ -312,18 +320,24 @@ bool Traversal<Pass>::begin_part(const PlanNode* part, PartMark& mark) {
 template <typename Pass>
 void Traversal<Pass>::end_part(const PlanNode* part, const PartMark& mark, bool element) {
   if constexpr (Pass::kJudges) {
-    if (!mark.judged || pass_.refusals == mark.refusals) return;
+    const bool validator = pass_.refusals != mark.refusals;
+    if (!mark.judged || (!validator && pass_.rejections == mark.rejections)) return;
     restorer_.part_verdicts_[mark.verdict] = 0;
     // Its pointers are not restored: the part is not written.
     for (std::size_t s = mark.first_slot; s < restorer_.slots_.size(); ++s) {
       restorer_.slots_[s].node = nullptr;
     }
     if (!element) return;
+    // An element refused or rejected as a whole already has its entry at this path.
+    const bool own = validator ? runs_validator(part) && restorer_.verdicts_[mark.own_verdict] == 0
+                               : pass_.rejections == mark.rejections + 1 &&
+                                     pass_.rejection_depth == frames_.size();
     pass_.refusals = mark.refusals;
-    // An element refused as a whole already has its validator's entry at this path.
-    const bool own = runs_validator(part) && restorer_.verdicts_[mark.own_verdict] == 0;
+    pass_.rejections = mark.rejections;
     if (!own) {
-      refuse_value(counter_, "left out of its container: a value in it failed its symcr_validate");
+      refuse_value(
+          counter_, "left out of its container: %s",
+          validator ? "a value in it failed its symcr_validate" : "a value in it was rejected");
     }
   } else {
     (void)part;

@@ -144,7 +144,10 @@ struct HeapRecord {
   std::uint32_t type;
   std::uint8_t owner;
   const PlanNode* node;
-  bool refused;  // a validator refused a value in it: not created, pointers keep their values
+  // A value in it was refused: not created, pointers keep their values. `validator`: one of
+  // them by its type's symcr_validate (else a rule rejected it).
+  bool refused;
+  bool validator;
 };
 
 struct MappedStep {
