@@ -307,12 +307,23 @@ Status salvage_store(int fd, const char* path, std::uint64_t file_size, StoreSal
       position = offset + 1;
     }
   }
+  // Without a record there is nothing to restore and no area to look for.
+  if (out.record_offsets.empty()) return Status();
   // Schema areas: area 0 is at the first page; area 1 one area size further, at a page
-  // boundary before the first slot.
-  const std::uint64_t areas_end =
-      out.record_offsets.empty() ? file_size : out.record_offsets.front();
+  // boundary before the first slot. Candidates in a hole are skipped unread.
+  const std::uint64_t areas_end = out.record_offsets.front();
   for (std::uint64_t area_size = format::kStoreMinSchemaAreaSize;
        format::kStorePageSize + 2 * area_size <= areas_end; area_size += format::kStorePageSize) {
+    const std::uint64_t at = format::kStorePageSize + area_size;
+    const off_t data = ::lseek(fd, static_cast<off_t>(at), SEEK_DATA);
+    if (data < 0 && errno == ENXIO) break;
+    if (data > 0 && static_cast<std::uint64_t>(data) > at) {
+      // The first area size whose area starts at or past the data; the loop's step adds a page.
+      const std::uint64_t reaching =
+          (static_cast<std::uint64_t>(data) - 1) / format::kStorePageSize * format::kStorePageSize;
+      area_size = reaching - format::kStorePageSize;
+      continue;
+    }
     StoreSchemaArea candidate;
     Status status = load_store_area(fd, path, format::kStorePageSize + area_size, area_size,
                                     nullptr, candidate);
