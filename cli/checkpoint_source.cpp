@@ -36,9 +36,15 @@ std::string resolve_links(const std::string& path) {
 }
 
 Status detect_file_kind(const std::string& path, FileKind& out) {
-  // O_NONBLOCK: a FIFO must be refused, not waited on for a writer.
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) return detail::io_error("cannot open", path.c_str(), errno);
+  // O_NONBLOCK: a FIFO must be refused, not waited on for a writer. O_NOFOLLOW: a program
+  // refuses a checkpoint or store behind a symlink, so the CLI does too.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOFOLLOW);
+  if (fd < 0 && errno == ELOOP) {
+    const Status refused = detail::open_error("cannot open", path.c_str(), ELOOP);
+    return Status(Error::Io, "%s; a program refuses it too: give the path it points to, %s",
+                  refused.message(), resolve_links(path).c_str());
+  }
+  if (fd < 0) return detail::open_error("cannot open", path.c_str(), errno);
   struct stat info {};
   if (::fstat(fd, &info) != 0) {
     const int error_number = errno;
@@ -76,7 +82,7 @@ Status load_record_file(const std::string& path, LoadedCheckpoint& out,
   out.path = path;
   out.from_store = false;
   std::uint64_t trailing = 0;
-  Status status = detail::read_record_file(resolve_links(path).c_str(), out.bytes, trailing);
+  Status status = detail::read_record_file(path.c_str(), out.bytes, trailing);
   if (!status.ok()) return with_path(path, status);
   status = detail::parse_record(out.bytes.data(), out.bytes.size(), out.record);
   if (!status.ok()) return with_path(path, status);
@@ -128,7 +134,7 @@ Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slo
   out.path = path;
   out.from_store = true;
   out.store.reset(new detail::StoreReader());
-  status = out.store->open(resolve_links(path).c_str());
+  status = out.store->open(path.c_str());
   if (!status.ok()) return status;
   std::uint32_t index = 0;
   if (slot) {

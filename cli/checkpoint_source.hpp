@@ -23,9 +23,9 @@ enum class FileKind : std::uint8_t {
   Store,   // "SYMCRSTO"
 };
 
-// `path` with symbolic links resolved (or as given if it cannot be). The runtime never follows
-// a link when it reads or writes checkpoints; a read-only tool may, and users expect it to
-// (`latest.ckpt -> ckpt-17`).
+// `path` with symbolic links resolved (or as given if it cannot be), for the CLI's own inputs
+// (schema files, keys). A checkpoint or store behind a link is refused, as a program refuses
+// it: what the CLI says of a file is what the program's restore would do with it.
 std::string resolve_links(const std::string& path);
 
 // Reads the magic only. Anything else is NotACheckpoint; a missing file is Io.

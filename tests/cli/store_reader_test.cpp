@@ -20,8 +20,8 @@ using symcr::detail::StoreSlotState;
 class StoreReaderTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    path_ = std::string(::testing::TempDir()) + "symcr_cli_unit_" +
-            std::to_string(::getpid()) + ".store";
+    path_ = std::string(::testing::TempDir()) + "symcr_cli_unit_" + std::to_string(::getpid()) +
+            ".store";
     ::unlink(path_.c_str());
   }
   void TearDown() override { ::unlink(path_.c_str()); }
@@ -110,15 +110,46 @@ TEST_F(StoreReaderTest, ClassifiesEmptyAndCorruptSlots) {
   EXPECT_EQ(reader.read_record(9, bytes, view, area).error(), symcr::Error::Io);
 }
 
+// A truncated store keeps every slot still whole, for the reader as for a program's restore.
+TEST_F(StoreReaderTest, ReadsATruncatedStoreAsAProgramDoes) {
+  {
+    symcr::Store store;
+    save(store, 6);  // sequences by slot: 5, 6, 3, 4
+  }
+  StoreReader whole;
+  ASSERT_TRUE(whole.open(path_.c_str()).ok());
+  const symcr::detail::StoreGeometry geometry = whole.geometry();
+  const auto newest_restored = [this]() -> std::uint64_t {
+    symcr::Store store;
+    if (!symcr::Store::open_readonly(path_.c_str(), cli_fixture::schema(), store).ok()) return 0;
+    return store.restore_latest().ok() ? store.last_sequence() : 0;
+  };
+
+  ASSERT_EQ(::truncate(path_.c_str(), static_cast<off_t>(geometry.file_size() - 1)), 0);
+  StoreReader one_byte_short;
+  ASSERT_TRUE(one_byte_short.open(path_.c_str()).ok());
+  ASSERT_FALSE(one_byte_short.valid_slots_newest_first().empty());
+  EXPECT_EQ(one_byte_short.slots()[one_byte_short.valid_slots_newest_first()[0]].header.sequence,
+            6u);
+  EXPECT_EQ(newest_restored(), 6u);
+
+  // Cut inside slot 1, the newest: slot 0 is what is left to restore.
+  ASSERT_EQ(::truncate(path_.c_str(),
+                       static_cast<off_t>(geometry.slots_offset + geometry.slot_size + 100)),
+            0);
+  StoreReader cut;
+  ASSERT_TRUE(cut.open(path_.c_str()).ok());
+  EXPECT_EQ(cut.slots()[1].state, StoreSlotState::Corrupt);
+  EXPECT_EQ(cut.slots()[2].state, StoreSlotState::Empty);
+  EXPECT_EQ(cut.valid_slots_newest_first(), (std::vector<std::uint32_t>{0}));
+  EXPECT_EQ(newest_restored(), 5u);
+}
+
 TEST_F(StoreReaderTest, RefusesDamagedStoreFiles) {
   {
     symcr::Store store;
     save(store, 1);
   }
-  ASSERT_EQ(::truncate(path_.c_str(), 8192), 0);
-  StoreReader truncated;
-  EXPECT_EQ(truncated.open(path_.c_str()).error(), symcr::Error::Truncated);
-
   flip_byte(14);  // slot_count, under the header CRC
   StoreReader bad_header;
   EXPECT_EQ(bad_header.open(path_.c_str()).error(), symcr::Error::Checksum);
@@ -195,6 +226,72 @@ TEST_F(StoreReaderTest, NextStartOfAJournalWithoutADepthGoesOneLevelDeeper) {
   EXPECT_EQ(next.given_up_through, 0u);
   EXPECT_EQ(next.suspect_high, 6u);
   EXPECT_FALSE(next.excludes(5));
+}
+
+// With keys, an older genuine journal put back is not trusted by the reader, as a program's
+// open does not trust it: the reader names the slot the program restores.
+TEST_F(StoreReaderTest, WithKeysAnOlderJournalPutBackIsNotTrusted) {
+  static const std::uint8_t kKey[32] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
+  const symcr::CheckpointKey key{1, kKey, sizeof kKey};
+  ASSERT_TRUE(symcr::set_checkpoint_keys(&key, 1).ok());
+  struct KeysAndCounterGone {
+    std::string counter;
+    ~KeysAndCounterGone() {
+      (void)symcr::set_checkpoint_keys(nullptr, 0);
+      ::unlink(counter.c_str());
+    }
+  } cleanup{path_ + ".fresh"};
+  {
+    symcr::Store store;
+    save(store, 6);  // sequences by slot: 5, 6, 3, 4
+  }
+  restore_unconfirmed(1);  // restored 6, never confirmed
+  std::uint8_t old_page[4096];
+  {
+    std::FILE* file = std::fopen(path_.c_str(), "rb");
+    ASSERT_NE(file, nullptr);
+    ASSERT_EQ(std::fread(old_page, 1, sizeof old_page, file), sizeof old_page);
+    std::fclose(file);
+  }
+  {
+    // The next start counts the crash, falls back to 5, and saves 7 under the new journal.
+    symcr::Store store;
+    symcr::StoreOptions options;
+    options.fallback_depth = kDepth;
+    ASSERT_TRUE(symcr::Store::open(path_.c_str(), cli_fixture::schema(), options, store).ok());
+    ASSERT_TRUE(store.restore_latest().ok());
+    cli_fixture::fill_state(7);
+    ASSERT_TRUE(store.save().ok());
+  }
+  {
+    // The older journal (both copies) put back.
+    std::FILE* file = std::fopen(path_.c_str(), "r+b");
+    ASSERT_NE(file, nullptr);
+    const long from = static_cast<long>(symcr::detail::kRestoreJournalOffsets[0]);
+    std::fseek(file, from, SEEK_SET);
+    const std::size_t length = static_cast<std::size_t>(symcr::detail::kRestoreJournalOffsets[1]) +
+                               symcr::detail::kRestoreJournalCopySize -
+                               static_cast<std::size_t>(from);
+    ASSERT_EQ(std::fwrite(old_page + from, 1, length, file), length);
+    std::fclose(file);
+  }
+  StoreReader reader;
+  ASSERT_TRUE(reader.open(path_.c_str()).ok());
+  EXPECT_NE(reader.journal_distrust().find("older copy put back"), std::string::npos)
+      << reader.journal_distrust();
+  EXPECT_EQ(reader.journal().unconfirmed, 0u);
+  const symcr::detail::RestoreJournal next = reader.journal_at_next_start();
+  const std::vector<std::uint32_t> valid = reader.valid_slots_newest_first();
+  ASSERT_FALSE(valid.empty());
+  const std::uint64_t newest = reader.slots()[valid[0]].header.sequence;
+  EXPECT_FALSE(next.excludes(newest));
+
+  symcr::Store store;
+  symcr::StoreOptions options;
+  options.fallback_depth = kDepth;
+  ASSERT_TRUE(symcr::Store::open(path_.c_str(), cli_fixture::schema(), options, store).ok());
+  ASSERT_TRUE(store.restore_latest().ok());
+  EXPECT_EQ(store.last_sequence(), newest);
 }
 
 }  // namespace

@@ -98,10 +98,13 @@ symcr_cli_test(inspect_not_a_checkpoint EXIT 2 ARGS inspect ${files}/not-a-check
   EXPECT "not a symcr checkpoint or store \\(bad magic\\)")
 symcr_cli_test(inspect_missing EXIT 2 ARGS inspect ${files}/no-such-file
   EXPECT "cannot open .*no-such-file: No such file or directory")
-symcr_cli_test(inspect_symlink EXIT 0 ARGS inspect ${files}/latest.ckpt
-  EXPECT "copter.ticks += 1001\n")
-symcr_cli_test(verify_symlinked_store EXIT 0 ARGS verify ${files}/latest.store
-  EXPECT "restore_latest +slot 1 \\(sequence 6\\)")
+# A program refuses a checkpoint or store behind a symlink; the CLI says so and names the target.
+symcr_cli_test(inspect_symlink EXIT 2 ARGS inspect ${files}/latest.ckpt
+  EXPECT "latest.ckpt: it is a symbolic link, which symcr does not follow; a program refuses it too: give the path it points to, .*v0.ckpt"
+  REJECT "copter.ticks")
+symcr_cli_test(verify_symlinked_store EXIT 2 ARGS verify ${files}/latest.store
+  EXPECT "latest.store: it is a symbolic link, which symcr does not follow"
+  REJECT "restore_latest")
 symcr_cli_test(inspect_no_color EXIT 0 ARGS inspect ${files}/v0.ckpt ENV NO_COLOR=1
   REJECT "${esc}\\[")
 

@@ -101,6 +101,14 @@ __attribute__((cold)) Status io_error(const char* what, const char* path, int er
   return Status(Error::Io, "%s %s: %s", what, path, message);
 }
 
+__attribute__((cold)) Status open_error(const char* what, const char* path, int error_number) {
+  if (error_number == ELOOP) {
+    return Status(Error::Io, "%s %s: it is a symbolic link, which symcr does not follow", what,
+                  path);
+  }
+  return io_error(what, path, error_number);
+}
+
 void remove_stale_temp_files(const char* path) {
   char directory[PATH_MAX];
   const char* base = split_directory(path, directory, sizeof directory);
@@ -169,15 +177,7 @@ namespace {
 Status open_regular_file(const char* path, FdGuard& fd, struct stat& info) {
   // O_NONBLOCK: opening a FIFO must not hang; it is refused just below.
   fd.reset(open_retrying(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK));
-  if (fd.get() < 0) {
-    if (errno == ELOOP) {
-      return Status(Error::Io,
-                    "cannot open %s: it is a symbolic link, which symcr does not "
-                    "follow",
-                    path);
-    }
-    return io_error("cannot open", path, errno);
-  }
+  if (fd.get() < 0) return open_error("cannot open", path, errno);
   if (file_system().fstat(fd.get(), &info) != 0) return io_error("cannot stat", path, errno);
   if (!S_ISREG(info.st_mode)) return Status(Error::Io, "%s is not a regular file", path);
   return Status();
@@ -191,7 +191,7 @@ Status read_regular_file(const char* path, std::uint64_t max_size, std::vector<s
   Status opened = open_regular_file(path, fd, info);
   if (!opened.ok()) return opened;
   if (static_cast<std::uint64_t>(info.st_size) > max_size) {
-    return Status(Error::TooLarge, "%s has %lld bytes, more than the %llu a checkpoint can have",
+    return Status(Error::TooLarge, "%s has %lld bytes, more than the %llu such a file can have",
                   path, static_cast<long long>(info.st_size),
                   static_cast<unsigned long long>(max_size));
   }

@@ -15,6 +15,8 @@ namespace symcr::detail {
 
 // Error::Io "<what> <path>: <strerror(error_number)>".
 Status io_error(const char* what, const char* path, int error_number);
+// An open's failure, as io_error; a symlink refused by O_NOFOLLOW (ELOOP) is named as such.
+Status open_error(const char* what, const char* path, int error_number);
 
 // Writes all `size` bytes at `offset` (retrying short writes and EINTR).
 Status pwrite_all(int fd, const void* data, std::size_t size, off_t offset, const char* path);

@@ -115,6 +115,17 @@ RestoreJournal read_restore_journal(const std::uint8_t* page, std::size_t size,
                                     const JournalSeal* seal = nullptr,
                                     std::string* distrust = nullptr);
 
+// With keys set, a journal older than the one the newest authenticated checkpoint was saved
+// under (`saved_under`, its record's journal freshness) is an older copy put back: why it is not
+// trusted, or null when it is. One that holds nothing is read as it would be trusted (a save
+// recovering a store refused as rolled back leaves one behind when no fallback depth writes the
+// journal): stale, but no warning is due.
+inline const char* stale_journal_reason(const RestoreJournal& journal, std::uint64_t saved_under) {
+  if (journal.freshness >= saved_under) return nullptr;
+  return "it is older than the journal the newest checkpoint was saved under (an older copy put "
+         "back)";
+}
+
 }  // namespace symcr::detail
 
 #endif  // SYMCR_SRC_RESTORE_JOURNAL_HPP

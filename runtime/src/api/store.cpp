@@ -283,15 +283,10 @@ struct Store::Impl {
         saved_under = slot.journal_freshness;
       }
     }
-    if (journal.freshness < saved_under) {
-      // One that holds nothing reads as it would trusted: only its freshness is raised, with no
-      // warning (a save recovering a store refused as rolled back leaves one behind when no
-      // fallback depth writes the journal).
+    if (const char* why = detail::stale_journal_reason(journal, saved_under)) {
+      // One that holds nothing: only its freshness is raised, with no warning.
       const bool held_nothing = journal.empty();
-      distrust_journal(
-          "it is older than the journal the newest checkpoint was saved under (an "
-          "older copy put back)",
-          saved_under);
+      distrust_journal(why, saved_under);
       if (held_nothing) journal_distrust.clear();
     }
   }
@@ -891,16 +886,6 @@ struct OpenedStoreFile {
   struct stat info {};
 };
 
-Status open_error(const char* path, int error_number) {
-  if (error_number == ELOOP) {
-    return Status(Error::Io,
-                  "cannot open store %s: it is a symbolic link, which symcr does "
-                  "not follow",
-                  path);
-  }
-  return detail::io_error("cannot open store", path, error_number);
-}
-
 bool is_permission_error(int error_number) {
   return error_number == EROFS || error_number == EACCES || error_number == EPERM;
 }
@@ -925,7 +910,8 @@ Status open_store_file(const char* path, bool writable, OpenedStoreFile& out) {
       const int create_error = errno;
       fd = files.open(path, O_RDWR | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK, 0);
       // Absent and not creatable (a read-only directory): the creation's error says why.
-      if (fd < 0 && errno == ENOENT) return open_error(path, create_error);
+      if (fd < 0 && errno == ENOENT)
+        return detail::open_error("cannot open store", path, create_error);
     }
     if (fd < 0 && is_permission_error(errno)) {
       out.read_only_reason = std::string("store ") + path + " was opened read-only (" +
@@ -937,7 +923,7 @@ Status open_store_file(const char* path, bool writable, OpenedStoreFile& out) {
   if (fd < 0 && !out.read_only_reason.empty()) {
     fd = files.open(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK, 0);
   }
-  if (fd < 0) return open_error(path, errno);
+  if (fd < 0) return detail::open_error("cannot open store", path, errno);
   Status status;
   if (files.fstat(fd, &out.info) != 0) {
     status = detail::io_error("cannot stat", path, errno);

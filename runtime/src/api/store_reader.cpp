@@ -23,7 +23,7 @@ Status StoreReader::open(const char* path) {
   path_ = path;
   // O_NONBLOCK: a FIFO is refused below, not waited on.
   fd_ = ::open(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
-  if (fd_ < 0) return io_error("cannot open store", path, errno);
+  if (fd_ < 0) return open_error("cannot open store", path, errno);
   struct stat info {};
   if (::fstat(fd_, &info) != 0) return io_error("cannot stat", path, errno);
   if (!S_ISREG(info.st_mode)) return Status(Error::Io, "%s is not a regular file", path);
@@ -41,11 +41,8 @@ Status StoreReader::open(const char* path) {
   status = decode_store_header(header, std::min<std::size_t>(got, format::kStoreHeaderSize), path,
                                geometry_);
   if (!status.ok()) return status;
-  if (static_cast<std::uint64_t>(info.st_size) < geometry_.file_size()) {
-    return Status(Error::Truncated, "%s: %lld bytes, the store's geometry needs %llu", path,
-                  static_cast<long long>(info.st_size),
-                  static_cast<unsigned long long>(geometry_.file_size()));
-  }
+  // A file shorter than its geometry (truncated) is read as a program reads it: the slots
+  // still whole restore, those cut off read as empty or damaged.
   for (int i = 0; i < 2; ++i) {
     status = load_store_area(fd_, path, geometry_.area_offset(i), geometry_.schema_area_size,
                              nullptr, areas_[i]);
@@ -54,9 +51,22 @@ Status StoreReader::open(const char* path) {
   slots_.assign(geometry_.slot_count, StoreSlot());
   std::vector<std::uint8_t> bytes;
   RecordView view;
+  std::uint64_t newest = 0, saved_under = 0;  // the newest authenticated checkpoint's journal
   for (std::uint32_t i = 0; i < geometry_.slot_count; ++i) {
     status = classify_slot(i, bytes, view, slots_[i]);
     if (!status.ok()) return status;
+    if (keys && slots_[i].state == StoreSlotState::Valid && view.header.sequence > newest &&
+        check_authentication(keys.get(), bytes.data(), view, binding(i, slots_[i].area)).ok()) {
+      newest = view.header.sequence;
+      saved_under = view.header.journal_freshness;
+    }
+  }
+  if (keys) {
+    if (const char* why = stale_journal_reason(journal_, saved_under)) {
+      if (!journal_.empty()) journal_distrust_ = why;
+      journal_ = RestoreJournal();
+      journal_.freshness = saved_under;
+    }
   }
   return Status();
 }

@@ -32,9 +32,11 @@ class StoreReader {
   StoreReader(const StoreReader&) = delete;
   StoreReader& operator=(const StoreReader&) = delete;
 
-  // Opens `path` read-only (never following a symlink), validates the store header and the
-  // file size, loads both schema areas and classifies every slot. With keys set
-  // (set_checkpoint_keys), the journal counts only when its MAC verifies for this store.
+  // Opens `path` read-only (never following a symlink), validates the store header, loads both
+  // schema areas and classifies every slot (those past the end of a truncated file read as
+  // empty, as for a program). With keys set (set_checkpoint_keys), the journal counts only when
+  // its MAC verifies for this store and it is not older than the journal the newest
+  // authenticated checkpoint was saved under (an older copy put back).
   Status open(const char* path);
 
   const StoreGeometry& geometry() const { return geometry_; }
