@@ -73,6 +73,13 @@ Status detect_file_kind(const std::string& path, FileKind& out) {
     out = FileKind::Record;
     return Status();
   }
+  // A store whose header is damaged, magic included, is still restored by a program from the
+  // checkpoints its open finds by scanning: so is it read here.
+  detail::StoreReader salvaged;
+  if (salvaged.open(path.c_str()).ok() && !salvaged.salvaged().empty()) {
+    out = FileKind::Store;
+    return Status();
+  }
   return Status(Error::NotACheckpoint, "%s is not a symcr checkpoint or store (bad magic)",
                 path.c_str());
 }
@@ -134,7 +141,7 @@ Status load_checkpoint(const std::string& path, std::optional<std::uint32_t> slo
   out.path = path;
   out.from_store = true;
   out.store.reset(new detail::StoreReader());
-  status = out.store->open(path.c_str());
+  status = out.store->open(path.c_str(), counter_file_of(path).c_str());
   if (!status.ok()) return status;
   std::uint32_t index = 0;
   if (slot) {

@@ -109,7 +109,7 @@ int inspect_record(const InspectArgs& args) {
 
 int inspect_store(const InspectArgs& args) {
   detail::StoreReader store;
-  Status status = store.open(args.path.c_str());
+  Status status = store.open(args.path.c_str(), counter_file_of(args.path).c_str());
   if (!status.ok()) {
     print_error(status.message());
     return kExitError;

@@ -26,7 +26,7 @@ std::string& counter_file_given() {
 Status read_counter(const detail::StoreReader& store, const detail::KeyRing& keys,
                     std::uint64_t& value, bool& checked, std::string& path) {
   checked = true;
-  path = counter_file_given().empty() ? store.path() + ".fresh" : counter_file_given();
+  path = counter_file_of(store.path());
   if (counter_file_given().empty() && ::access(path.c_str(), F_OK) != 0) {
     checked = false;
     return Status();
@@ -81,6 +81,10 @@ std::string nothing_restored_text(const StoreSurvey& survey, std::uint64_t pendi
 }  // namespace
 
 void use_counter_file(const std::string& path) { counter_file_given() = path; }
+
+std::string counter_file_of(const std::string& store_path) {
+  return counter_file_given().empty() ? store_path + ".fresh" : counter_file_given();
+}
 
 StoreSurvey survey_store(const detail::StoreReader& store) {
   StoreSurvey survey;
@@ -278,8 +282,12 @@ void print_store_overview(const std::string& path, const detail::StoreReader& st
   Table header;
   header.add({{"store"}, {path}});
   header.add({{"format_version"}, {std::to_string(symcr::format::kStoreFileFormatVersion)}});
-  header.add(
-      {{"slots"}, {std::to_string(g.slot_count) + " x " + std::to_string(g.slot_size) + " bytes"}});
+  if (store.salvaged().empty()) {
+    header.add({{"slots"},
+                {std::to_string(g.slot_count) + " x " + std::to_string(g.slot_size) + " bytes"}});
+  } else {
+    header.add({{"slots"}, {store.salvaged(), Colour::Red}});
+  }
   for (int i = 0; i < 2; ++i) {
     header.add({{"schema_area " + std::to_string(i)}, {area_text(store.area(i))}});
   }
@@ -333,6 +341,7 @@ void write_store_json(JsonWriter& json, const detail::StoreReader& store,
   json.field("slots_offset", g.slots_offset);
   json.object_end();
   json.key_end();
+  if (!store.salvaged().empty()) json.field("salvaged", store.salvaged());
 
   json.key_begin("schema_areas");
   json.array_begin();

@@ -57,6 +57,8 @@ struct StoreSurvey {
 // The freshness counter file the surveys check a store against (keys set): `path`, or when
 // empty the program's default, the store's path with ".fresh" appended, when that exists.
 void use_counter_file(const std::string& path);
+// That file for a store at `store_path`: the one given, else the default next to the store.
+std::string counter_file_of(const std::string& store_path);
 
 // Authentication uses the keys set with set_checkpoint_keys (none: any MAC is accepted, as by
 // a program without keys), each slot bound to its store and place as a restore binds it; the

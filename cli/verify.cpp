@@ -138,7 +138,7 @@ int verify_record(const VerifyArgs& args) {
 
 int verify_store(const VerifyArgs& args) {
   detail::StoreReader store;
-  const Status status = store.open(args.path.c_str());
+  const Status status = store.open(args.path.c_str(), counter_file_of(args.path).c_str());
   if (!status.ok()) {
     if (status.error() == Error::Io) {
       print_error(status.message());

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "fixture_tables.hpp"
+#include "freshness.hpp"
 #include "symcr/symcr.hpp"
 
 namespace {
@@ -24,7 +25,18 @@ class StoreReaderTest : public ::testing::Test {
             ".store";
     ::unlink(path_.c_str());
   }
-  void TearDown() override { ::unlink(path_.c_str()); }
+  void TearDown() override {
+    (void)symcr::set_checkpoint_keys(nullptr, 0);
+    ::unlink(path_.c_str());
+    ::unlink((path_ + ".fresh").c_str());
+  }
+
+  // Saves and restores from here on authenticate with one key (TearDown drops it).
+  static void hold_a_key() {
+    static const std::uint8_t kKey[32] = {9, 8, 7, 6, 5, 4, 3, 2, 1};
+    const symcr::CheckpointKey key{1, kKey, sizeof kKey};
+    ASSERT_TRUE(symcr::set_checkpoint_keys(&key, 1).ok());
+  }
 
   // Four slots after `saves` saves; the Store stays open (and locked) while it is read.
   void save(symcr::Store& store, int saves) {
@@ -145,10 +157,37 @@ TEST_F(StoreReaderTest, ReadsATruncatedStoreAsAProgramDoes) {
   EXPECT_EQ(newest_restored(), 5u);
 }
 
-TEST_F(StoreReaderTest, RefusesDamagedStoreFiles) {
+// A damaged header, magic included: the checkpoints are found by scanning, as a program's open
+// finds them, and the reader names the one the program restores.
+TEST_F(StoreReaderTest, ReadsAStoreWithADamagedHeaderAsAProgramDoes) {
   {
     symcr::Store store;
-    save(store, 1);
+    save(store, 6);  // sequences by slot: 5, 6, 3, 4
+  }
+  const auto newest_restored = [this]() -> std::uint64_t {
+    symcr::Store store;
+    if (!symcr::Store::open_readonly(path_.c_str(), cli_fixture::schema(), store).ok()) return 0;
+    return store.restore_latest().ok() ? store.last_sequence() : 0;
+  };
+  for (const long offset : {14L, 0L}) {  // slot_count under the header CRC; the magic
+    flip_byte(offset);
+    StoreReader reader;
+    ASSERT_TRUE(reader.open(path_.c_str()).ok()) << "byte " << offset;
+    EXPECT_NE(reader.salvaged().find("found by scanning"), std::string::npos);
+    EXPECT_EQ(reader.slots().size(), 4u);
+    const std::vector<std::uint32_t> valid = reader.valid_slots_newest_first();
+    ASSERT_EQ(valid.size(), 4u);
+    EXPECT_EQ(reader.slots()[valid[0]].header.sequence, 6u);
+    EXPECT_EQ(newest_restored(), 6u);
+    flip_byte(offset);  // whole again
+  }
+}
+
+// With no checkpoint to find, a damaged header is the store's problem.
+TEST_F(StoreReaderTest, RefusesADamagedStoreHoldingNoCheckpoint) {
+  {
+    symcr::Store store;
+    save(store, 0);
   }
   flip_byte(14);  // slot_count, under the header CRC
   StoreReader bad_header;
@@ -231,16 +270,7 @@ TEST_F(StoreReaderTest, NextStartOfAJournalWithoutADepthGoesOneLevelDeeper) {
 // With keys, an older genuine journal put back is not trusted by the reader, as a program's
 // open does not trust it: the reader names the slot the program restores.
 TEST_F(StoreReaderTest, WithKeysAnOlderJournalPutBackIsNotTrusted) {
-  static const std::uint8_t kKey[32] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16};
-  const symcr::CheckpointKey key{1, kKey, sizeof kKey};
-  ASSERT_TRUE(symcr::set_checkpoint_keys(&key, 1).ok());
-  struct KeysAndCounterGone {
-    std::string counter;
-    ~KeysAndCounterGone() {
-      (void)symcr::set_checkpoint_keys(nullptr, 0);
-      ::unlink(counter.c_str());
-    }
-  } cleanup{path_ + ".fresh"};
+  hold_a_key();
   {
     symcr::Store store;
     save(store, 6);  // sequences by slot: 5, 6, 3, 4
@@ -292,6 +322,57 @@ TEST_F(StoreReaderTest, WithKeysAnOlderJournalPutBackIsNotTrusted) {
   ASSERT_TRUE(symcr::Store::open(path_.c_str(), cli_fixture::schema(), options, store).ok());
   ASSERT_TRUE(store.restore_latest().ok());
   EXPECT_EQ(store.last_sequence(), newest);
+}
+
+// With keys, a store that lost both copies of its identity takes it back from its counter file
+// when a checkpoint verifies under it, for the reader as for a program's open.
+TEST_F(StoreReaderTest, WithKeysALostIdentityIsTakenBackFromTheCounterFile) {
+  hold_a_key();
+  {
+    symcr::Store store;
+    save(store, 6);  // sequences by slot: 5, 6, 3, 4
+  }
+  std::vector<std::uint8_t> identity;
+  {
+    StoreReader whole;
+    ASSERT_TRUE(whole.open(path_.c_str()).ok());
+    identity.assign(whole.store_id(), whole.store_id() + symcr::detail::kStoreIdSize);
+  }
+  {
+    std::FILE* file = std::fopen(path_.c_str(), "r+b");
+    ASSERT_NE(file, nullptr);
+    const std::vector<std::uint8_t> zeros(symcr::detail::kStoreIdBlockSize, 0);
+    std::fseek(file, static_cast<long>(symcr::detail::kStoreIdOffset), SEEK_SET);
+    ASSERT_EQ(std::fwrite(zeros.data(), 1, zeros.size(), file), zeros.size());
+    std::fclose(file);
+  }
+  StoreReader reader;
+  ASSERT_TRUE(reader.open(path_.c_str()).ok());
+  EXPECT_EQ(
+      std::vector<std::uint8_t>(reader.store_id(), reader.store_id() + symcr::detail::kStoreIdSize),
+      identity);
+  // Each valid slot verifies under the identity taken back.
+  std::vector<std::uint8_t> bytes;
+  symcr::detail::RecordView view;
+  for (const std::uint32_t slot : reader.valid_slots_newest_first()) {
+    int area = -1;
+    ASSERT_TRUE(reader.read_record(slot, bytes, view, area).ok());
+    EXPECT_TRUE(symcr::detail::check_authentication(symcr::detail::current_keys().get(),
+                                                    bytes.data(), view, reader.binding(slot, area))
+                    .ok())
+        << "slot " << slot;
+  }
+  // Another counter file (none here) lends no identity.
+  StoreReader elsewhere;
+  ASSERT_TRUE(elsewhere.open(path_.c_str(), (path_ + ".no-such-counter").c_str()).ok());
+  EXPECT_EQ(std::vector<std::uint8_t>(elsewhere.store_id(),
+                                      elsewhere.store_id() + symcr::detail::kStoreIdSize),
+            std::vector<std::uint8_t>(symcr::detail::kStoreIdSize, 0));
+
+  symcr::Store store;
+  ASSERT_TRUE(symcr::Store::open_readonly(path_.c_str(), cli_fixture::schema(), store).ok());
+  ASSERT_TRUE(store.restore_latest().ok());
+  EXPECT_EQ(store.last_sequence(), 6u);
 }
 
 }  // namespace

@@ -19,7 +19,7 @@ StoreReader::~StoreReader() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-Status StoreReader::open(const char* path) {
+Status StoreReader::open(const char* path, const char* counter_path) {
   path_ = path;
   // O_NONBLOCK: a FIFO is refused below, not waited on.
   fd_ = ::open(path, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
@@ -32,36 +32,44 @@ Status StoreReader::open(const char* path) {
   std::size_t got = 0;
   Status status = pread_full(fd_, header, sizeof header, 0, got, path);
   if (!status.ok()) return status;
-  read_store_id(header, got, store_id_);
+  const bool id_found = read_store_id(header, got, store_id_);
+  status = decode_store_header(header, std::min<std::size_t>(got, format::kStoreHeaderSize), path,
+                               geometry_);
+  if (!status.ok()) {
+    status = salvage(static_cast<std::uint64_t>(info.st_size), status);
+    if (!status.ok()) return status;
+  } else {
+    // A file shorter than its geometry (truncated) is read as a program reads it: the slots
+    // still whole restore, those cut off read as empty or damaged.
+    for (int i = 0; i < 2; ++i) {
+      status = load_store_area(fd_, path, geometry_.area_offset(i), geometry_.schema_area_size,
+                               nullptr, areas_[i]);
+      if (!status.ok()) return status;
+    }
+    for (std::uint32_t i = 0; i < geometry_.slot_count; ++i) {
+      slot_offsets_.push_back(geometry_.slot_offset(i));
+      slot_capacities_.push_back(geometry_.slot_size);
+    }
+  }
+  slots_.assign(slot_offsets_.size(), StoreSlot());
+  std::vector<std::uint8_t> bytes;
+  RecordView view;
+  for (std::uint32_t i = 0; i < slots_.size(); ++i) {
+    status = classify_slot(i, bytes, view, slots_[i]);
+    if (!status.ok()) return status;
+  }
   const KeySnapshot keys = current_keys();
+  if (keys && !id_found) {
+    const std::string counter = counter_path ? counter_path : path_ + ".fresh";
+    identity_from_counter(counter.c_str(), *keys);
+  }
+  // The journal's seal is bound to the store's identity, recovered or not.
   JournalSeal seal;
   seal.keys = keys.get();
   seal.store_id = store_id_;
   journal_ = read_restore_journal(header, got, &seal, &journal_distrust_);
-  status = decode_store_header(header, std::min<std::size_t>(got, format::kStoreHeaderSize), path,
-                               geometry_);
-  if (!status.ok()) return status;
-  // A file shorter than its geometry (truncated) is read as a program reads it: the slots
-  // still whole restore, those cut off read as empty or damaged.
-  for (int i = 0; i < 2; ++i) {
-    status = load_store_area(fd_, path, geometry_.area_offset(i), geometry_.schema_area_size,
-                             nullptr, areas_[i]);
-    if (!status.ok()) return status;
-  }
-  slots_.assign(geometry_.slot_count, StoreSlot());
-  std::vector<std::uint8_t> bytes;
-  RecordView view;
-  std::uint64_t newest = 0, saved_under = 0;  // the newest authenticated checkpoint's journal
-  for (std::uint32_t i = 0; i < geometry_.slot_count; ++i) {
-    status = classify_slot(i, bytes, view, slots_[i]);
-    if (!status.ok()) return status;
-    if (keys && slots_[i].state == StoreSlotState::Valid && view.header.sequence > newest &&
-        check_authentication(keys.get(), bytes.data(), view, binding(i, slots_[i].area)).ok()) {
-      newest = view.header.sequence;
-      saved_under = view.header.journal_freshness;
-    }
-  }
   if (keys) {
+    const std::uint64_t saved_under = newest_authentic_journal(*keys);
     if (const char* why = stale_journal_reason(journal_, saved_under)) {
       if (!journal_.empty()) journal_distrust_ = why;
       journal_ = RestoreJournal();
@@ -71,12 +79,66 @@ Status StoreReader::open(const char* path) {
   return Status();
 }
 
+Status StoreReader::salvage(std::uint64_t file_size, const Status& header_problem) {
+  // As a program's open recovers it: the checkpoints found by scanning, one slot each, in place.
+  if (header_problem.error() == Error::FutureVersion) return header_problem;
+  StoreSalvage found;
+  Status status = salvage_store(fd_, path_.c_str(), file_size, found);
+  if (!status.ok()) return status;
+  if (found.record_offsets.empty()) return header_problem;
+  geometry_ = StoreGeometry();
+  slot_offsets_ = found.record_offsets;
+  slot_capacities_ = found.record_sizes;
+  for (int i = 0; i < 2; ++i) areas_[i] = std::move(found.areas[i]);
+  salvaged_ = std::string("its header is damaged (") + header_problem.message() + "); " +
+              std::to_string(slot_offsets_.size()) +
+              " checkpoints were found by scanning, each read as a slot of its own, as a "
+              "program's open finds them";
+  return Status();
+}
+
+std::uint64_t StoreReader::newest_authentic_journal(const KeyRing& keys) const {
+  std::uint64_t newest = 0, saved_under = 0;
+  std::vector<std::uint8_t> bytes;
+  RecordView view;
+  for (std::uint32_t i = 0; i < slots_.size(); ++i) {
+    if (slots_[i].state != StoreSlotState::Valid || slots_[i].header.sequence <= newest) continue;
+    int area = -1;
+    if (read_record(i, bytes, view, area).ok() &&
+        check_authentication(&keys, bytes.data(), view, binding(i, area)).ok()) {
+      newest = view.header.sequence;
+      saved_under = view.header.journal_freshness;
+    }
+  }
+  return saved_under;
+}
+
+void StoreReader::identity_from_counter(const char* counter_path, const KeyRing& keys) {
+  std::vector<std::uint8_t> counter;
+  if (!read_regular_file(counter_path, kCounterFileSize, counter).ok()) return;
+  std::uint8_t ids[kCounterCopyCount][kStoreIdSize];
+  const std::size_t count = store_ids_in_counter_file(counter.data(), counter.size(), keys, ids);
+  for (std::size_t c = 0; c < count; ++c) {
+    std::memcpy(store_id_, ids[c], sizeof store_id_);
+    std::vector<std::uint8_t> bytes;
+    RecordView view;
+    for (std::uint32_t i = 0; i < slots_.size(); ++i) {
+      int area = -1;
+      if (slots_[i].state == StoreSlotState::Valid && read_record(i, bytes, view, area).ok() &&
+          check_authentication(&keys, bytes.data(), view, binding(i, area)).ok()) {
+        return;  // a checkpoint of the store verifies under it: its identity
+      }
+    }
+  }
+  std::memset(store_id_, 0, sizeof store_id_);
+}
+
 Status StoreReader::classify_slot(std::uint32_t index, std::vector<std::uint8_t>& bytes,
                                   RecordView& view, StoreSlot& slot) const {
   slot = StoreSlot();
   StoreSlotRead read;
-  Status status = read_store_slot(fd_, path_.c_str(), geometry_.slot_offset(index),
-                                  geometry_.slot_size, areas_, bytes, view, read, &slot.problem);
+  Status status = read_store_slot(fd_, path_.c_str(), slot_offsets_[index], slot_capacities_[index],
+                                  areas_, bytes, view, read, &slot.problem);
   if (!status.ok()) return status;
   slot.state = read.state;
   slot.area = read.area;
@@ -89,7 +151,7 @@ Status StoreReader::classify_slot(std::uint32_t index, std::vector<std::uint8_t>
 RecordBinding StoreReader::binding(std::uint32_t index, int area) const {
   RecordBinding binding;
   std::memcpy(binding.store_id, store_id_, sizeof store_id_);
-  binding.location = geometry_.slot_offset(index);
+  binding.location = index < slot_offsets_.size() ? slot_offsets_[index] : 0;
   if (area >= 0) std::memcpy(binding.schema_digest, areas_[area].digest(), format::kSha256Size);
   return binding;
 }

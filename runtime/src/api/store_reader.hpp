@@ -32,14 +32,20 @@ class StoreReader {
   StoreReader(const StoreReader&) = delete;
   StoreReader& operator=(const StoreReader&) = delete;
 
-  // Opens `path` read-only (never following a symlink), validates the store header, loads both
-  // schema areas and classifies every slot (those past the end of a truncated file read as
+  // Opens `path` read-only (never following a symlink), reads the store header (a damaged one:
+  // the checkpoints are found by scanning, see salvaged()), loads both schema areas and
+  // classifies every slot (those past the end of a truncated file read as
   // empty, as for a program). With keys set (set_checkpoint_keys), the journal counts only when
   // its MAC verifies for this store and it is not older than the journal the newest
-  // authenticated checkpoint was saved under (an older copy put back).
-  Status open(const char* path);
+  // authenticated checkpoint was saved under (an older copy put back). With keys, a store that
+  // lost both copies of its identity takes it back from its counter file (`counter_path`, else
+  // the default `<path>.fresh`) when a checkpoint verifies under it, as a program's open does.
+  Status open(const char* path, const char* counter_path = nullptr);
 
+  // All zero for a store whose header is damaged: then salvaged() says how its checkpoints
+  // were found (by scanning, as a program's open finds them), else it is empty.
   const StoreGeometry& geometry() const { return geometry_; }
+  const std::string& salvaged() const { return salvaged_; }
   const std::string& path() const { return path_; }
   const StoreSchemaArea& area(int index) const { return areas_[index]; }
   const std::vector<StoreSlot>& slots() const { return slots_; }
@@ -75,10 +81,20 @@ class StoreReader {
  private:
   Status classify_slot(std::uint32_t index, std::vector<std::uint8_t>& bytes, RecordView& view,
                        StoreSlot& slot) const;
+  // A header that does not decode (`header_problem`): the checkpoints found by scanning.
+  Status salvage(std::uint64_t file_size, const Status& header_problem);
+  // The journal freshness the newest checkpoint that verifies with `keys` was saved under.
+  std::uint64_t newest_authentic_journal(const KeyRing& keys) const;
+  // For a store whose identity copies are both lost: the identity the counter file names under
+  // a MAC that verifies, if a checkpoint verifies under it (else the identity stays all zero).
+  void identity_from_counter(const char* counter_path, const KeyRing& keys);
 
   int fd_ = -1;
   std::string path_;
   StoreGeometry geometry_;
+  std::string salvaged_;
+  std::vector<std::uint64_t> slot_offsets_;  // per slot: where it lies, and its size
+  std::vector<std::uint32_t> slot_capacities_;
   StoreSchemaArea areas_[2];
   std::vector<StoreSlot> slots_;
   RestoreJournal journal_;
