@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 
 #include "authentication.hpp"
 #include "file_io.hpp"
@@ -21,15 +22,13 @@ std::string& counter_file_given() {
   return path;
 }
 
-// The counter's value for `store` (keys set), or why it cannot be known; `checked` false when
-// no counter was given and the default one does not exist.
+// The counter's value for `store` (keys set), or why it cannot be known: a missing counter is
+// RolledBack, in the words of a program's restore, which refuses the store then.
 Status read_counter(const detail::StoreReader& store, const detail::KeyRing& keys,
-                    std::uint64_t& value, bool& checked, std::string& path) {
-  checked = true;
+                    std::uint64_t& value, std::string& path) {
   path = counter_file_of(store.path());
-  if (counter_file_given().empty() && ::access(path.c_str(), F_OK) != 0) {
-    checked = false;
-    return Status();
+  if (::access(path.c_str(), F_OK) != 0 && errno == ENOENT) {
+    return Status(Error::RolledBack, "the freshness counter %s is missing", path.c_str());
   }
   std::vector<std::uint8_t> bytes;
   Status status = detail::read_regular_file(path.c_str(), detail::kCounterFileSize, bytes);
@@ -147,15 +146,12 @@ StoreSurvey survey_store(const detail::StoreReader& store) {
                            slots[s.index].state == detail::StoreSlotState::Valid;
     }
     std::uint64_t counted = 0;
-    bool checked = false;
     std::string path;
-    Status status = read_counter(store, *keys, counted, checked, path);
+    Status status = read_counter(store, *keys, counted, path);
     const bool holds_authentic =
         std::find(authentic.begin(), authentic.end(), true) != authentic.end() ||
         store.journal().freshness != 0;
-    if (!checked) {
-      survey.freshness = "not checked: no counter given, and " + path + " does not exist";
-    } else if (!status.ok()) {
+    if (!status.ok()) {
       survey.freshness = status.message();
       survey.rolled_back = holds_authentic;
     } else {

@@ -55,7 +55,7 @@ struct StoreSurvey {
 };
 
 // The freshness counter file the surveys check a store against (keys set): `path`, or when
-// empty the program's default, the store's path with ".fresh" appended, when that exists.
+// empty the program's default, the store's path with ".fresh" appended.
 void use_counter_file(const std::string& path);
 // That file for a store at `store_path`: the one given, else the default next to the store.
 std::string counter_file_of(const std::string& store_path);

@@ -46,6 +46,8 @@ run(${V0} signed-store ${DIR}/rolled-back.store 2)
 file(COPY_FILE ${DIR}/rolled-back.store ${DIR}/rolled-back.old)
 run(${V0} signed-store ${DIR}/rolled-back.store 2)
 file(COPY_FILE ${DIR}/rolled-back.old ${DIR}/rolled-back.store)
+# The rotated store copied without its freshness counter: a program refuses it.
+file(COPY_FILE ${DIR}/rotated.store ${DIR}/no-counter.store)
 # The program's keys as a key ring file: both keys of the rotation.
 file(WRITE ${DIR}/keys.ring "# id, then the key's file (relative to this file)\n7 fixture.key\n8 other.key\n")
 file(WRITE ${DIR}/bad.ring "7fixture.key\n")

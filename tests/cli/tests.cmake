@@ -355,6 +355,11 @@ symcr_cli_test(verify_rotated_store_key_ring EXIT 0
   ARGS verify ${files}/rotated.store --key-ring ${files}/keys.ring
   EXPECT "freshness +fresh: the counter .*rotated.store.fresh says 4 was written"
          "restore_latest +slot 3 \\(sequence 4\\)" "\nvalid\n" REJECT "unauthenticated")
+# A store copied without its counter: refused, as the program refuses it (RolledBack).
+symcr_cli_test(verify_store_without_its_counter EXIT 1
+  ARGS verify ${files}/no-counter.store --key-ring ${files}/keys.ring
+  EXPECT "freshness +the freshness counter .*no-counter.store.fresh is missing"
+         "restore_latest +none" "\ninvalid" REJECT "not checked")
 symcr_cli_test(verify_bad_key_ring EXIT 2 ARGS verify ${files}/rotated.store --key-ring ${files}/bad.ring
   EXPECT "line 1 is not \"<id> <key file>\"")
 symcr_cli_test(verify_rolled_back_store EXIT 1
