@@ -61,6 +61,8 @@ class SimulatedFileSystem final : public symcr::detail::FileSystem {
   ssize_t pwrite(int fd, const void* data, std::size_t size, off_t offset) override;
   int fstat(int fd, struct stat* out) override;
   int lstat(const char* path, struct stat* out) override;
+  // No symlinks here: as lstat.
+  int stat(const char* path, struct stat* out) override { return lstat(path, out); }
   int ftruncate(int fd, off_t size) override;
   int fallocate(int fd, off_t size) override;
   int fdatasync(int fd) override;

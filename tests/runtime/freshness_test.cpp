@@ -557,6 +557,30 @@ TEST_P(IdentityDamage, BothIdentityCopiesLostAreTakenBackFromTheCounterFile) {
 
 INSTANTIATE_TEST_SUITE_P(DamagedOrZeroed, IdentityDamage, ::testing::Bool());
 
+// A store whose header is damaged too is restored from the checkpoints found by scanning, and
+// takes its identity back all the same, opened read-only or not.
+TEST_F(FreshnessTest, ASalvagedStoreTakesItsLostIdentityBackFromTheCounterFile) {
+  save_seeds(1, 3);
+  std::vector<std::uint8_t> bytes = read_file(path);
+  damage_both_identity_copies(bytes, false);
+  bytes[0] ^= 0xFF;  // the store's magic
+  write_file(path, bytes);
+  hold_only_key(1);
+  {
+    symcr::Store store;
+    ASSERT_TRUE(symcr::Store::open_readonly(path.c_str(), schema_a, store).ok());
+    scramble_a();
+    const symcr::Report report = store.restore_latest();
+    ASSERT_TRUE(report.ok()) << report.status().message();
+    EXPECT_EQ(report.sequence(), 3u);
+    expect_a(3);
+  }
+  EXPECT_EQ(read_file(path), bytes);
+  const symcr::Report report = restore();
+  ASSERT_TRUE(report.ok()) << report.status().message();
+  EXPECT_EQ(report.sequence(), 3u);
+}
+
 // Another store's genuine counter (the same key) names another identity: none of this store's
 // checkpoints verifies under it, so it is not taken, and nothing is written; with this store's
 // counter back (or one copy of it beside the other store's) the identity comes back.

@@ -121,6 +121,24 @@ TEST_F(StoreTest, CreatesAPreallocatedFileWithMode0600) {
   EXPECT_GE(static_cast<std::uint64_t>(info.st_blocks) * 512, file.bytes.size());  // allocated
 }
 
+// Only the store file (and its counter) is never followed as a symlink: a folder on its path
+// may be one.
+TEST_F(StoreTest, AStoreInAFolderReachedThroughASymlinkSavesAndRestores) {
+  const std::string real = dir.file("real");
+  const std::string linked = dir.file("linked");
+  ASSERT_EQ(::mkdir(real.c_str(), 0700), 0);
+  ASSERT_EQ(::symlink(real.c_str(), linked.c_str()), 0);
+  path = linked + "/copter.store";
+  save_seeds(1, 3);
+  expect_restores_sequence(3);
+  symcr::Store store;
+  ASSERT_TRUE(symcr::Store::open_readonly(path.c_str(), schema_a, store).ok());
+  EXPECT_TRUE(store.restore_latest().ok());
+  ::unlink((real + "/copter.store").c_str());
+  ::unlink(linked.c_str());
+  ::rmdir(real.c_str());
+}
+
 TEST_F(StoreTest, EmptyStoreHasNoValidSlot) {
   fill_a(1);
   const auto before = state_a();

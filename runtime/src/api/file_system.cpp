@@ -36,6 +36,7 @@ class PosixFileSystem final : public FileSystem {
   }
   int fstat(int fd, struct stat* out) override { return ::fstat(fd, out); }
   int lstat(const char* path, struct stat* out) override { return ::lstat(path, out); }
+  int stat(const char* path, struct stat* out) override { return ::stat(path, out); }
   int ftruncate(int fd, off_t size) override {
     return retrying([&] { return ::ftruncate(fd, size); });
   }

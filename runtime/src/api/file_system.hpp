@@ -25,6 +25,8 @@ class FileSystem {
   virtual ssize_t pwrite(int fd, const void* data, std::size_t size, off_t offset) = 0;
   virtual int fstat(int fd, struct stat* out) = 0;
   virtual int lstat(const char* path, struct stat* out) = 0;
+  // Follows symlinks: for the folders on a path, which may be links.
+  virtual int stat(const char* path, struct stat* out) = 0;
   virtual int ftruncate(int fd, off_t size) = 0;
   // posix_fallocate(fd, 0, size): returns 0 or an error number (errno is not used).
   virtual int fallocate(int fd, off_t size) = 0;

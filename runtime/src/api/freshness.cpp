@@ -194,8 +194,9 @@ Status check_counter_path(const char* counter, const struct stat& store, const c
     const std::string folder = slash == nullptr
                                    ? std::string(".")
                                    : std::string(counter, slash == counter ? 1 : slash - counter);
+    // The folder may be reached through a symlink: only the counter itself is never followed.
     struct stat folder_info {};
-    if (file_system().lstat(folder.c_str(), &folder_info) != 0 || !S_ISDIR(folder_info.st_mode)) {
+    if (file_system().stat(folder.c_str(), &folder_info) != 0 || !S_ISDIR(folder_info.st_mode)) {
       return Status(Error::Io,
                     "the freshness counter %s of store %s cannot be written: its folder %s does "
                     "not exist (create it, or name a file in an existing folder)",

@@ -1041,6 +1041,18 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
   got = std::min(got, format::kStoreHeaderSize);
   Status header_status;
   if (!created) header_status = detail::decode_store_header(header, got, path, impl.geometry);
+  // A store whose identity copies are both lost may take it back from its counter file (keys
+  // set), once its slots are scanned: `found` says whether it has one.
+  const auto take_identity_back = [&](bool& found) -> Status {
+    found = !id_missing;
+    if (!id_missing || created) return Status();
+    const Status taken = impl.identity_from_counter(fd, found);
+    if (taken.ok() && found) {  // the journal's seal and the counter are bound to it too
+      impl.adopt_journal(header, page_got);
+      if (impl.keys) (void)impl.counter->read(impl.counter_value);
+    }
+    return taken;
+  };
   bool needs_initialising = created;
   if (!header_status.ok() && !created) {
     if (header_status.error() == Error::FutureVersion) return header_status;
@@ -1080,15 +1092,9 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
     status = impl.load_areas(fd, schema);
     if (status.ok()) status = impl.scan_slots(fd);  // slots past a truncation read as empty
     if (!status.ok()) return status;
-    bool id_found = !id_missing;
-    if (id_missing && !created) {
-      status = impl.identity_from_counter(fd, id_found);
-      if (!status.ok()) return status;
-      if (id_found) {  // the journal's seal and the counter are bound to it too
-        impl.adopt_journal(header, page_got);
-        if (impl.keys) (void)impl.counter->read(impl.counter_value);
-      }
-    }
+    bool id_found = false;
+    status = take_identity_back(id_found);
+    if (!status.ok()) return status;
     // A new identity, or a damaged copy written again. A new one is written at open only into a
     // store that holds nothing yet: the checkpoints of one are bound to the identity lost, which
     // only this program's next save with keys gives up on (a program holding other keys, or
@@ -1109,6 +1115,8 @@ Status Store::Impl::open_descriptor(const char* path, const Schema& schema,
     }
   } else {
     status = impl.scan_slots(fd);  // restore-only: a salvaged store
+    bool id_found = false;
+    if (status.ok()) status = take_identity_back(id_found);
     if (!status.ok()) return status;
   }
   impl.own_area = impl.area_for_hash(blob.hash);
