@@ -97,15 +97,20 @@ Status StoreReader::salvage(std::uint64_t file_size, const Status& header_proble
   return Status();
 }
 
+bool StoreReader::authentic(std::uint32_t index, const KeyRing& keys,
+                            std::vector<std::uint8_t>& bytes, RecordView& view) const {
+  int area = -1;
+  return slots_[index].state == StoreSlotState::Valid &&
+         read_record(index, bytes, view, area).ok() &&
+         check_authentication(&keys, bytes.data(), view, binding(index, area)).ok();
+}
+
 std::uint64_t StoreReader::newest_authentic_journal(const KeyRing& keys) const {
   std::uint64_t newest = 0, saved_under = 0;
   std::vector<std::uint8_t> bytes;
   RecordView view;
   for (std::uint32_t i = 0; i < slots_.size(); ++i) {
-    if (slots_[i].state != StoreSlotState::Valid || slots_[i].header.sequence <= newest) continue;
-    int area = -1;
-    if (read_record(i, bytes, view, area).ok() &&
-        check_authentication(&keys, bytes.data(), view, binding(i, area)).ok()) {
+    if (slots_[i].header.sequence > newest && authentic(i, keys, bytes, view)) {
       newest = view.header.sequence;
       saved_under = view.header.journal_freshness;
     }
@@ -118,16 +123,12 @@ void StoreReader::identity_from_counter(const char* counter_path, const KeyRing&
   if (!read_regular_file(counter_path, kCounterFileSize, counter).ok()) return;
   std::uint8_t ids[kCounterCopyCount][kStoreIdSize];
   const std::size_t count = store_ids_in_counter_file(counter.data(), counter.size(), keys, ids);
+  std::vector<std::uint8_t> bytes;
+  RecordView view;
   for (std::size_t c = 0; c < count; ++c) {
     std::memcpy(store_id_, ids[c], sizeof store_id_);
-    std::vector<std::uint8_t> bytes;
-    RecordView view;
     for (std::uint32_t i = 0; i < slots_.size(); ++i) {
-      int area = -1;
-      if (slots_[i].state == StoreSlotState::Valid && read_record(i, bytes, view, area).ok() &&
-          check_authentication(&keys, bytes.data(), view, binding(i, area)).ok()) {
-        return;  // a checkpoint of the store verifies under it: its identity
-      }
+      if (authentic(i, keys, bytes, view)) return;  // a checkpoint verifies under it: its identity
     }
   }
   std::memset(store_id_, 0, sizeof store_id_);

@@ -83,6 +83,9 @@ class StoreReader {
                        StoreSlot& slot) const;
   // A header that does not decode (`header_problem`): the checkpoints found by scanning.
   Status salvage(std::uint64_t file_size, const Status& header_problem);
+  // Slot `index` is valid and its record (read into `bytes`, `view`) verifies with `keys`.
+  bool authentic(std::uint32_t index, const KeyRing& keys, std::vector<std::uint8_t>& bytes,
+                 RecordView& view) const;
   // The journal freshness the newest checkpoint that verifies with `keys` was saved under.
   std::uint64_t newest_authentic_journal(const KeyRing& keys) const;
   // For a store whose identity copies are both lost: the identity the counter file names under
